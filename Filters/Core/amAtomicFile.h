@@ -1,0 +1,44 @@
+/**
+ * @class   amAtomicFile
+ * @brief   Write a file so that readers only ever see the old file or the complete new one.
+ *
+ * The content goes to a temporary path in the same folder (same extension, so format-sniffing
+ * libraries such as ITK still pick the right codec); Commit() renames it over the target, and the
+ * destructor removes the temporary when Commit() was never reached (an error, an exception).
+ * Writers therefore never leave a half-written file behind.
+ */
+#ifndef amAtomicFile_h
+#define amAtomicFile_h
+
+#include "AnatomeshFiltersCoreModule.h" // export macro
+
+#include <string>
+
+class ANATOMESHFILTERSCORE_EXPORT amAtomicFile
+{
+public:
+  explicit amAtomicFile(const std::string& target);
+  ~amAtomicFile();
+  amAtomicFile(const amAtomicFile&) = delete;
+  amAtomicFile& operator=(const amAtomicFile&) = delete;
+
+  /// Where to write the content ("<dir>/.<stem>.tmp<unique><ext>").
+  const std::string& TemporaryPath() const { return this->Temporary; }
+  const std::string& TargetPath() const { return this->Target; }
+
+  /// Whether the target's folder exists and is writable; otherwise 'why' says what is wrong.
+  bool CanWrite(std::string& why) const;
+
+  /// Rename the temporary over the target. False (and 'why' set) if that fails.
+  bool Commit(std::string& why);
+
+  /// The extension of a path, lower case, with ".gz" kept as part of it (".nii.gz").
+  static std::string Extension(const std::string& path);
+
+private:
+  std::string Target;
+  std::string Temporary;
+  bool Committed = false;
+};
+
+#endif

@@ -1,0 +1,241 @@
+#include "amMeditWriter.h"
+
+#include "amAtomicFile.h"
+#include "amMeditFormat.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkGenericCell.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+vtkStandardNewMacro(amMeditWriter);
+
+amMeditWriter::amMeditWriter()
+  : FileName(nullptr)
+  , RegionArrayName(nullptr)
+  , PointRefArrayName(nullptr)
+  , SolutionArrayName(nullptr)
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(0);
+  this->SetRegionArrayName("Region");
+  this->SetPointRefArrayName("Ref");
+}
+
+amMeditWriter::~amMeditWriter()
+{
+  this->SetFileName(nullptr);
+  this->SetRegionArrayName(nullptr);
+  this->SetPointRefArrayName(nullptr);
+  this->SetSolutionArrayName(nullptr);
+}
+
+int amMeditWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+vtkTypeBool amMeditWriter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+    return this->WriteData(vtkDataObject::GetData(inputVector[0], 0));
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+int amMeditWriter::Write()
+{
+  this->LastWriteOk = false;
+  this->Modified();
+  this->Update();
+  return this->LastWriteOk ? 1 : 0;
+}
+
+int amMeditWriter::WriteData(vtkDataObject* data)
+{
+  this->LastWriteOk = false;
+  vtkPointSet* input = vtkPointSet::SafeDownCast(data);
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName set.");
+    return 0;
+  }
+  const std::string target(this->FileName);
+  if (!input)
+  {
+    vtkErrorMacro("Cannot write '" << target << "': the input is not a point set (polydata or unstructured grid).");
+    return 0;
+  }
+  amMeditFormat::Mesh mesh;
+  const vtkIdType np = input->GetNumberOfPoints();
+  mesh.Points.resize(static_cast<size_t>(np) * 3);
+  mesh.PointRefs.assign(static_cast<size_t>(np), 0);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    input->GetPoint(i, &mesh.Points[3 * i]);
+    for (int d = 0; d < 3; ++d)
+      if (!std::isfinite(mesh.Points[3 * i + d]))
+      {
+        vtkErrorMacro("Cannot write '" << target << "': point " << i << " has a non-finite coordinate.");
+        return 0;
+      }
+  }
+  vtkDataArray* pointRefs =
+    this->PointRefArrayName ? input->GetPointData()->GetArray(this->PointRefArrayName) : nullptr;
+  if (pointRefs)
+    for (vtkIdType i = 0; i < np; ++i)
+      mesh.PointRefs[i] = static_cast<int>(pointRefs->GetComponent(i, 0));
+
+  vtkDataArray* regions = this->RegionArrayName ? input->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
+  std::map<int, amMeditFormat::Block> blocks; // keyed by VTK cell type, written in Medit order
+  vtkNew<vtkIdList> ids;
+  const vtkIdType nc = input->GetNumberOfCells();
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    const int type = input->GetCellType(c);
+    const char* keyword = nullptr;
+    switch (type)
+    {
+      case VTK_VERTEX:
+      case VTK_POLY_VERTEX:
+      case VTK_EMPTY_CELL:
+        continue;
+      case VTK_LINE: keyword = "Edges"; break;
+      case VTK_TRIANGLE: keyword = "Triangles"; break;
+      case VTK_QUAD: keyword = "Quadrilaterals"; break;
+      case VTK_TETRA: keyword = "Tetrahedra"; break;
+      case VTK_HEXAHEDRON: keyword = "Hexahedra"; break;
+      default:
+        vtkErrorMacro("Cannot write '" << target << "': cell " << c << " has VTK type " << type
+                                       << ", which Medit cannot hold (lines, triangles, quads, tetrahedra, "
+                                          "hexahedra only).");
+        return 0;
+    }
+    auto& b = blocks[type];
+    b.Keyword = keyword;
+    b.NodesPerCell = amMeditFormat::NodesOf(keyword);
+    input->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      b.Connectivity.push_back(ids->GetId(k));
+    b.Refs.push_back(regions ? static_cast<int>(regions->GetComponent(c, 0)) : 0);
+  }
+  for (int type : { VTK_LINE, VTK_TRIANGLE, VTK_QUAD, VTK_TETRA, VTK_HEXAHEDRON })
+    if (blocks.count(type))
+      mesh.Blocks.push_back(std::move(blocks[type]));
+  this->UpdateProgress(0.3);
+
+  amMeditFormat::Field field;
+  std::string solTarget;
+  if (this->SolutionArrayName && *this->SolutionArrayName)
+  {
+    vtkDataArray* a = input->GetPointData()->GetArray(this->SolutionArrayName);
+    if (!a)
+    {
+      vtkErrorMacro("Cannot write the solution of '" << target << "': no point-data array '"
+                                                     << this->SolutionArrayName << "'.");
+      return 0;
+    }
+    const int k = a->GetNumberOfComponents();
+    if (k != 1 && k != 3 && k != 6)
+    {
+      vtkErrorMacro("Cannot write the solution of '" << target << "': array '" << this->SolutionArrayName << "' has "
+                                                     << k << " components (1, 3 or 6 expected).");
+      return 0;
+    }
+    field.Type = k == 1 ? 1 : k == 3 ? 2 : 3;
+    field.Values.resize(static_cast<size_t>(np) * k);
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      double t[9];
+      a->GetTuple(i, t);
+      double* v = &field.Values[static_cast<size_t>(i) * k];
+      if (k == 6)
+      {
+        // VTK XX YY ZZ XY YZ XZ -> Medit m11 m21 m22 m31 m32 m33
+        v[0] = t[0];
+        v[1] = t[3];
+        v[2] = t[1];
+        v[3] = t[5];
+        v[4] = t[4];
+        v[5] = t[2];
+      }
+      else
+        for (int j = 0; j < k; ++j)
+          v[j] = t[j];
+      for (int j = 0; j < k; ++j)
+        if (!std::isfinite(v[j]))
+        {
+          vtkErrorMacro("Cannot write the solution of '" << target << "': value at point " << i << " is not finite.");
+          return 0;
+        }
+    }
+    mesh.Fields.push_back(std::move(field));
+    solTarget = target;
+    const auto dot = solTarget.find_last_of('.');
+    if (dot != std::string::npos && solTarget.find('/', dot) == std::string::npos)
+      solTarget.resize(dot);
+    solTarget += ".sol";
+  }
+
+  amAtomicFile meshFile(target);
+  std::string why;
+  if (!meshFile.CanWrite(why))
+  {
+    vtkErrorMacro("Cannot write '" << target << "': " << why << ".");
+    return 0;
+  }
+  {
+    std::ofstream out(meshFile.TemporaryPath());
+    if (!out || !amMeditFormat::WriteMesh(out, mesh) || !(out.flush()))
+    {
+      vtkErrorMacro("Cannot write '" << target << "': output error (disk full?).");
+      return 0;
+    }
+  }
+  if (!solTarget.empty())
+  {
+    amAtomicFile solFile(solTarget);
+    std::ofstream out(solFile.TemporaryPath());
+    if (!out || !amMeditFormat::WriteSolution(out, mesh) || !(out.flush()))
+    {
+      vtkErrorMacro("Cannot write '" << solTarget << "': output error (disk full?).");
+      return 0;
+    }
+    out.close();
+    if (!solFile.Commit(why))
+    {
+      vtkErrorMacro("Cannot write '" << solTarget << "': " << why);
+      return 0;
+    }
+  }
+  if (!meshFile.Commit(why))
+  {
+    vtkErrorMacro("Cannot write '" << target << "': " << why);
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  this->LastWriteOk = true;
+  return 1;
+}
+
+void amMeditWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)") << "\n";
+  os << indent << "PointRefArrayName: " << (this->PointRefArrayName ? this->PointRefArrayName : "(none)") << "\n";
+  os << indent << "SolutionArrayName: " << (this->SolutionArrayName ? this->SolutionArrayName : "(none)") << "\n";
+}
