@@ -1,0 +1,117 @@
+"""The ``anatomesh`` command.
+
+    anatomesh run PIPELINE.xml [--set NAME=VALUE ...] [--output DIR] [--quiet]
+    anatomesh filters            list the filter catalogue (from the plugin's server-manager XML)
+
+Exit status: 0 on success, 1 when the pipeline or its data is wrong (the message names the file
+and, for pipeline files, the line), 2 for a command-line mistake.
+"""
+import argparse
+import os
+import sys
+import time
+
+
+def _default_pipeline():
+    here = os.path.dirname(os.path.abspath(__file__))
+    return os.path.join(here, "pipelines", "thorax.xml")
+
+
+class _Progress:
+    """One line per filter on a terminal (\\r-updated), every 25 % otherwise."""
+
+    def __init__(self, stream):
+        self.stream, self.tty = stream, stream.isatty()
+        self.current, self.shown, self.start = None, -1, {}
+
+    def __call__(self, name, fraction):
+        if name is None:
+            if self.tty and self.current:
+                self.stream.write("\n")
+            self.stream.flush()
+            return
+        if name != self.current:
+            if self.tty and self.current:
+                self.stream.write("\n")
+            self.current, self.shown = name, -1
+            self.start[name] = time.time()
+        step = int(fraction * 100) if self.tty else int(fraction * 4) * 25
+        if step == self.shown:
+            return
+        self.shown = step
+        elapsed = time.time() - self.start[name]
+        text = "  %-24s %3d%%  %6.1f s" % (name, step, elapsed)
+        if self.tty:
+            self.stream.write("\r" + text)
+        else:
+            self.stream.write(text + "\n")
+        self.stream.flush()
+
+
+def _summary(paths, out):
+    from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: F401 (loads VTK)
+    out.write("Wrote %d file(s):\n" % len(paths))
+    for p in paths:
+        size = os.path.getsize(p) if os.path.exists(p) else 0
+        out.write("  %-60s %10.1f kB\n" % (p, size / 1024.0))
+
+
+def _run(args):
+    from . import pipeline as pl
+    variables = {}
+    for item in args.set or []:
+        if "=" not in item:
+            sys.stderr.write("anatomesh: error: --set takes NAME=VALUE, got %r\n" % item)
+            return 2
+        k, v = item.split("=", 1)
+        variables[k] = v
+    if args.output:
+        variables["output"] = args.output
+    try:
+        p = pl.Pipeline(args.pipeline, variables)
+        if not args.quiet:
+            sys.stderr.write("Running %s (%d filters)\n" % (args.pipeline, len(p.steps)))
+        t0 = time.time()
+        written = p.run(progress=None if args.quiet else _Progress(sys.stderr))
+    except pl.PipelineError as e:
+        sys.stderr.write("anatomesh: error: %s\n" % e)
+        return 1
+    if not args.quiet:
+        _summary(written, sys.stdout)
+        sys.stdout.write("Done in %.1f s.\n" % (time.time() - t0))
+    return 0
+
+
+def _filters(args):
+    from . import catalogue
+    for name, proxy in sorted(catalogue.load().items()):
+        print("%-24s %-8s %s" % (name, proxy.group, proxy.short_help))
+        if args.verbose:
+            for prop in proxy.properties.values():
+                if prop.kind != "input":
+                    print("    %-28s %-6s x%d default=%s" % (prop.name, prop.kind, prop.number_of_elements,
+                                                          " ".join(prop.defaults or [])))
+    return 0
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="anatomesh", description="CT/MRI scan to simulation-ready mesh.")
+    sub = parser.add_subparsers(dest="command")
+    run = sub.add_parser("run", help="run a pipeline XML file")
+    run.add_argument("pipeline", help="pipeline XML file")
+    run.add_argument("--set", action="append", metavar="NAME=VALUE", help="set a pipeline variable")
+    run.add_argument("--output", metavar="DIR", help="output folder (sets the variable 'output')")
+    run.add_argument("--quiet", action="store_true", help="no progress or summary")
+    flt = sub.add_parser("filters", help="list the filter catalogue")
+    flt.add_argument("--verbose", "-v", action="store_true", help="show properties")
+    args = parser.parse_args(argv)
+    if args.command == "run":
+        return _run(args)
+    if args.command == "filters":
+        return _filters(args)
+    parser.print_help()
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,374 @@
+"""Pipeline XML files: parse, validate against the catalogue, and run.
+
+Format (version 1)::
+
+    <AnatomeshPipeline version="1">
+      <Variable name="output" default="out"/>            <!-- ${output}, overridable -->
+      <Filter name="phantom" type="ThoraxPhantomSource">
+        <Property name="Spacing" value="2 2 2"/>
+      </Filter>
+      <Filter name="save" type="ImageWriter">              <!-- writers run after the rest -->
+        <Input from="phantom" port="Labels"/>              <!-- port: name or index -->
+        <Property name="FileName" value="${output}/labels.nii.gz"/>
+      </Filter>
+      <Output from="phantom" port="CT" file="${output}/ct.vti"/>  <!-- any VTK XML file -->
+    </AnatomeshPipeline>
+
+``type`` names a proxy of the catalogue (the plugin's server-manager XML); properties are
+checked against it (name, type, number of values, boolean and range domains) before anything
+runs. ``${name}`` is replaced by a variable: its default, or the value given to ``run`` (the
+command line's ``--set name=value``; ``--output DIR`` sets ``output``). Every problem is a
+PipelineError naming the file and line.
+"""
+import os
+import re
+import sys
+import time
+import xml.parsers.expat
+
+from . import catalogue
+
+FORMAT_VERSION = "1"
+
+
+class PipelineError(Exception):
+    """A problem with a pipeline file or its execution; str() names the file and line."""
+
+
+class _Node:
+    def __init__(self, tag, attrs, line):
+        self.tag, self.attrs, self.line, self.children = tag, attrs, line, []
+
+
+def _parse_xml(path):
+    try:
+        with open(path, "rb") as f:
+            data = f.read()
+    except OSError as e:
+        raise PipelineError("%s: cannot read the pipeline file: %s" % (path, e.strerror))
+    parser = xml.parsers.expat.ParserCreate()
+    stack, roots = [], []
+
+    def start(tag, attrs):
+        node = _Node(tag, attrs, parser.CurrentLineNumber)
+        (stack[-1].children if stack else roots).append(node)
+        stack.append(node)
+
+    def end(tag):
+        stack.pop()
+
+    parser.StartElementHandler, parser.EndElementHandler = start, end
+    try:
+        parser.Parse(data, True)
+    except xml.parsers.expat.ExpatError as e:
+        raise PipelineError("%s:%d: malformed XML: %s" % (path, e.lineno, xml.parsers.expat.ErrorString(e.code)))
+    return roots[0]
+
+
+class Step:
+    def __init__(self, name, proxy, line):
+        self.name, self.proxy, self.line = name, proxy, line
+        self.properties = []  # (Property, [values as strings], line)
+        self.inputs = []  # (input property, upstream name, port, line)
+        self.algorithm = None
+
+
+class Pipeline:
+    """A parsed and validated pipeline file."""
+
+    def __init__(self, path, variables=None, proxies=None):
+        self.path = path
+        self.proxies = proxies or catalogue.load()
+        self.variables = {}
+        self.steps = []
+        self.outputs = []  # (upstream name, port, file, line)
+        self._given = dict(variables or {})
+        self._parse()
+
+    # -- parsing -------------------------------------------------------------------------------
+    def _error(self, line, message):
+        return PipelineError("%s:%d: %s" % (self.path, line, message))
+
+    def _expand(self, text, line):
+        def repl(m):
+            name = m.group(1)
+            if name not in self.variables:
+                raise self._error(line, "unknown variable ${%s} (defined: %s)" % (
+                    name, ", ".join(sorted(self.variables)) or "none"))
+            return self.variables[name]
+        return re.sub(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}", repl, text)
+
+    def _parse(self):
+        root = _parse_xml(self.path)
+        if root.tag != "AnatomeshPipeline":
+            raise self._error(root.line, "the root element must be <AnatomeshPipeline>, not <%s>" % root.tag)
+        version = root.attrs.get("version")
+        if version != FORMAT_VERSION:
+            raise self._error(root.line, "unsupported pipeline format version %r (this Anatomesh reads %s)"
+                              % (version, FORMAT_VERSION))
+        for node in root.children:
+            if node.tag == "Variable":
+                name = node.attrs.get("name")
+                if not name or not re.match(r"^[A-Za-z_][A-Za-z0-9_]*$", name):
+                    raise self._error(node.line, "a <Variable> needs a name made of letters, digits and _")
+                self.variables[name] = self._given.get(name, node.attrs.get("default", ""))
+        unknown = set(self._given) - set(self.variables)
+        if unknown:
+            raise PipelineError("%s: --set names variables the pipeline does not declare: %s (declared: %s)" % (
+                self.path, ", ".join(sorted(unknown)), ", ".join(sorted(self.variables)) or "none"))
+        names = {}
+        for node in root.children:
+            if node.tag == "Variable":
+                continue
+            if node.tag == "Filter":
+                step = self._parse_filter(node)
+                if step.name in names:
+                    raise self._error(node.line, "filter name %r is used twice" % step.name)
+                names[step.name] = step
+                self.steps.append(step)
+            elif node.tag == "Output":
+                for key in ("from", "file"):
+                    if key not in node.attrs:
+                        raise self._error(node.line, "<Output> needs a %r attribute" % key)
+                self.outputs.append((node.attrs["from"], node.attrs.get("port", "0"),
+                                     self._expand(node.attrs["file"], node.line), node.line))
+            else:
+                raise self._error(node.line, "unknown element <%s> (expected Variable, Filter or Output)" % node.tag)
+        self._check_connections(names)
+
+    def _parse_filter(self, node):
+        name, kind = node.attrs.get("name"), node.attrs.get("type")
+        if not name or not kind:
+            raise self._error(node.line, "a <Filter> needs 'name' and 'type' attributes")
+        if kind not in self.proxies:
+            raise self._error(node.line, "unknown filter type %r (known: %s)" % (kind, ", ".join(sorted(self.proxies))))
+        proxy = self.proxies[kind]
+        step = Step(name, proxy, node.line)
+        for child in node.children:
+            if child.tag == "Property":
+                pname = child.attrs.get("name")
+                if pname not in proxy.properties or proxy.properties[pname].kind == "input":
+                    known = [p for p in proxy.properties if proxy.properties[p].kind != "input"]
+                    raise self._error(child.line, "filter %r (%s) has no property %r (properties: %s)" % (
+                        name, kind, pname, ", ".join(known)))
+                if "value" not in child.attrs:
+                    raise self._error(child.line, "property %r needs a 'value' attribute" % pname)
+                prop = proxy.properties[pname]
+                value = self._expand(child.attrs["value"], child.line)
+                values = [value] if prop.kind == "string" and prop.number_of_elements == 1 else value.split()
+                self._check_value(step, prop, values, child.line)
+                step.properties.append((prop, values, child.line))
+            elif child.tag == "Input":
+                inputs = proxy.inputs
+                if not inputs:
+                    raise self._error(child.line, "filter %r (%s) takes no input" % (name, kind))
+                iname = child.attrs.get("name", inputs[0].name)
+                match = [p for p in inputs if p.name == iname]
+                if not match:
+                    raise self._error(child.line, "filter %r has no input %r" % (name, iname))
+                if "from" not in child.attrs:
+                    raise self._error(child.line, "<Input> needs a 'from' attribute")
+                step.inputs.append((match[0], child.attrs["from"], child.attrs.get("port", "0"), child.line))
+            else:
+                raise self._error(child.line, "unknown element <%s> in a <Filter> (expected Property or Input)"
+                                  % child.tag)
+        return step
+
+    def _check_value(self, step, prop, values, line):
+        where = "property %r of filter %r" % (prop.name, step.name)
+        if prop.kind == "string":
+            if prop.number_of_elements and len(values) != prop.number_of_elements and not prop.repeat_command:
+                raise self._error(line, "%s needs %d value(s), got %d" % (where, prop.number_of_elements, len(values)))
+            return
+        if not prop.repeat_command and len(values) != prop.number_of_elements:
+            raise self._error(line, "%s needs %d value(s), got %d" % (where, prop.number_of_elements, len(values)))
+        conv = int if prop.kind == "int" else float
+        for i, v in enumerate(values):
+            if prop.enumeration and v in prop.enumeration:
+                values[i] = str(prop.enumeration[v])
+                continue
+            try:
+                number = conv(v)
+            except ValueError:
+                raise self._error(line, "%s must be %s, got %r" % (
+                    where, "an integer" if conv is int else "a number", v))
+            if conv is float and number != number:
+                raise self._error(line, "%s is NaN" % where)
+            if prop.boolean and number not in (0, 1):
+                raise self._error(line, "%s is a boolean (0 or 1), got %r" % (where, v))
+            if prop.enumeration and number not in prop.enumeration.values():
+                raise self._error(line, "%s must be one of %s, got %r" % (where, ", ".join(prop.enumeration), v))
+            if prop.range:
+                lo, hi = prop.range
+                k = i if lo is None or i < len(lo) else 0
+                if lo is not None and number < lo[min(k, len(lo) - 1)]:
+                    raise self._error(line, "%s must be >= %s, got %s" % (where, lo[min(k, len(lo) - 1)], v))
+                if hi is not None and number > hi[min(k, len(hi) - 1)]:
+                    raise self._error(line, "%s must be <= %s, got %s" % (where, hi[min(k, len(hi) - 1)], v))
+
+    def _port_index(self, step, port, line):
+        if port.isdigit():
+            return int(port)
+        if port in step.proxy.output_ports:
+            return step.proxy.output_ports[port]
+        raise self._error(line, "filter %r (%s) has no output port %r (ports: %s)" % (
+            step.name, step.proxy.name, port, ", ".join(step.proxy.output_ports) or "0"))
+
+    def _check_connections(self, names):
+        for step in self.steps:
+            for prop, upstream, port, line in step.inputs:
+                if upstream not in names:
+                    raise self._error(line, "input of %r comes from %r, which is not a filter of this pipeline"
+                                      % (step.name, upstream))
+                if names[upstream].proxy.is_writer:
+                    raise self._error(line, "input of %r comes from writer %r, which has no output"
+                                      % (step.name, upstream))
+                self._port_index(names[upstream], port, line)
+        for upstream, port, _, line in self.outputs:
+            if upstream not in names:
+                raise self._error(line, "<Output> from %r, which is not a filter of this pipeline" % upstream)
+            self._port_index(names[upstream], port, line)
+        # Cycles: depth-first search over the input edges.
+        state = {}
+
+        def visit(step, chain):
+            state[step.name] = 1
+            for _, upstream, _, line in step.inputs:
+                if state.get(upstream) == 1:
+                    raise self._error(line, "the pipeline has a cycle: %s" % " -> ".join(chain + [step.name, upstream]))
+                if upstream not in state:
+                    visit(names[upstream], chain + [step.name])
+            state[step.name] = 2
+
+        for step in self.steps:
+            if step.name not in state:
+                visit(step, [])
+        for step in self.steps:
+            missing = [p.name for p in step.proxy.inputs if p.name not in [i[0].name for i in step.inputs]]
+            if missing:
+                raise self._error(step.line, "filter %r (%s) needs its input %s connected" % (
+                    step.name, step.proxy.name, ", ".join(missing)))
+
+    # -- execution -----------------------------------------------------------------------------
+    def build(self):
+        """Instantiate and connect the VTK algorithms; returns {name: algorithm}."""
+        import anatomesh
+        algorithms = {}
+        for step in self.steps:
+            cls = getattr(anatomesh, step.proxy.class_name, None)
+            if cls is None:
+                raise self._error(step.line, "class %s of filter type %s is not in this build of Anatomesh"
+                                  % (step.proxy.class_name, step.proxy.name))
+            algorithm = cls()
+            for prop, values, line in step.properties:
+                conv = {"int": int, "double": float}.get(prop.kind, str)
+                args = [conv(v) for v in values]
+                if prop.kind == "string" and prop.number_of_elements == 1:
+                    args = [values[0]]
+                method = getattr(algorithm, prop.command, None)
+                if method is None:
+                    raise self._error(line, "%s has no method %s" % (step.proxy.class_name, prop.command))
+                method(*args)
+            step.algorithm = algorithm
+            algorithms[step.name] = algorithm
+        by_name = {s.name: s for s in self.steps}
+        for step in self.steps:
+            for prop, upstream, port, line in step.inputs:
+                index = self._port_index(by_name[upstream], port, line)
+                step.algorithm.SetInputConnection(0, by_name[upstream].algorithm.GetOutputPort(index))
+        return algorithms
+
+    def run(self, progress=None, log=None):
+        """Build and execute; write every writer and <Output>. Returns a list of written files."""
+        algorithms = self.build()
+        errors = []
+        watcher = _Watcher(errors, progress)
+        for step in self.steps:
+            watcher.watch(step.name, step.algorithm)
+        written = []
+        by_name = {s.name: s for s in self.steps}
+        for step in self.steps:
+            if not step.proxy.is_writer:
+                continue
+            _make_parent(step.algorithm.GetFileName(), self, step.line)
+            ok = step.algorithm.Write()
+            if errors or not ok:
+                raise self._error(step.line, "filter %r (%s) failed: %s" % (
+                    errors[0][0] if errors else step.name, step.proxy.name,
+                    errors[0][1] if errors else "the writer reported no success"))
+            written.append(step.algorithm.GetFileName())
+        for upstream, port, path, line in self.outputs:
+            step = by_name[upstream]
+            index = self._port_index(step, port, line)
+            algorithm = step.algorithm
+            algorithm.UpdateInformation()
+            ok = algorithm.Update(index) if hasattr(algorithm, "Update") else True
+            if errors or not ok:
+                raise self._error(line, "filter %r (%s) failed: %s" % (
+                    errors[0][0] if errors else upstream, step.proxy.name,
+                    errors[0][1] if errors else "no output"))
+            _make_parent(path, self, line)
+            write_vtk_xml(algorithm.GetOutputDataObject(index), path)
+            written.append(path)
+        watcher.finish()
+        return written
+
+
+class _Watcher:
+    """Collects VTK errors and reports progress of each algorithm."""
+
+    def __init__(self, errors, progress):
+        self.errors, self.progress, self.last = errors, progress, {}
+
+    def watch(self, name, algorithm):
+        def error_cb(obj, event, data=None):
+            message = str(data) if data is not None else "error"
+            # VTK's text: "ERROR: In file, line N\nclass (0x..): message"
+            text = message.strip().splitlines()
+            body = text[-1] if text else message
+            body = re.sub(r"^\w+ \(0x[0-9a-f]+\): ", "", body)
+            self.errors.append((name, body.strip()))
+
+        error_cb.CallDataType = "string0"
+        algorithm.AddObserver("ErrorEvent", error_cb)
+        if self.progress:
+            def progress_cb(obj, event):
+                self.progress(name, obj.GetProgress())
+            algorithm.AddObserver("ProgressEvent", progress_cb)
+
+    def finish(self):
+        if self.progress:
+            self.progress(None, 1.0)
+
+
+def _make_parent(path, pipeline, line):
+    folder = os.path.dirname(os.path.abspath(path))
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError as e:
+        raise pipeline._error(line, "cannot create folder %s: %s" % (folder, e.strerror))
+
+
+def write_vtk_xml(data, path):
+    """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm) atomically."""
+    from vtkmodules.vtkIOXML import (vtkXMLImageDataWriter, vtkXMLPolyDataWriter,
+                                     vtkXMLUnstructuredGridWriter, vtkXMLMultiBlockDataWriter)
+    writers = {".vti": vtkXMLImageDataWriter, ".vtp": vtkXMLPolyDataWriter,
+               ".vtu": vtkXMLUnstructuredGridWriter, ".vtm": vtkXMLMultiBlockDataWriter}
+    ext = os.path.splitext(path)[1].lower()
+    if ext not in writers:
+        raise PipelineError("%s: unknown output extension %r (use %s)" % (path, ext, ", ".join(sorted(writers))))
+    writer = writers[ext]()
+    folder, base = os.path.split(os.path.abspath(path))
+    tmp = os.path.join(folder, ".%s.tmp%d%s" % (os.path.splitext(base)[0], os.getpid(), ext))
+    writer.SetFileName(tmp)
+    writer.SetInputData(data)
+    writer.SetDataModeToAppended()
+    writer.SetCompressorTypeToZLib()
+    try:
+        if not writer.Write():
+            raise PipelineError("%s: the VTK XML writer failed (is %s a %s?)" % (path, data.GetClassName(), ext))
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
