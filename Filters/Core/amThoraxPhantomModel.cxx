@@ -80,7 +80,7 @@ amThoraxPhantomModel::amThoraxPhantomModel()
   this->Heart = MakeEllipsoid(hc, hr, heartAxes);
   double lvc[3], rvc[3];
   const double lvLocal[3] = { 12.0, 8.0, -3.0 }, lvr[3] = { 26.0, 18.0, 30.0 };
-  const double rvLocal[3] = { -28.0, -18.0, -3.0 }, rvr[3] = { 18.0, 13.0, 28.0 };
+  const double rvLocal[3] = { -26.0, -15.0, -3.0 }, rvr[3] = { 17.0, 12.0, 26.0 };
   LocalToWorld(this->Heart, lvLocal, lvc);
   LocalToWorld(this->Heart, rvLocal, rvc);
   this->LeftVentricle = MakeEllipsoid(lvc, lvr, heartAxes);

@@ -25,11 +25,14 @@
 #include <itkNrrdImageIOFactory.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <mutex>
 #include <numeric>
 #include <sstream>
+#include <fstream>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 vtkStandardNewMacro(amImageReader);
@@ -74,6 +77,132 @@ std::string FirstLine(const std::string& text)
     t = t.substr(desc + 13);
   std::replace(t.begin(), t.end(), '\n', ' ');
   return t;
+}
+
+std::string Trim(const std::string& s)
+{
+  const auto b = s.find_first_not_of(" \t\r\n");
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+long long FileSize(const std::string& path)
+{
+  struct stat st;
+  return ::stat(path.c_str(), &st) == 0 ? static_cast<long long>(st.st_size) : -1;
+}
+
+// ITK's MetaImage reader accepts a short data file (it only prints to stderr): check the size of
+// the voxel data against the header ourselves. Returns an empty string when it is fine.
+std::string CheckMetaImageData(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, dataFile;
+  std::vector<long long> dims;
+  long long elementBytes = 0, channels = 1, compressedSize = -1, headerBytes = 0;
+  bool compressed = false;
+  while (std::getline(in, line))
+  {
+    headerBytes += static_cast<long long>(line.size()) + 1;
+    const auto eq = line.find('=');
+    if (eq == std::string::npos)
+      continue;
+    const std::string key = Trim(line.substr(0, eq)), value = Trim(line.substr(eq + 1));
+    std::istringstream v(value);
+    if (key == "DimSize")
+    {
+      long long d;
+      while (v >> d)
+        dims.push_back(d);
+    }
+    else if (key == "ElementNumberOfChannels")
+      v >> channels;
+    else if (key == "CompressedData")
+      compressed = value == "True" || value == "true";
+    else if (key == "CompressedDataSize")
+      v >> compressedSize;
+    else if (key == "ElementType")
+    {
+      static const std::pair<const char*, int> sizes[] = { { "MET_UCHAR", 1 }, { "MET_CHAR", 1 },
+        { "MET_USHORT", 2 }, { "MET_SHORT", 2 }, { "MET_UINT", 4 }, { "MET_INT", 4 }, { "MET_FLOAT", 4 },
+        { "MET_ULONG_LONG", 8 }, { "MET_LONG_LONG", 8 }, { "MET_DOUBLE", 8 } };
+      for (const auto& sz : sizes)
+        if (value == sz.first)
+          elementBytes = sz.second;
+    }
+    else if (key == "ElementDataFile")
+    {
+      dataFile = value;
+      break;
+    }
+  }
+  if (dims.empty() || elementBytes == 0 || dataFile.empty() || dataFile == "LIST" ||
+    dataFile.find('%') != std::string::npos || dataFile.find(' ') != std::string::npos)
+    return std::string();
+  long long expected = elementBytes * channels;
+  for (long long d : dims)
+    expected *= d;
+  long long available;
+  std::string where;
+  if (dataFile == "LOCAL")
+  {
+    available = FileSize(path) - headerBytes;
+    where = path;
+  }
+  else
+  {
+    where = dataFile[0] == '/' ? dataFile : FolderOf(path) + "/" + dataFile;
+    available = FileSize(where);
+    if (available < 0)
+      return "its data file '" + where + "' does not exist";
+  }
+  if (compressed)
+  {
+    if (compressedSize > 0 && available < compressedSize)
+      return "the compressed voxel data is truncated (" + std::to_string(available) + " of " +
+        std::to_string(compressedSize) + " bytes in '" + where + "')";
+    return std::string();
+  }
+  if (available < expected)
+    return "the voxel data is truncated (" + std::to_string(available) + " of " + std::to_string(expected) +
+      " bytes in '" + where + "')";
+  return std::string();
+}
+
+// A NRRD header with both "space" and per-axis "spacings" is invalid (the spec wants "space
+// directions" then), and ITK refuses it; such files exist (VTK's headsq). Write a repaired copy
+// without the "space" line and with an absolute data file path; returns its path, or "".
+std::string RepairNrrdSpacingsWithSpace(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line, out;
+  bool changed = false;
+  while (std::getline(in, line))
+  {
+    if (line.rfind("space:", 0) == 0)
+    {
+      changed = true;
+      continue;
+    }
+    if (line.rfind("data file:", 0) == 0 || line.rfind("datafile:", 0) == 0)
+    {
+      const auto colon = line.find(':');
+      std::string rest = Trim(line.substr(colon + 1));
+      if (!rest.empty() && rest[0] != '/' && rest != "LIST")
+        rest = FolderOf(path) + "/" + rest;
+      line = line.substr(0, colon + 1) + " " + rest;
+    }
+    out += line + "\n";
+  }
+  if (!changed)
+    return std::string();
+  char tmpl[] = "/tmp/anatomesh-nrrd-XXXXXX.nhdr";
+  const int fd = ::mkstemps(tmpl, 5);
+  if (fd < 0)
+    return std::string();
+  const bool ok = ::write(fd, out.data(), out.size()) == static_cast<ssize_t>(out.size());
+  ::close(fd);
+  return ok ? std::string(tmpl) : std::string();
 }
 
 // The geometry of one DICOM slice.
@@ -228,6 +357,7 @@ bool amImageReader::LoadFile(const std::string& path)
   if (dynamic_cast<itk::GDCMImageIO*>(io.GetPointer()))
     return this->LoadDicomSeries(FolderOf(path), path);
   std::string format = io->GetNameOfClass();
+  std::string readPath = path, repaired;
   try
   {
     io->SetFileName(path);
@@ -235,8 +365,49 @@ bool amImageReader::LoadFile(const std::string& path)
   }
   catch (const itk::ExceptionObject& e)
   {
-    vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(e.what()));
-    return false;
+    const std::string what = e.what();
+    if (format.find("Nrrd") != std::string::npos &&
+      what.find("nrrdSpacingStatusScalarWithSpace") != std::string::npos &&
+      !(repaired = RepairNrrdSpacingsWithSpace(path)).empty())
+    {
+      vtkWarningMacro("'" << path << "' gives both 'space' and per-axis 'spacings', which NRRD forbids; read it "
+                          "ignoring the 'space' line (identity direction, spacings kept).");
+      readPath = repaired;
+      try
+      {
+        io->SetFileName(readPath);
+        io->ReadImageInformation();
+      }
+      catch (const itk::ExceptionObject& e2)
+      {
+        std::remove(repaired.c_str());
+        vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(e2.what()));
+        return false;
+      }
+    }
+    else
+    {
+      vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(what));
+      return false;
+    }
+  }
+  struct RemoveRepaired
+  {
+    std::string Path;
+    ~RemoveRepaired()
+    {
+      if (!Path.empty())
+        std::remove(Path.c_str());
+    }
+  } removeRepaired{ repaired };
+  if (format.find("Meta") != std::string::npos)
+  {
+    const std::string problem = CheckMetaImageData(path);
+    if (!problem.empty())
+    {
+      vtkErrorMacro("Cannot read '" << path << "': " << problem << ".");
+      return false;
+    }
   }
   const unsigned dim = io->GetNumberOfDimensions();
   if (dim < 2 || dim > 4 || (dim == 4 && io->GetDimensions(3) != 1))
@@ -265,7 +436,7 @@ bool amImageReader::LoadFile(const std::string& path)
     using ReaderType = itk::ImageFileReader<amITK::Image3<T>>;
     auto reader = ReaderType::New();
     reader->SetImageIO(io);
-    reader->SetFileName(path);
+    reader->SetFileName(readPath);
     try
     {
       reader->Update();
@@ -305,7 +476,8 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
   std::string uid;
   try
   {
-    names->SetUseSeriesDetails(true);
+    // Group strictly by SeriesInstanceUID: the geometry checks below find what does not fit.
+    names->SetUseSeriesDetails(false);
     names->SetDirectory(folder);
     const auto& uids = names->GetSeriesUIDs();
     if (uids.empty())
@@ -387,7 +559,21 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
       io->GetValueFromTag("0008|0060", modality);
       io->GetValueFromTag("0018|1120", tiltTag);
     }
-    else if (io->GetComponentType() != componentType)
+    else
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const auto axis = io->GetDirection(c);
+        for (int r = 0; r < 3; ++r)
+          if (std::fabs(dir[3 * r + c] - axis[r]) > 1e-3)
+          {
+            vtkErrorMacro("DICOM series in '" << folder << "' mixes slice orientations ('" << files[0] << "' and '"
+                                              << files[i] << "' differ); it is not one volume.");
+            return false;
+          }
+      }
+    }
+    if (i > 0 && io->GetComponentType() != componentType)
     {
       // Rescale parameters that differ between slices can change the component type: read as float.
       componentType = itk::IOComponentEnum::FLOAT;

@@ -49,6 +49,9 @@ public:
   vtkGetStringMacro(SolutionArrayName);
   ///@}
 
+  /// Set the mesh to write without a pipeline connection.
+  void SetInputData(vtkDataObject* input) { this->SetInputDataInternal(0, input); }
+
   /// Write the input. Returns 1 on success, 0 on error (reported with vtkErrorMacro).
   int Write();
 

@@ -1,0 +1,184 @@
+// Medit .mesh/.sol: a round trip keeps every number; malformed files give the line of the problem.
+#include "amMeditReader.h"
+#include "amMeditWriter.h"
+#include "amTestUtilities.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace
+{
+// Two tetrahedra of two regions sharing a face, with that face as a triangle, awkward numbers.
+vtkSmartPointer<vtkUnstructuredGrid> TwoTets()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  pts->InsertNextPoint(0.1, 0.2, 0.30000000000000004);
+  pts->InsertNextPoint(1.0 / 3.0, 0.0, 0.0);
+  pts->InsertNextPoint(0.0, 2.0 / 7.0, 1e-17);
+  pts->InsertNextPoint(0.0, 0.0, 1.0e6 + 0.123456789);
+  pts->InsertNextPoint(-3.14159265358979, -2.718281828459045, -1.4142135623730951);
+  grid->SetPoints(pts);
+  const vtkIdType t1[4] = { 0, 1, 2, 3 }, t2[4] = { 0, 2, 1, 4 }, tri[3] = { 0, 1, 2 };
+  grid->InsertNextCell(VTK_TETRA, 4, t1);
+  grid->InsertNextCell(VTK_TETRA, 4, t2);
+  grid->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  vtkNew<vtkIntArray> region;
+  region->SetName("Region");
+  region->InsertNextValue(5);
+  region->InsertNextValue(6);
+  region->InsertNextValue(56);
+  grid->GetCellData()->AddArray(region);
+  vtkNew<vtkIntArray> ref;
+  ref->SetName("Ref");
+  for (int i = 0; i < 5; ++i)
+    ref->InsertNextValue(10 + i);
+  grid->GetPointData()->AddArray(ref);
+  vtkNew<vtkDoubleArray> metric;
+  metric->SetName("Metric");
+  metric->SetNumberOfComponents(6);
+  for (int i = 0; i < 5; ++i)
+  {
+    const double m[6] = { 1.0 + i, 2.0 / 3.0, 3.0, 0.1 * i, -0.25, 1e-9 };
+    metric->InsertNextTypedTuple(m);
+  }
+  grid->GetPointData()->AddArray(metric);
+  return grid;
+}
+
+vtkUnstructuredGrid* ReadBack(amMeditReader* reader, const std::string& path, amTest::ErrorCatcher* errors)
+{
+  reader->SetFileName(path.c_str());
+  errors->Watch(reader);
+  reader->Update();
+  return reader->GetOutput();
+}
+}
+
+TEST(Medit, RoundTripKeepsEveryNumber)
+{
+  auto grid = TwoTets();
+  const std::string path = amTest::TempPath("two.mesh");
+  vtkNew<amMeditWriter> writer;
+  writer->SetInputData(grid);
+  writer->SetFileName(path.c_str());
+  writer->SetSolutionArrayName("Metric");
+  ASSERT_EQ(writer->Write(), 1);
+  ASSERT_TRUE(amTest::Exists(amTest::TempPath("two.sol")));
+
+  vtkNew<amMeditReader> reader;
+  vtkNew<amTest::ErrorCatcher> errors;
+  vtkUnstructuredGrid* back = ReadBack(reader, path, errors);
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  ASSERT_EQ(back->GetNumberOfPoints(), 5);
+  for (vtkIdType i = 0; i < 5; ++i)
+  {
+    double a[3], b[3];
+    grid->GetPoint(i, a);
+    back->GetPoint(i, b);
+    for (int d = 0; d < 3; ++d)
+      EXPECT_EQ(a[d], b[d]) << "point " << i; // bit-exact
+  }
+  ASSERT_EQ(back->GetNumberOfCells(), 3);
+  // Medit order: triangles before tetrahedra.
+  EXPECT_EQ(back->GetCellType(0), VTK_TRIANGLE);
+  EXPECT_EQ(back->GetCellType(1), VTK_TETRA);
+  auto* region = vtkIntArray::SafeDownCast(back->GetCellData()->GetArray("Region"));
+  ASSERT_NE(region, nullptr);
+  EXPECT_EQ(region->GetValue(0), 56);
+  EXPECT_EQ(region->GetValue(1), 5);
+  EXPECT_EQ(region->GetValue(2), 6);
+  vtkIdType npts;
+  const vtkIdType* ids;
+  back->GetCellPoints(2, npts, ids);
+  EXPECT_EQ(ids[3], 4);
+  auto* ref = vtkIntArray::SafeDownCast(back->GetPointData()->GetArray("Ref"));
+  ASSERT_NE(ref, nullptr);
+  EXPECT_EQ(ref->GetValue(4), 14);
+  auto* metric = back->GetPointData()->GetArray("Metric");
+  ASSERT_NE(metric, nullptr);
+  ASSERT_EQ(metric->GetNumberOfComponents(), 6);
+  for (vtkIdType i = 0; i < 5; ++i)
+    for (int c = 0; c < 6; ++c)
+      EXPECT_EQ(metric->GetComponent(i, c), grid->GetPointData()->GetArray("Metric")->GetComponent(i, c));
+}
+
+TEST(Medit, MalformedFilesNameTheLine)
+{
+  struct Case
+  {
+    const char* Text;
+    const char* Expect;
+  };
+  const Case cases[] = {
+    { "MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 1 1 0\nTriangles\n1\n1 2 3 7\nEnd\n",
+      "line 9: Triangles #1 uses vertex 3 (the mesh has 2)" },
+    { "MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 x 1 0\n", "line 6: expected a vertex coordinate" },
+    { "MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n", "unexpected end of file" },
+    { "MeshVersionFormatted 2\nDimension 3\nBananas\n3\n", "line 3: unknown or unsupported section 'Bananas'" },
+    { "Dimension 3\nVertices\n1\n0 0 0 0\n", "no MeshVersionFormatted" },
+    { "MeshVersionFormatted 2\nDimension 3\nVertices\n1\nnan 0 0 0\n", "non-finite" },
+    { "", "no MeshVersionFormatted" },
+  };
+  int k = 0;
+  for (const Case& c : cases)
+  {
+    const std::string path = amTest::TempPath("bad" + std::to_string(k++) + ".mesh");
+    std::ofstream(path) << c.Text;
+    vtkNew<amMeditReader> reader;
+    vtkNew<amTest::ErrorCatcher> errors;
+    ReadBack(reader, path, errors);
+    EXPECT_TRUE(errors->ErrorContains(path)) << errors->AllErrors();
+    EXPECT_TRUE(errors->ErrorContains(c.Expect)) << "expected '" << c.Expect << "' in: " << errors->AllErrors();
+  }
+  vtkNew<amMeditReader> reader;
+  vtkNew<amTest::ErrorCatcher> errors;
+  ReadBack(reader, "/no/such.mesh", errors);
+  EXPECT_TRUE(errors->ErrorContains("Cannot open Medit mesh '/no/such.mesh'")) << errors->AllErrors();
+}
+
+TEST(Medit, SolutionWithWrongCountIsRefused)
+{
+  const std::string mesh = amTest::TempPath("solcount.mesh"), sol = amTest::TempPath("solcount.sol");
+  std::ofstream(mesh) << "MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 1 1 0\nEnd\n";
+  std::ofstream(sol) << "MeshVersionFormatted 2\nDimension 3\nSolAtVertices\n3\n1 1\n0.5\n0.25\n0.125\nEnd\n";
+  vtkNew<amMeditReader> reader;
+  vtkNew<amTest::ErrorCatcher> errors;
+  ReadBack(reader, mesh, errors);
+  EXPECT_TRUE(errors->ErrorContains("SolAtVertices has 3 values for 2 vertices")) << errors->AllErrors();
+}
+
+TEST(Medit, WriterRefusesNaNAndUnsupportedCellsWithoutLeavingAFile)
+{
+  auto grid = TwoTets();
+  grid->GetPoints()->SetPoint(2, std::nan(""), 0, 0);
+  const std::string path = amTest::TempPath("nan.mesh");
+  std::remove(path.c_str());
+  vtkNew<amMeditWriter> writer;
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(writer);
+  writer->SetInputData(grid);
+  writer->SetFileName(path.c_str());
+  EXPECT_EQ(writer->Write(), 0);
+  EXPECT_TRUE(errors->ErrorContains("point 2 has a non-finite coordinate")) << errors->AllErrors();
+  EXPECT_FALSE(amTest::Exists(path));
+
+  auto wedge = TwoTets();
+  const vtkIdType w[6] = { 0, 1, 2, 3, 4, 0 };
+  wedge->InsertNextCell(VTK_WEDGE, 6, w);
+  errors->Errors.clear();
+  writer->SetInputData(wedge);
+  EXPECT_EQ(writer->Write(), 0);
+  EXPECT_TRUE(errors->ErrorContains("cell 3 has VTK type 13")) << errors->AllErrors();
+  EXPECT_FALSE(amTest::Exists(path));
+}

@@ -1,0 +1,111 @@
+// The analytic thorax: labels at organ centres, containment and disjointness that make the
+// closed-form volumes exact, and those volumes against a fine sampling.
+#include "amThoraxPhantomModel.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using M = amThoraxPhantomModel;
+
+TEST(ThoraxPhantomModel, OrganCentresCarryTheirLabel)
+{
+  const M model;
+  for (int label = 0; label < M::NumberOfLabels; ++label)
+  {
+    double c[3];
+    model.GetOrganCenter(label, c);
+    EXPECT_EQ(model.LabelAt(c), label) << M::LabelName(label) << " at " << c[0] << " " << c[1] << " " << c[2];
+  }
+}
+
+TEST(ThoraxPhantomModel, NamesAndUnits)
+{
+  EXPECT_STREQ(M::LabelName(M::LeftVentricleBlood), "LeftVentricleBlood");
+  EXPECT_STREQ(M::LabelName(99), "Unknown");
+  EXPECT_DOUBLE_EQ(M::HounsfieldUnits(M::Background), -1000.0);
+  EXPECT_GT(M::HounsfieldUnits(M::LeftVentricleBlood), M::HounsfieldUnits(M::Myocardium) + 200.0);
+  EXPECT_LT(M::HounsfieldUnits(M::LeftLung), -800.0);
+}
+
+TEST(ThoraxPhantomModel, BloodPoolsAreWalledInsideTheHeart)
+{
+  // Every point of each pool's surface, pushed 3 mm further out, is still inside the heart:
+  // the myocardial wall is at least 3 mm thick, so the pools' volumes are exact.
+  const M model;
+  const double pi = 3.14159265358979;
+  for (int pool : { M::LeftVentricleBlood, M::RightVentricleBlood })
+  {
+    double c[3];
+    model.GetOrganCenter(pool, c);
+    int checked = 0;
+    for (int a = 0; a < 48; ++a)
+      for (int b = 1; b < 24; ++b)
+      {
+        const double th = 2 * pi * a / 48, ph = pi * b / 24;
+        const double d[3] = { std::cos(th) * std::sin(ph), std::sin(th) * std::sin(ph), std::cos(ph) };
+        // March out to the pool's surface along d.
+        double t = 0;
+        double x[3] = { c[0], c[1], c[2] };
+        while (true)
+        {
+          const double y[3] = { c[0] + (t + 0.1) * d[0], c[1] + (t + 0.1) * d[1], c[2] + (t + 0.1) * d[2] };
+          const bool inside = pool == M::LeftVentricleBlood ? model.InsideLeftVentricle(y) : model.InsideRightVentricle(y);
+          if (!inside)
+            break;
+          t += 0.1;
+        }
+        for (int i = 0; i < 3; ++i)
+          x[i] = c[i] + (t + 3.0) * d[i];
+        EXPECT_TRUE(model.InsideHeart(x)) << M::LabelName(pool) << " wall thinner than 3 mm towards " << d[0] << " "
+                                          << d[1] << " " << d[2];
+        ++checked;
+      }
+    EXPECT_EQ(checked, 48 * 23);
+  }
+}
+
+TEST(ThoraxPhantomModel, ExactVolumesMatchFineSampling)
+{
+  // Count 0.5 mm lattice points in the boxes around the pools and the aorta.
+  const M model;
+  struct Case
+  {
+    int Label;
+    double Box[6];
+  };
+  const Case cases[] = {
+    { M::LeftVentricleBlood, { -30, 70, -80, 20, -70, 20 } },
+    { M::RightVentricleBlood, { -50, 40, -90, 10, -70, 20 } },
+    { M::Spine, { -15, 15, 50, 82, -75, 75 } },
+  };
+  const double h = 0.5;
+  for (const Case& cs : cases)
+  {
+    long count = 0;
+    for (double z = cs.Box[4] + h / 2; z < cs.Box[5]; z += h)
+      for (double y = cs.Box[2] + h / 2; y < cs.Box[3]; y += h)
+        for (double x = cs.Box[0] + h / 2; x < cs.Box[1]; x += h)
+        {
+          const double p[3] = { x, y, z };
+          count += model.LabelAt(p) == cs.Label;
+        }
+    const double sampled = count * h * h * h, exact = model.ExactVolume(cs.Label);
+    EXPECT_NEAR(sampled / exact, 1.0, 0.005) << M::LabelName(cs.Label) << ": sampled " << sampled << " exact " << exact;
+  }
+}
+
+TEST(ThoraxPhantomModel, BodyContainsEveryOrgan)
+{
+  const M model;
+  double b[6];
+  model.GetBodyBounds(b);
+  EXPECT_DOUBLE_EQ(b[1], 150.0);
+  const double outside[3] = { 0.0, 0.0, b[5] + 1.0 };
+  EXPECT_EQ(model.LabelAt(outside), 0);
+  const double top[3] = { 0.0, 0.0, b[5] - 0.5 };
+  EXPECT_NE(model.LabelAt(top), 0);
+  EXPECT_GT(model.BodyVolume(), 8.0e6); // mm^3: a thorax of about 8.5 litres
+  EXPECT_LT(model.BodyVolume(), 9.0e6);
+  EXPECT_LT(model.ExactVolume(M::RightLung), 0.0); // not closed-form
+}
