@@ -16,7 +16,7 @@ Format (version 1)::
 
 ``type`` names a proxy of the catalogue (the plugin's server-manager XML); properties are
 checked against it (name, type, number of values, boolean and range domains) before anything
-runs. ``${name}`` is replaced by a variable: its default, or the value given to ``run`` (the
+runs. ``${name}`` is replaced by a variable (``output`` always exists, default "out"): its default, or the value given to ``run`` (the
 command line's ``--set name=value``; ``--output DIR`` sets ``output``). Every problem is a
 PipelineError naming the file and line.
 """
@@ -106,6 +106,8 @@ class Pipeline:
         if version != FORMAT_VERSION:
             raise self._error(root.line, "unsupported pipeline format version %r (this Anatomesh reads %s)"
                               % (version, FORMAT_VERSION))
+        # "output" always exists (the command line's --output); a pipeline may give it a default.
+        self.variables["output"] = self._given.get("output", "out")
         for node in root.children:
             if node.tag == "Variable":
                 name = node.attrs.get("name")
@@ -117,6 +119,8 @@ class Pipeline:
             raise PipelineError("%s: --set names variables the pipeline does not declare: %s (declared: %s)" % (
                 self.path, ", ".join(sorted(unknown)), ", ".join(sorted(self.variables)) or "none"))
         names = {}
+        # "output" always exists (the command line's --output); a pipeline may give it a default.
+        self.variables["output"] = self._given.get("output", "out")
         for node in root.children:
             if node.tag == "Variable":
                 continue
@@ -302,8 +306,8 @@ class Pipeline:
             index = self._port_index(step, port, line)
             algorithm = step.algorithm
             algorithm.UpdateInformation()
-            ok = algorithm.Update(index) if hasattr(algorithm, "Update") else True
-            if errors or not ok:
+            algorithm.Update(index)  # returns nothing in VTK 9.2: errors come through the watcher
+            if errors or algorithm.GetOutputDataObject(index) is None:
                 raise self._error(line, "filter %r (%s) failed: %s" % (
                     errors[0][0] if errors else upstream, step.proxy.name,
                     errors[0][1] if errors else "no output"))

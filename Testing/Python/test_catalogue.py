@@ -1,0 +1,49 @@
+"""The server-manager XML (one catalogue for ParaView, the pipeline runner and the docs) and the
+C++ classes cannot drift: every proxy's class exists in the Python package, and every property's
+Set-method exists and accepts the XML default (or, without one, a value of the right type)."""
+import unittest
+
+import anatomesh
+from anatomesh import catalogue
+
+
+class CatalogueMatchesClasses(unittest.TestCase):
+    def test_every_proxy_and_property(self):
+        proxies = catalogue.load()
+        self.assertIn("ThoraxPhantomSource", proxies)
+        self.assertIn("ImageReader", proxies)
+        self.assertIn("MeditWriter", proxies)
+        for name, proxy in proxies.items():
+            cls = getattr(anatomesh, proxy.class_name, None)
+            self.assertIsNotNone(cls, "%s: class %s missing" % (name, proxy.class_name))
+            obj = cls()
+            for prop in proxy.properties.values():
+                if prop.kind == "input":
+                    self.assertTrue(hasattr(obj, prop.command), (name, prop.name))
+                    continue
+                setter = getattr(obj, prop.command, None)
+                self.assertIsNotNone(setter, "%s.%s: no method %s" % (name, prop.name, prop.command))
+                if prop.kind == "string":
+                    value = [prop.defaults[0] if prop.defaults else "x"]
+                else:
+                    conv = int if prop.kind == "int" else float
+                    value = [conv(v) for v in (prop.defaults or ["1"] * prop.number_of_elements)]
+                    self.assertEqual(len(value), prop.number_of_elements, (name, prop.name))
+                setter(*value)
+                getter = getattr(obj, "G" + prop.command[1:], None)
+                if getter is not None and prop.kind != "string":
+                    got = getter()
+                    got = list(got) if isinstance(got, (tuple, list)) else [got]
+                    self.assertEqual([float(g) for g in got], [float(v) for v in value], (name, prop.name))
+            self.assertTrue(proxy.short_help, "%s has no documentation" % name)
+            for prop in proxy.properties.values():
+                self.assertTrue(prop.documentation, "%s.%s has no documentation" % (name, prop.name))
+
+    def test_output_ports(self):
+        proxies = catalogue.load()
+        src = anatomesh.amThoraxPhantomSource()
+        self.assertEqual(src.GetNumberOfOutputPorts(), len(proxies["ThoraxPhantomSource"].output_ports))
+
+
+if __name__ == "__main__":
+    unittest.main()

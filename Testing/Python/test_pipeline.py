@@ -1,0 +1,177 @@
+"""Pipeline XML files through the ``anatomesh`` command: the thorax job runs and writes what it
+says; every kind of mistake exits non-zero with a message naming the file and the line."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import textwrap
+import unittest
+
+import numpy as np
+
+SOURCE = os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+TMP = os.environ.get("ANATOMESH_TEST_TMP", tempfile.gettempdir())
+CLI = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh")]
+
+
+def run(*args):
+    p = subprocess.run(CLI + list(args), capture_output=True, text=True, timeout=600)
+    return p.returncode, p.stdout, p.stderr
+
+
+def pipeline_file(name, body):
+    path = os.path.join(TMP, name)
+    with open(path, "w") as f:
+        f.write(textwrap.dedent(body).lstrip())
+    return path
+
+
+class ThoraxJob(unittest.TestCase):
+    def test_thorax_pipeline_writes_outputs(self):
+        out = os.path.join(TMP, "thorax_job")
+        shutil.rmtree(out, ignore_errors=True)
+        code, stdout, stderr = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"),
+                                   "--output", out, "--set", "spacing=4")
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("Wrote 2 file(s)", stdout)
+        self.assertIn("phantom", stderr)  # progress lines
+        import anatomesh
+        reader = anatomesh.amImageReader()
+        reader.SetFileName(os.path.join(out, "thorax_labels.nii.gz"))
+        reader.Update()
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        labels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())
+        self.assertEqual(sorted(set(labels.tolist())), list(range(11)))
+        self.assertEqual(reader.GetOutput().GetDimensions(), (80, 60, 53))
+        leftovers = [f for f in os.listdir(out) if ".tmp" in f]
+        self.assertEqual(leftovers, [])
+
+    def test_vtk_xml_output_and_filters_listing(self):
+        path = pipeline_file("vtkxml.xml", """
+            <AnatomeshPipeline version="1">
+              <Variable name="output" default="x"/>
+              <Filter name="p" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="8 8 8"/>
+              </Filter>
+              <Output from="p" port="Labels" file="${output}/labels.vti"/>
+            </AnatomeshPipeline>""")
+        out = os.path.join(TMP, "vtkxml_out")
+        code, _, stderr = run("run", path, "--output", out, "--quiet")
+        self.assertEqual(code, 0, stderr)
+        self.assertTrue(os.path.getsize(os.path.join(out, "labels.vti")) > 0)
+        code, stdout, _ = run("filters")
+        self.assertEqual(code, 0)
+        self.assertIn("ThoraxPhantomSource", stdout)
+
+
+class PipelineErrors(unittest.TestCase):
+    def expect_error(self, name, body, *needles, args=()):
+        path = pipeline_file(name, body)
+        code, stdout, stderr = run("run", path, "--output", os.path.join(TMP, "err_" + name), *args)
+        self.assertEqual(code, 1, "expected failure, got %d: %s" % (code, stderr))
+        self.assertIn("anatomesh: error: " + path, stderr)
+        for needle in needles:
+            self.assertIn(needle, stderr)
+        self.assertNotIn("Traceback", stderr)
+        return stderr
+
+    def test_unknown_filter(self):
+        self.expect_error("unknown_filter.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="NoSuchFilter"/>
+            </AnatomeshPipeline>""", ":2: unknown filter type 'NoSuchFilter'", "ThoraxPhantomSource")
+
+    def test_unknown_property(self):
+        self.expect_error("unknown_property.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="ThoraxPhantomSource">
+                <Property name="Spacingg" value="1 1 1"/>
+              </Filter>
+            </AnatomeshPipeline>""", ":3: filter 'a' (ThoraxPhantomSource) has no property 'Spacingg'")
+
+    def test_wrong_type_count_boolean_and_range(self):
+        self.expect_error("wrong_type.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="ThoraxPhantomSource">
+                <Property name="Seed" value="three"/>
+              </Filter>
+            </AnatomeshPipeline>""", ":3:", "must be an integer, got 'three'")
+        self.expect_error("wrong_count.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="1 1"/>
+              </Filter>
+            </AnatomeshPipeline>""", ":3:", "needs 3 value(s), got 2")
+        self.expect_error("wrong_range.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="ThoraxPhantomSource">
+                <Property name="NoiseStandardDeviation" value="-4"/>
+              </Filter>
+            </AnatomeshPipeline>""", ":3:", "must be >= 0")
+        self.expect_error("wrong_bool.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="r" type="ImageReader">
+                <Property name="FileName" value="x.nii"/>
+                <Property name="ResampleIrregularSeries" value="2"/>
+              </Filter>
+            </AnatomeshPipeline>""", ":4:", "boolean")
+
+    def test_missing_input_file_names_the_file(self):
+        stderr = self.expect_error("missing_file.xml", """
+            <AnatomeshPipeline version="1">
+              <Variable name="input" default="/no/such/scan.nii.gz"/>
+              <Variable name="output" default="x"/>
+              <Filter name="r" type="ImageReader">
+                <Property name="FileName" value="${input}"/>
+              </Filter>
+              <Filter name="w" type="ImageWriter">
+                <Input from="r"/>
+                <Property name="FileName" value="${output}/copy.nii.gz"/>
+              </Filter>
+            </AnatomeshPipeline>""", "/no/such/scan.nii.gz", "does not exist")
+        self.assertFalse(os.path.exists(os.path.join(TMP, "err_missing_file.xml", "copy.nii.gz")))
+
+    def test_cycle(self):
+        self.expect_error("cycle.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="ImageWriter">
+                <Input from="b"/>
+                <Property name="FileName" value="a.nii"/>
+              </Filter>
+              <Filter name="b" type="MeditWriter">
+                <Input from="a"/>
+                <Property name="FileName" value="b.mesh"/>
+              </Filter>
+            </AnatomeshPipeline>""", "writer")
+
+    def test_unknown_variable_and_undeclared_set(self):
+        self.expect_error("unknown_var.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="ThoraxPhantomSource">
+                <Property name="Seed" value="${seed}"/>
+              </Filter>
+            </AnatomeshPipeline>""", ":3: unknown variable ${seed}")
+        self.expect_error("undeclared_set.xml", """
+            <AnatomeshPipeline version="1">
+              <Variable name="output" default="x"/>
+            </AnatomeshPipeline>""", "--set names variables the pipeline does not declare: bogus",
+                          args=("--set", "bogus=1"))
+
+    def test_malformed_xml_and_version(self):
+        self.expect_error("malformed.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="a" type="ThoraxPhantomSource">
+            </AnatomeshPipeline>""", ":3: malformed XML")
+        self.expect_error("version.xml", """
+            <AnatomeshPipeline version="7">
+            </AnatomeshPipeline>""", ":1: unsupported pipeline format version")
+
+    def test_missing_pipeline_file(self):
+        code, _, stderr = run("run", "/no/such/pipeline.xml")
+        self.assertEqual(code, 1)
+        self.assertIn("/no/such/pipeline.xml: cannot read the pipeline file", stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
