@@ -48,12 +48,39 @@ class _Progress:
         self.stream.flush()
 
 
-def _summary(paths, out):
-    from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: F401 (loads VTK)
+def _describe(data):
+    """One line about a data object, plus a volume table for label maps."""
+    lines = []
+    if data is None:
+        return lines
+    if data.IsA("vtkImageData"):
+        dims, spacing = data.GetDimensions(), data.GetSpacing()
+        lines.append("      image %dx%dx%d, spacing %g x %g x %g mm" % (dims + spacing))
+        scalars = data.GetPointData().GetScalars()
+        if scalars is not None and scalars.GetName() == "Labels":
+            import numpy as np
+            from vtkmodules.util.numpy_support import vtk_to_numpy
+            counts = np.bincount(vtk_to_numpy(scalars).astype(np.int64).ravel())
+            names = data.GetFieldData().GetAbstractArray("LabelNames")
+            voxel = spacing[0] * spacing[1] * spacing[2]
+            for label in np.nonzero(counts)[0]:
+                if label == 0:
+                    continue
+                name = names.GetValue(int(label)) if names is not None and label < names.GetNumberOfValues() else ""
+                lines.append("        label %3d %-22s %12.1f cm3" % (label, name, counts[label] * voxel / 1000.0))
+    elif data.IsA("vtkDataSet"):
+        lines.append("      %s: %d points, %d cells" % (data.GetClassName(), data.GetNumberOfPoints(),
+                                                       data.GetNumberOfCells()))
+    return lines
+
+
+def _summary(paths, data, out):
     out.write("Wrote %d file(s):\n" % len(paths))
     for p in paths:
         size = os.path.getsize(p) if os.path.exists(p) else 0
         out.write("  %-60s %10.1f kB\n" % (p, size / 1024.0))
+        for line in _describe(data.get(p)):
+            out.write(line + "\n")
 
 
 def _run(args):
@@ -77,7 +104,7 @@ def _run(args):
         sys.stderr.write("anatomesh: error: %s\n" % e)
         return 1
     if not args.quiet:
-        _summary(written, sys.stdout)
+        _summary(written, p.written_data, sys.stdout)
         sys.stdout.write("Done in %.1f s.\n" % (time.time() - t0))
     return 0
 

@@ -290,6 +290,7 @@ class Pipeline:
         for step in self.steps:
             watcher.watch(step.name, step.algorithm)
         written = []
+        self.written_data = {}
         by_name = {s.name: s for s in self.steps}
         for step in self.steps:
             if not step.proxy.is_writer:
@@ -301,6 +302,7 @@ class Pipeline:
                     errors[0][0] if errors else step.name, step.proxy.name,
                     errors[0][1] if errors else "the writer reported no success"))
             written.append(step.algorithm.GetFileName())
+            self.written_data[written[-1]] = step.algorithm.GetInputDataObject(0, 0)
         for upstream, port, path, line in self.outputs:
             step = by_name[upstream]
             index = self._port_index(step, port, line)
@@ -314,6 +316,7 @@ class Pipeline:
             _make_parent(path, self, line)
             write_vtk_xml(algorithm.GetOutputDataObject(index), path)
             written.append(path)
+            self.written_data[path] = algorithm.GetOutputDataObject(index)
         watcher.finish()
         return written
 
