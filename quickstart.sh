@@ -48,16 +48,19 @@ fi
 
 echo "Anatomesh: configuring and building in $build"
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
-  -DCMAKE_INSTALL_PREFIX=/usr/local >"$build.configure.log" 2>&1 || { cat "$build.configure.log"; exit 1; }
+  -DCMAKE_INSTALL_PREFIX=/usr/local -DANATOMESH_TEST_INSTALLED=ON >"$build.configure.log" 2>&1 || { cat "$build.configure.log"; exit 1; }
 cmake --build "$build" -j "$jobs" >"$build.build.log" 2>&1 || { tail -60 "$build.build.log"; exit 1; }
 $SUDO cmake --install "$build" >"$build.install.log" 2>&1 || { tail -30 "$build.install.log"; exit 1; }
 $SUDO ldconfig
 
-# Stock ParaView lists the plugins named in its own paraview.plugins.xml.
-pvxml=/usr/lib/x86_64-linux-gnu/paraview-5.11/plugins/paraview.plugins.xml
-if [ -f "$pvxml" ] && ! grep -q 'name="Anatomesh"' "$pvxml"; then
-  $SUDO sed -i 's|</Plugins>|  <Plugin name="Anatomesh" auto_load="0"/>\n</Plugins>|' "$pvxml"
-fi
+# Stock ParaView lists the plugins named in the XML files that /usr/bin/paraview.conf names
+# (Debian ships no such file, so its own list is named too, to keep its plugins listed).
+pvdir=/usr/lib/x86_64-linux-gnu/paraview-5.11/plugins
+for xml in "$pvdir/paraview.plugins.xml" "$pvdir/anatomesh.plugins.xml"; do
+  if [ -f "$xml" ] && ! grep -qxF "$xml" /usr/bin/paraview.conf 2>/dev/null; then
+    echo "$xml" | $SUDO tee -a /usr/bin/paraview.conf >/dev/null
+  fi
+done
 
 if [ "$mode" = run ]; then
   out="${ANATOMESH_OUTPUT:-$here/out/thorax}"
