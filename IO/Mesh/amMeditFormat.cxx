@@ -92,6 +92,33 @@ bool ReadCount(Tokens& t, long long& n, std::string& error, const std::string& s
 }
 }
 
+namespace
+{
+// VTK component index of each Medit component of a symmetric tensor.
+constexpr int MeditToVTK[6] = { 0, 3, 1, 5, 4, 2 };
+}
+
+void amMeditFormat::MeditToVTKTensor(const double medit[6], double vtk[6])
+{
+  for (int i = 0; i < 6; ++i)
+    vtk[MeditToVTK[i]] = medit[i];
+}
+
+void amMeditFormat::VTKToMeditTensor(const double vtk[6], double medit[6])
+{
+  for (int i = 0; i < 6; ++i)
+    medit[i] = vtk[MeditToVTK[i]];
+}
+
+std::string amMeditFormat::SolutionPathFor(const std::string& meshPath)
+{
+  std::string sol = meshPath;
+  const auto dot = sol.find_last_of('.');
+  if (dot != std::string::npos && sol.find('/', dot) == std::string::npos)
+    sol.resize(dot);
+  return sol + ".sol";
+}
+
 int amMeditFormat::NodesOf(const std::string& keyword)
 {
   if (keyword == "Edges")

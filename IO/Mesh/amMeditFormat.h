@@ -40,6 +40,13 @@ public:
     std::vector<Field> Fields;
   };
 
+  /// Symmetric 3x3 tensors: Medit order m11 m21 m22 m31 m32 m33 <-> VTK order XX YY ZZ XY YZ XZ.
+  static void MeditToVTKTensor(const double medit[6], double vtk[6]);
+  static void VTKToMeditTensor(const double vtk[6], double medit[6]);
+
+  /// The .sol file that goes with a .mesh file ("a/b.mesh" -> "a/b.sol").
+  static std::string SolutionPathFor(const std::string& meshPath);
+
   /// Nodes per element of a section keyword; 0 if the keyword is not an element section.
   static int NodesOf(const std::string& keyword);
 

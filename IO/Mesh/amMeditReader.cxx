@@ -77,13 +77,7 @@ int amMeditReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
   std::string solPath = this->SolutionFileName ? this->SolutionFileName : "";
   bool solRequired = !solPath.empty();
   if (solPath.empty())
-  {
-    solPath = path;
-    const auto dot = solPath.find_last_of('.');
-    if (dot != std::string::npos && solPath.find('/', dot) == std::string::npos)
-      solPath.resize(dot);
-    solPath += ".sol";
-  }
+    solPath = amMeditFormat::SolutionPathFor(path);
   struct stat st;
   if (this->ReadSolution && (solRequired || ::stat(solPath.c_str(), &st) == 0))
   {
@@ -154,15 +148,7 @@ int amMeditReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
       const double* v = &field.Values[static_cast<size_t>(i) * nc3];
       double t[6] = { 0, 0, 0, 0, 0, 0 };
       if (field.Type == 3 && mesh.Dimension == 3)
-      {
-        // Medit m11 m21 m22 m31 m32 m33 -> VTK XX YY ZZ XY YZ XZ
-        t[0] = v[0];
-        t[1] = v[2];
-        t[2] = v[5];
-        t[3] = v[1];
-        t[4] = v[4];
-        t[5] = v[3];
-      }
+        amMeditFormat::MeditToVTKTensor(v, t);
       else if (field.Type == 3)
       {
         t[0] = v[0];

@@ -163,15 +163,7 @@ int amMeditWriter::WriteData(vtkDataObject* data)
       a->GetTuple(i, t);
       double* v = &field.Values[static_cast<size_t>(i) * k];
       if (k == 6)
-      {
-        // VTK XX YY ZZ XY YZ XZ -> Medit m11 m21 m22 m31 m32 m33
-        v[0] = t[0];
-        v[1] = t[3];
-        v[2] = t[1];
-        v[3] = t[5];
-        v[4] = t[4];
-        v[5] = t[2];
-      }
+        amMeditFormat::VTKToMeditTensor(t, v);
       else
         for (int j = 0; j < k; ++j)
           v[j] = t[j];
@@ -183,11 +175,7 @@ int amMeditWriter::WriteData(vtkDataObject* data)
         }
     }
     mesh.Fields.push_back(std::move(field));
-    solTarget = target;
-    const auto dot = solTarget.find_last_of('.');
-    if (dot != std::string::npos && solTarget.find('/', dot) == std::string::npos)
-      solTarget.resize(dot);
-    solTarget += ".sol";
+    solTarget = amMeditFormat::SolutionPathFor(target);
   }
 
   amAtomicFile meshFile(target);
