@@ -1,4 +1,4 @@
-// Internal: copy images between ITK and VTK with origin, spacing and direction (Debian has no
+// Header-only: copy images between ITK and VTK with origin, spacing and direction (Debian has no
 // ITKVtkGlue), and dispatch on a runtime component type.
 #ifndef amITKBridge_h
 #define amITKBridge_h

@@ -1,0 +1,260 @@
+#include "amIntensityClassifier.h"
+
+#include "amITKBridge.h"
+#include "amProvenance.h"
+#include "amThreading.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <itkOtsuMultipleThresholdsCalculator.h>
+#include <itkScalarImageToHistogramGenerator.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+vtkStandardNewMacro(amIntensityClassifier);
+
+namespace
+{
+// The CT defaults: boundaries half-way between typical tissue values (HU).
+const double DefaultRanges[] = { -925, -475, 1, -475, -30, 2, -30, 170, 3, 170, 500, 4, 500, 1e30, 5 };
+const char* DefaultNames[] = { "Unclassified", "Lung", "Fat", "SoftTissue", "ContrastBlood", "Bone" };
+}
+
+amIntensityClassifier::amIntensityClassifier()
+  : Mode(Ranges)
+  , NumberOfClasses(4)
+  , NumberOfHistogramBins(128)
+  , Window(1500.0)
+  , Level(-300.0)
+  , ClassifyWindowed(false)
+{
+  amThreading::Initialize();
+  this->SetNumberOfOutputPorts(2);
+}
+
+amIntensityClassifier::~amIntensityClassifier() = default;
+
+void amIntensityClassifier::AddRange(double low, double high, int label)
+{
+  this->RangeList.push_back(low);
+  this->RangeList.push_back(high);
+  this->RangeList.push_back(label);
+  this->Modified();
+}
+
+void amIntensityClassifier::RemoveAllRanges()
+{
+  if (!this->RangeList.empty())
+  {
+    this->RangeList.clear();
+    this->Modified();
+  }
+}
+
+int amIntensityClassifier::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  for (int port = 0; port < 2; ++port)
+    vtkDataObject::SetPointDataActiveScalarInfo(outputVector->GetInformationObject(port), VTK_UNSIGNED_CHAR, 1);
+  return 1;
+}
+
+int amIntensityClassifier::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkImageData* labelsOut = vtkImageData::GetData(outputVector, 0);
+  vtkImageData* windowOut = vtkImageData::GetData(outputVector, 1);
+  vtkDataArray* scalars = input ? input->GetPointData()->GetScalars() : nullptr;
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("The input image is empty.");
+    return 0;
+  }
+  if (!scalars)
+  {
+    vtkErrorMacro("The input image has no scalars to classify.");
+    return 0;
+  }
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro("The input scalars '" << (scalars->GetName() ? scalars->GetName() : "") << "' have "
+                                        << scalars->GetNumberOfComponents()
+                                        << " components; a scalar (one-component) image is needed.");
+    return 0;
+  }
+  if (this->Mode == Ranges)
+    for (size_t r = 0; r < this->RangeList.size(); r += 3)
+      if (this->RangeList[r + 2] < 1 || this->RangeList[r + 2] > 255 || !(this->RangeList[r] < this->RangeList[r + 1]))
+      {
+        vtkErrorMacro("Range " << r / 3 << " [" << this->RangeList[r] << ", " << this->RangeList[r + 1] << ") -> "
+                               << this->RangeList[r + 2] << " is invalid (low < high, label in 1..255).");
+        return 0;
+      }
+  const vtkIdType n = scalars->GetNumberOfTuples();
+
+  // The windowed 8-bit image, and the values to classify.
+  std::vector<double> values(static_cast<size_t>(n));
+  vtkNew<vtkUnsignedCharArray> windowed;
+  windowed->SetName("Windowed");
+  windowed->SetNumberOfTuples(n);
+  unsigned char* w = windowed->GetPointer(0);
+  const double lo = this->Level - 0.5 * this->Window, scale = 255.0 / this->Window;
+  std::atomic<vtkIdType> nans{ 0 };
+  const bool useWindowed = this->ClassifyWindowed;
+  vtkSMPTools::For(0, n, [&](vtkIdType b, vtkIdType e) {
+    vtkIdType bad = 0;
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      const double v = scalars->GetComponent(i, 0);
+      if (std::isnan(v))
+      {
+        ++bad;
+        w[i] = 0;
+        values[i] = 0;
+        continue;
+      }
+      const double c = std::floor((v - lo) * scale + 0.5);
+      w[i] = static_cast<unsigned char>(c < 0 ? 0 : c > 255 ? 255 : c);
+      values[i] = useWindowed ? w[i] : v;
+    }
+    nans += bad;
+  });
+  if (nans > 0)
+  {
+    vtkErrorMacro("The input has " << nans << " NaN values; cannot classify them.");
+    return 0;
+  }
+  this->UpdateProgress(0.3);
+
+  std::vector<double> ranges = this->RangeList;
+  std::vector<std::string> names;
+  if (this->Mode == Otsu)
+  {
+    using ImageType = itk::Image<float, 3>;
+    auto image = ImageType::New();
+    ImageType::RegionType region;
+    ImageType::SizeType size = { { static_cast<itk::SizeValueType>(n), 1, 1 } };
+    region.SetSize(size);
+    image->SetRegions(region);
+    image->Allocate();
+    for (vtkIdType i = 0; i < n; ++i)
+      image->GetBufferPointer()[i] = static_cast<float>(values[i]);
+    using Generator = itk::Statistics::ScalarImageToHistogramGenerator<ImageType>;
+    auto generator = Generator::New();
+    generator->SetInput(image);
+    generator->SetNumberOfBins(this->NumberOfHistogramBins);
+    generator->SetAutoHistogramMinimumMaximum(true);
+    using Calculator = itk::OtsuMultipleThresholdsCalculator<Generator::HistogramType>;
+    auto calculator = Calculator::New();
+    try
+    {
+      generator->Compute();
+      calculator->SetInputHistogram(generator->GetOutput());
+      calculator->SetNumberOfThresholds(this->NumberOfClasses - 1);
+      calculator->Compute();
+    }
+    catch (const itk::ExceptionObject& e)
+    {
+      vtkErrorMacro("Otsu thresholding failed: " << e.GetDescription());
+      return 0;
+    }
+    const auto& thresholds = calculator->GetOutput();
+    ranges.clear();
+    double previous = -std::numeric_limits<double>::max();
+    for (size_t k = 0; k <= thresholds.size(); ++k)
+    {
+      const double next = k < thresholds.size() ? thresholds[k] : std::numeric_limits<double>::max();
+      if (k > 0)
+      {
+        ranges.push_back(previous);
+        ranges.push_back(next);
+        ranges.push_back(static_cast<double>(k));
+      }
+      previous = next;
+    }
+    vtkNew<vtkDoubleArray> t;
+    t->SetName("Thresholds");
+    for (double v : thresholds)
+      t->InsertNextValue(v);
+    labelsOut->GetFieldData()->AddArray(t);
+  }
+  else if (ranges.empty())
+  {
+    ranges.assign(std::begin(DefaultRanges), std::end(DefaultRanges));
+    names.assign(std::begin(DefaultNames), std::end(DefaultNames));
+  }
+  this->UpdateProgress(0.5);
+
+  vtkNew<vtkUnsignedCharArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfTuples(n);
+  unsigned char* l = labels->GetPointer(0);
+  const size_t nr = ranges.size() / 3;
+  vtkSMPTools::For(0, n, [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      unsigned char label = 0;
+      for (size_t r = 0; r < nr; ++r)
+        if (values[i] >= ranges[3 * r] && values[i] < ranges[3 * r + 1])
+        {
+          label = static_cast<unsigned char>(ranges[3 * r + 2]);
+          break;
+        }
+      l[i] = label;
+    }
+  });
+
+  labelsOut->CopyStructure(input);
+  windowOut->CopyStructure(input);
+  labelsOut->GetPointData()->SetScalars(labels);
+  windowOut->GetPointData()->SetScalars(windowed);
+  if (!names.empty())
+  {
+    vtkNew<vtkStringArray> a;
+    a->SetName("LabelNames");
+    for (const auto& s : names)
+      a->InsertNextValue(s);
+    labelsOut->GetFieldData()->AddArray(a);
+  }
+  std::ostringstream params;
+  params << "Mode=" << (this->Mode == Otsu ? "Otsu" : "Ranges");
+  if (this->Mode == Otsu)
+    params << " NumberOfClasses=" << this->NumberOfClasses << " NumberOfHistogramBins=" << this->NumberOfHistogramBins;
+  else
+  {
+    params << " Ranges=";
+    for (size_t r = 0; r < nr; ++r)
+      params << (r ? ";" : "") << "[" << ranges[3 * r] << "," << ranges[3 * r + 1] << ")->" << ranges[3 * r + 2];
+  }
+  params << " Window=" << this->Window << " Level=" << this->Level << " ClassifyWindowed=" << this->ClassifyWindowed;
+  amProvenance::Record(labelsOut, input, "amIntensityClassifier", params.str());
+  amProvenance::Record(windowOut, input, "amIntensityClassifier", params.str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void amIntensityClassifier::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Mode: " << this->Mode << "\n";
+  os << indent << "NumberOfRanges: " << this->RangeList.size() / 3 << "\n";
+  os << indent << "NumberOfClasses: " << this->NumberOfClasses << "\n";
+  os << indent << "Window: " << this->Window << " Level: " << this->Level << "\n";
+  os << indent << "ClassifyWindowed: " << this->ClassifyWindowed << "\n";
+}

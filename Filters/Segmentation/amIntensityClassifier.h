@@ -1,0 +1,101 @@
+/**
+ * @class   amIntensityClassifier
+ * @brief   Scan to label map by intensity: explicit ranges, or automatic multi-level Otsu.
+ *
+ * Output port 0 is a label map (unsigned 8-bit scalars "Labels", 0 = unclassified) on the input's
+ * grid (origin, spacing and direction kept). Output port 1 is the input windowed to 8 bits
+ * (scalars "Windowed": (value - Level + Window/2) / Window * 255, clamped), as the paper did with
+ * its 16-bit CT before segmenting.
+ *
+ * Mode Ranges (default): each range [Low, High) maps to a label; the first range that contains a
+ * value wins; values in no range get label 0. Without AddRange calls, CT defaults are used, with
+ * boundaries half-way between typical tissue values (HU): < -925 air (0), [-925, -475) lung (1),
+ * [-475, -30) fat (2), [-30, 170) soft tissue (3), [170, 500) contrast-enhanced blood (4),
+ * >= 500 bone (5); their names go to field data "LabelNames".
+ * Mode Otsu: ITK's multiple-threshold Otsu on a histogram of NumberOfHistogramBins bins splits the
+ * intensities into NumberOfClasses classes, labelled 0 (darkest) to NumberOfClasses-1; the
+ * thresholds are recorded in field data "Thresholds".
+ * ClassifyWindowed applies either mode to the 8-bit windowed values instead of the raw ones.
+ * Errors: no input scalars, several components, an empty image, NaN values.
+ */
+#ifndef amIntensityClassifier_h
+#define amIntensityClassifier_h
+
+#include "AnatomeshFiltersSegmentationModule.h" // export macro
+#include "vtkImageAlgorithm.h"
+
+#include <vector>
+
+class ANATOMESHFILTERSSEGMENTATION_EXPORT amIntensityClassifier : public vtkImageAlgorithm
+{
+public:
+  static amIntensityClassifier* New();
+  vtkTypeMacro(amIntensityClassifier, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Modes
+  {
+    Ranges = 0,
+    Otsu = 1
+  };
+
+  ///@{
+  /// Ranges (0, default) or Otsu (1).
+  vtkSetClampMacro(Mode, int, Ranges, Otsu);
+  vtkGetMacro(Mode, int);
+  ///@}
+
+  /// Map values in [low, high) to label (1..255). Ranges are tested in the order added.
+  void AddRange(double low, double high, int label);
+  /// Forget the ranges (the CT defaults apply again).
+  void RemoveAllRanges();
+  int GetNumberOfRanges() { return static_cast<int>(this->RangeList.size() / 3); }
+
+  ///@{
+  /// Otsu: number of classes, 2..8 (default 4).
+  vtkSetClampMacro(NumberOfClasses, int, 2, 8);
+  vtkGetMacro(NumberOfClasses, int);
+  ///@}
+
+  ///@{
+  /// Otsu: histogram bins (default 128).
+  vtkSetClampMacro(NumberOfHistogramBins, int, 16, 4096);
+  vtkGetMacro(NumberOfHistogramBins, int);
+  ///@}
+
+  ///@{
+  /// Window width and level (input units, HU for CT) of the 8-bit output (defaults 1500, -300:
+  /// the lung/soft-tissue window).
+  vtkSetClampMacro(Window, double, 1e-6, 1e9);
+  vtkGetMacro(Window, double);
+  vtkSetMacro(Level, double);
+  vtkGetMacro(Level, double);
+  ///@}
+
+  ///@{
+  /// Classify the 8-bit windowed values (0..255) instead of the raw ones (default off).
+  vtkSetMacro(ClassifyWindowed, bool);
+  vtkGetMacro(ClassifyWindowed, bool);
+  vtkBooleanMacro(ClassifyWindowed, bool);
+  ///@}
+
+protected:
+  amIntensityClassifier();
+  ~amIntensityClassifier() override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Mode;
+  int NumberOfClasses;
+  int NumberOfHistogramBins;
+  double Window;
+  double Level;
+  bool ClassifyWindowed;
+  std::vector<double> RangeList; // low, high, label triples
+
+private:
+  amIntensityClassifier(const amIntensityClassifier&) = delete;
+  void operator=(const amIntensityClassifier&) = delete;
+};
+
+#endif

@@ -1,0 +1,204 @@
+/**
+ * @class   amSnakeSegmentation
+ * @brief   Deformable-contour (level-set) segmentation of organs grown from user seeds.
+ *
+ * The paper's method: a user who knows anatomy places a few seeds; a snake grows from them.
+ * Seeds come from AddSeed(x, y, z, label) (world coordinates, mm) and/or input port 1, a point
+ * set whose point-data array "Label" (SeedLabelArrayName) gives each point's label (SeedLabel when
+ * absent), so ParaView's point widgets and Python lists both work.
+ *
+ * For each label, in the order its seeds first appear (that order is the precedence: where two
+ * organs would overlap, the earlier one keeps the voxel, so organs never overlap):
+ * 1. the image is cropped to the seeds' bounding box grown by MaximumDistance (mm) and smoothed by
+ *    a Gaussian of SmoothingSigma (mm);
+ * 2. the intensity of the organ is sampled in balls of SeedRadius (mm) around its seeds; the
+ *    accepted interval is mean ± max(IntensityTolerance x standard deviation,
+ *    MinimumIntensityWindow), or [LowerThreshold, UpperThreshold] when AutomaticThresholds is off;
+ * 3. the initial contour is the union of the seed balls (signed distance), and it evolves as a
+ *    threshold level set (ITK ThresholdSegmentationLevelSetImageFilter): it expands where the
+ *    smoothed intensity is in the interval, is held back elsewhere, and is kept smooth by
+ *    CurvatureScaling, until NumberOfIterations or an RMS change below MaximumRMSError;
+ * 4. with RefineToHalfContrast, the intensity of a 2-voxel shell outside the contour (beyond
+ *    twice SmoothingSigma) gives the
+ *    surroundings' level; the threshold facing it moves half-way (the partial-volume boundary)
+ *    and the contour evolves again from where it stopped.
+ * Mode ThreeD (default) evolves one 3-D surface. Mode SliceBySlice is the paper's propagation:
+ * each seed's slice (along SliceAxis) is segmented in 2-D, then each next slice starts from the
+ * previous contour (eroded by one pixel) and keeps only what overlaps it; propagation stops in a
+ * direction when the section vanishes (area < MinimumSliceArea mm^2) or its area changes by more
+ * than MaximumAreaChange times from one slice to the next (the structure ends, or merges with
+ * another one: an abrupt topology change).
+ *
+ * Output: a label map on the input's grid (scalars "Labels", uint8), field data
+ * "SegmentedVolumes" (mm^3 per label) and "Thresholds" (the interval used per label).
+ * Errors: no seeds, a seed outside the image, a seed in air (CT below -950 HU, unless
+ * AllowAirSeeds), an empty or non-scalar image, a label outside 1..255.
+ */
+#ifndef amSnakeSegmentation_h
+#define amSnakeSegmentation_h
+
+#include "AnatomeshFiltersSegmentationModule.h" // export macro
+#include "vtkImageAlgorithm.h"
+
+#include <vector>
+
+class ANATOMESHFILTERSSEGMENTATION_EXPORT amSnakeSegmentation : public vtkImageAlgorithm
+{
+public:
+  static amSnakeSegmentation* New();
+  vtkTypeMacro(amSnakeSegmentation, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Modes
+  {
+    ThreeD = 0,
+    SliceBySlice = 1
+  };
+
+  /// Add a seed at world position (x, y, z) mm for organ label (1..255).
+  void AddSeed(double x, double y, double z, int label);
+  void RemoveAllSeeds();
+  int GetNumberOfSeeds() { return static_cast<int>(this->Seeds.size() / 4); }
+
+  /// Connect a point set of seeds (point data SeedLabelArrayName gives labels).
+  void SetSeedConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetSeedData(vtkDataObject* seeds) { this->SetInputData(1, seeds); }
+
+  ///@{
+  /// ThreeD (0, default) or SliceBySlice (1).
+  vtkSetClampMacro(Mode, int, ThreeD, SliceBySlice);
+  vtkGetMacro(Mode, int);
+  ///@}
+
+  ///@{
+  /// Slice-by-slice: the index axis slices are taken across (default 2, axial for most scans).
+  vtkSetClampMacro(SliceAxis, int, 0, 2);
+  vtkGetMacro(SliceAxis, int);
+  ///@}
+
+  ///@{
+  /// Label of seed-input points without a label array (default 1).
+  vtkSetClampMacro(SeedLabel, int, 1, 255);
+  vtkGetMacro(SeedLabel, int);
+  vtkSetStringMacro(SeedLabelArrayName);
+  vtkGetStringMacro(SeedLabelArrayName);
+  ///@}
+
+  ///@{
+  /// Gaussian smoothing before segmentation, mm (default 1).
+  vtkSetClampMacro(SmoothingSigma, double, 0.0, 20.0);
+  vtkGetMacro(SmoothingSigma, double);
+  ///@}
+
+  ///@{
+  /// Radius of the seed balls (intensity sampling and initial contour), mm (default 3).
+  vtkSetClampMacro(SeedRadius, double, 0.1, 50.0);
+  vtkGetMacro(SeedRadius, double);
+  ///@}
+
+  ///@{
+  /// Automatic interval: mean +/- max(IntensityTolerance x sd, MinimumIntensityWindow)
+  /// (defaults 3 and 100, input units: HU for CT).
+  vtkSetMacro(AutomaticThresholds, bool);
+  vtkGetMacro(AutomaticThresholds, bool);
+  vtkBooleanMacro(AutomaticThresholds, bool);
+  vtkSetClampMacro(IntensityTolerance, double, 0.0, 100.0);
+  vtkGetMacro(IntensityTolerance, double);
+  vtkSetClampMacro(MinimumIntensityWindow, double, 0.0, 1e6);
+  vtkGetMacro(MinimumIntensityWindow, double);
+  ///@}
+
+  ///@{
+  /// Explicit interval when AutomaticThresholds is off (defaults 100 and 600 HU: contrast blood).
+  vtkSetMacro(LowerThreshold, double);
+  vtkGetMacro(LowerThreshold, double);
+  vtkSetMacro(UpperThreshold, double);
+  vtkGetMacro(UpperThreshold, double);
+  ///@}
+
+  ///@{
+  /// Level-set weights: propagation (default 1), curvature (smoothness, default 1) and the
+  /// Laplacian edge attraction (default 0).
+  vtkSetClampMacro(PropagationScaling, double, 0.0, 100.0);
+  vtkGetMacro(PropagationScaling, double);
+  vtkSetClampMacro(CurvatureScaling, double, 0.0, 100.0);
+  vtkGetMacro(CurvatureScaling, double);
+  vtkSetClampMacro(EdgeWeight, double, 0.0, 100.0);
+  vtkGetMacro(EdgeWeight, double);
+  ///@}
+
+  ///@{
+  /// Evolution limits: iterations (default 800) and RMS change for convergence (default 0.002).
+  vtkSetClampMacro(NumberOfIterations, int, 1, 100000);
+  vtkGetMacro(NumberOfIterations, int);
+  vtkSetClampMacro(MaximumRMSError, double, 0.0, 1.0);
+  vtkGetMacro(MaximumRMSError, double);
+  ///@}
+
+  ///@{
+  /// How far (mm) an organ may extend beyond its seeds' bounding box (default 150).
+  vtkSetClampMacro(MaximumDistance, double, 1.0, 10000.0);
+  vtkGetMacro(MaximumDistance, double);
+  ///@}
+
+  ///@{
+  /// Slice-by-slice stopping rule: the largest area ratio between neighbouring slices (default
+  /// 2) and the smallest section, mm^2 (default 4).
+  vtkSetClampMacro(MaximumAreaChange, double, 1.01, 1000.0);
+  vtkGetMacro(MaximumAreaChange, double);
+  vtkSetClampMacro(MinimumSliceArea, double, 0.0, 1e6);
+  vtkGetMacro(MinimumSliceArea, double);
+  ///@}
+
+  ///@{
+  /// Automatic thresholds only: after a first evolution, sample the intensity just outside the
+  /// contour and move the facing threshold half-way between organ and surroundings (where
+  /// partial volume puts the boundary), then evolve again (default on).
+  vtkSetMacro(RefineToHalfContrast, bool);
+  vtkGetMacro(RefineToHalfContrast, bool);
+  vtkBooleanMacro(RefineToHalfContrast, bool);
+  ///@}
+
+  ///@{
+  /// Accept seeds whose neighbourhood is below -950 (air on CT) (default off).
+  vtkSetMacro(AllowAirSeeds, bool);
+  vtkGetMacro(AllowAirSeeds, bool);
+  vtkBooleanMacro(AllowAirSeeds, bool);
+  ///@}
+
+protected:
+  amSnakeSegmentation();
+  ~amSnakeSegmentation() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Mode;
+  int SliceAxis;
+  int SeedLabel;
+  char* SeedLabelArrayName;
+  double SmoothingSigma;
+  double SeedRadius;
+  bool AutomaticThresholds;
+  double IntensityTolerance;
+  double MinimumIntensityWindow;
+  double LowerThreshold;
+  double UpperThreshold;
+  double PropagationScaling;
+  double CurvatureScaling;
+  double EdgeWeight;
+  int NumberOfIterations;
+  double MaximumRMSError;
+  double MaximumDistance;
+  double MaximumAreaChange;
+  double MinimumSliceArea;
+  bool AllowAirSeeds;
+  bool RefineToHalfContrast;
+  std::vector<double> Seeds; // x, y, z, label
+
+private:
+  amSnakeSegmentation(const amSnakeSegmentation&) = delete;
+  void operator=(const amSnakeSegmentation&) = delete;
+};
+
+#endif
