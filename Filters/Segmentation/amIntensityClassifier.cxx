@@ -31,7 +31,7 @@ vtkStandardNewMacro(amIntensityClassifier);
 namespace
 {
 // The CT defaults: boundaries half-way between typical tissue values (HU).
-const double DefaultRanges[] = { -925, -475, 1, -475, -30, 2, -30, 170, 3, 170, 500, 4, 500, 1e30, 5 };
+const double DefaultRanges[] = { -925, -475, 1, -475, -30, 2, -30, 170, 3, 170, 400, 4, 400, 1e30, 5 };
 const char* DefaultNames[] = { "Unclassified", "Lung", "Fat", "SoftTissue", "ContrastBlood", "Bone" };
 }
 
@@ -49,7 +49,7 @@ amIntensityClassifier::amIntensityClassifier()
 
 amIntensityClassifier::~amIntensityClassifier() = default;
 
-void amIntensityClassifier::AddRange(double low, double high, int label)
+void amIntensityClassifier::AddRange(double low, double high, double label)
 {
   this->RangeList.push_back(low);
   this->RangeList.push_back(high);
@@ -144,6 +144,8 @@ int amIntensityClassifier::RequestData(
 
   std::vector<double> ranges = this->RangeList;
   std::vector<std::string> names;
+  vtkNew<vtkDoubleArray> otsuThresholds;
+  otsuThresholds->SetName("Thresholds");
   if (this->Mode == Otsu)
   {
     using ImageType = itk::Image<float, 3>;
@@ -188,11 +190,8 @@ int amIntensityClassifier::RequestData(
       }
       previous = next;
     }
-    vtkNew<vtkDoubleArray> t;
-    t->SetName("Thresholds");
     for (double v : thresholds)
-      t->InsertNextValue(v);
-    labelsOut->GetFieldData()->AddArray(t);
+      otsuThresholds->InsertNextValue(v);
   }
   else if (ranges.empty())
   {
@@ -224,6 +223,8 @@ int amIntensityClassifier::RequestData(
   windowOut->CopyStructure(input);
   labelsOut->GetPointData()->SetScalars(labels);
   windowOut->GetPointData()->SetScalars(windowed);
+  if (this->Mode == Otsu) // after CopyStructure, which clears field data
+    labelsOut->GetFieldData()->AddArray(otsuThresholds);
   if (!names.empty())
   {
     vtkNew<vtkStringArray> a;

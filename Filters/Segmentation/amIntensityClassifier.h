@@ -10,8 +10,9 @@
  * Mode Ranges (default): each range [Low, High) maps to a label; the first range that contains a
  * value wins; values in no range get label 0. Without AddRange calls, CT defaults are used, with
  * boundaries half-way between typical tissue values (HU): < -925 air (0), [-925, -475) lung (1),
- * [-475, -30) fat (2), [-30, 170) soft tissue (3), [170, 500) contrast-enhanced blood (4),
- * >= 500 bone (5); their names go to field data "LabelNames".
+ * [-475, -30) fat (2), [-30, 170) soft tissue (3), [170, 400) contrast-enhanced blood (4),
+ * >= 400 bone (5, half-way between soft tissue and cortical bone, so thin bones survive partial
+ * volume; dense contrast above 400 HU is classified as bone); names in field data "LabelNames".
  * Mode Otsu: ITK's multiple-threshold Otsu on a histogram of NumberOfHistogramBins bins splits the
  * intensities into NumberOfClasses classes, labelled 0 (darkest) to NumberOfClasses-1; the
  * thresholds are recorded in field data "Thresholds".
@@ -46,7 +47,7 @@ public:
   ///@}
 
   /// Map values in [low, high) to label (1..255). Ranges are tested in the order added.
-  void AddRange(double low, double high, int label);
+  void AddRange(double low, double high, double label);
   /// Forget the ranges (the CT defaults apply again).
   void RemoveAllRanges();
   int GetNumberOfRanges() { return static_cast<int>(this->RangeList.size() / 3); }

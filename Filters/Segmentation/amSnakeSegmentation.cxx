@@ -155,9 +155,9 @@ amSnakeSegmentation::~amSnakeSegmentation()
   this->SetSeedLabelArrayName(nullptr);
 }
 
-void amSnakeSegmentation::AddSeed(double x, double y, double z, int label)
+void amSnakeSegmentation::AddSeed(double x, double y, double z, double label)
 {
-  this->Seeds.insert(this->Seeds.end(), { x, y, z, static_cast<double>(label) });
+  this->Seeds.insert(this->Seeds.end(), { x, y, z, label });
   this->Modified();
 }
 
@@ -240,8 +240,16 @@ int amSnakeSegmentation::RequestData(
     return true;
   };
   for (size_t i = 0; i < this->Seeds.size(); i += 4)
-    if (!addSeed(&this->Seeds[i], static_cast<int>(this->Seeds[i + 3])))
+  {
+    const double l = this->Seeds[i + 3];
+    if (l != std::floor(l))
+    {
+      vtkErrorMacro("Seed " << i / 4 << " has label " << l << "; labels are whole numbers 1..255.");
       return 0;
+    }
+    if (!addSeed(&this->Seeds[i], static_cast<int>(l)))
+      return 0;
+  }
   if (seedSet)
   {
     vtkDataArray* labels = this->SeedLabelArrayName ? seedSet->GetPointData()->GetArray(this->SeedLabelArrayName) : nullptr;
@@ -285,6 +293,9 @@ int amSnakeSegmentation::RequestData(
   const LevelSetParameters lsp{ this->PropagationScaling, this->CurvatureScaling, this->EdgeWeight,
     this->MaximumRMSError };
   const double voxelVolume = spacing[0] * spacing[1] * spacing[2];
+  // The initial contour must span a few voxels, or curvature collapses it before it can grow.
+  const double initialRadius =
+    std::max(this->SeedRadius, 2.5 * std::max(spacing[0], std::max(spacing[1], spacing[2])));
 
   for (size_t li = 0; li < order.size(); ++li)
   {
@@ -421,7 +432,7 @@ int amSnakeSegmentation::RequestData(
                 double d = 1e30;
                 for (const Seed* s : mine)
                   d = std::min(d, ballDistance(s, i, j, static_cast<double>(k)));
-                pv[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i] = static_cast<float>(d - this->SeedRadius);
+                pv[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i] = static_cast<float>(d - initialRadius);
               }
         });
         if (initial)
@@ -508,8 +519,8 @@ int amSnakeSegmentation::RequestData(
                 q[ax] = s->Index[ax] - lo[ax];
                 d = std::min(d, ballDistance(s, q[0], q[1], q[2]));
               }
-              phi->GetBufferPointer()[static_cast<size_t>(iv) * nu + iu] = static_cast<float>(d - this->SeedRadius);
-              ballMask->GetBufferPointer()[static_cast<size_t>(iv) * nu + iu] = d <= this->SeedRadius ? 1 : 0;
+              phi->GetBufferPointer()[static_cast<size_t>(iv) * nu + iu] = static_cast<float>(d - initialRadius);
+              ballMask->GetBufferPointer()[static_cast<size_t>(iv) * nu + iu] = d <= initialRadius ? 1 : 0;
             }
           typename MaskImage<2>::Pointer mask;
           try

@@ -14,7 +14,8 @@
  * 2. the intensity of the organ is sampled in balls of SeedRadius (mm) around its seeds; the
  *    accepted interval is mean ± max(IntensityTolerance x standard deviation,
  *    MinimumIntensityWindow), or [LowerThreshold, UpperThreshold] when AutomaticThresholds is off;
- * 3. the initial contour is the union of the seed balls (signed distance), and it evolves as a
+ * 3. the initial contour is the union of the seed balls (at least 2.5 voxels in radius, so
+ *    curvature cannot collapse it at coarse spacing), and it evolves as a
  *    threshold level set (ITK ThresholdSegmentationLevelSetImageFilter): it expands where the
  *    smoothed intensity is in the interval, is held back elsewhere, and is kept smooth by
  *    CurvatureScaling, until NumberOfIterations or an RMS change below MaximumRMSError;
@@ -56,7 +57,7 @@ public:
   };
 
   /// Add a seed at world position (x, y, z) mm for organ label (1..255).
-  void AddSeed(double x, double y, double z, int label);
+  void AddSeed(double x, double y, double z, double label);
   void RemoveAllSeeds();
   int GetNumberOfSeeds() { return static_cast<int>(this->Seeds.size() / 4); }
 

@@ -13,6 +13,8 @@ class CatalogueMatchesClasses(unittest.TestCase):
         self.assertIn("ThoraxPhantomSource", proxies)
         self.assertIn("ImageReader", proxies)
         self.assertIn("MeditWriter", proxies)
+        self.assertIn("SnakeSegmentation", proxies)
+        self.assertIn("MorphologyCleaning", proxies)
         for name, proxy in proxies.items():
             cls = getattr(anatomesh, proxy.class_name, None)
             self.assertIsNotNone(cls, "%s: class %s missing" % (name, proxy.class_name))
@@ -23,6 +25,11 @@ class CatalogueMatchesClasses(unittest.TestCase):
                     continue
                 setter = getattr(obj, prop.command, None)
                 self.assertIsNotNone(setter, "%s.%s: no method %s" % (name, prop.name, prop.command))
+                if prop.repeat_command:
+                    self.assertTrue(prop.clean_command, (name, prop.name))
+                    getattr(obj, prop.clean_command)()
+                    setter(*([1] * prop.per_command))
+                    continue
                 if prop.kind == "string":
                     value = [prop.defaults[0] if prop.defaults else "x"]
                 else:

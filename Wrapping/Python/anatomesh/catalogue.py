@@ -26,6 +26,10 @@ class Property:
         self.kind = _TYPES[element.tag]
         self.number_of_elements = int(element.get("number_of_elements", "1"))
         self.repeat_command = element.get("repeat_command") == "1"
+        self.per_command = int(element.get("number_of_elements_per_command", "1"))
+        self.clean_command = element.get("clean_command")
+        self.port_index = int(element.get("port_index", "0"))
+        self.optional = element.find("Hints/Optional") is not None
         defaults = element.get("default_values")
         self.defaults = defaults.split() if defaults is not None else None
         self.boolean = element.find("BooleanDomain") is not None

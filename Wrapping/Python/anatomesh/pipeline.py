@@ -184,7 +184,10 @@ class Pipeline:
             if prop.number_of_elements and len(values) != prop.number_of_elements and not prop.repeat_command:
                 raise self._error(line, "%s needs %d value(s), got %d" % (where, prop.number_of_elements, len(values)))
             return
-        if not prop.repeat_command and len(values) != prop.number_of_elements:
+        if prop.repeat_command:
+            if len(values) % prop.per_command:
+                raise self._error(line, "%s takes groups of %d values, got %d" % (where, prop.per_command, len(values)))
+        elif len(values) != prop.number_of_elements:
             raise self._error(line, "%s needs %d value(s), got %d" % (where, prop.number_of_elements, len(values)))
         conv = int if prop.kind == "int" else float
         for i, v in enumerate(values):
@@ -248,7 +251,8 @@ class Pipeline:
             if step.name not in state:
                 visit(step, [])
         for step in self.steps:
-            missing = [p.name for p in step.proxy.inputs if p.name not in [i[0].name for i in step.inputs]]
+            missing = [p.name for p in step.proxy.inputs
+                       if not p.optional and p.name not in [i[0].name for i in step.inputs]]
             if missing:
                 raise self._error(step.line, "filter %r (%s) needs its input %s connected" % (
                     step.name, step.proxy.name, ", ".join(missing)))
@@ -272,14 +276,24 @@ class Pipeline:
                 method = getattr(algorithm, prop.command, None)
                 if method is None:
                     raise self._error(line, "%s has no method %s" % (step.proxy.class_name, prop.command))
-                method(*args)
+                try:
+                    if prop.repeat_command:
+                        if prop.clean_command:
+                            getattr(algorithm, prop.clean_command)()
+                        k = prop.per_command
+                        for i in range(0, len(args), k):
+                            method(*args[i:i + k])
+                    else:
+                        method(*args)
+                except (TypeError, ValueError) as e:
+                    raise self._error(line, "cannot set property %r of filter %r: %s" % (prop.name, step.name, e))
             step.algorithm = algorithm
             algorithms[step.name] = algorithm
         by_name = {s.name: s for s in self.steps}
         for step in self.steps:
             for prop, upstream, port, line in step.inputs:
                 index = self._port_index(by_name[upstream], port, line)
-                step.algorithm.SetInputConnection(0, by_name[upstream].algorithm.GetOutputPort(index))
+                step.algorithm.SetInputConnection(prop.port_index, by_name[upstream].algorithm.GetOutputPort(index))
         return algorithms
 
     def run(self, progress=None, log=None):
