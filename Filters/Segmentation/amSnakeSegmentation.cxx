@@ -144,6 +144,7 @@ amSnakeSegmentation::amSnakeSegmentation()
   , MinimumSliceArea(4.0)
   , AllowAirSeeds(false)
   , RefineToHalfContrast(true)
+  , AdaptiveSliceStatistics(false)
 {
   amThreading::Initialize();
   this->SetNumberOfInputPorts(2);
@@ -361,6 +362,7 @@ int amSnakeSegmentation::RequestData(
     };
     double sum = 0, sum2 = 0;
     long count = 0;
+    std::map<const Seed*, std::pair<double, double>> seedStats; // mean, sd of each ball
     for (const Seed* s : mine)
     {
       const int r[3] = { static_cast<int>(std::ceil(this->SeedRadius / spacing[0])),
@@ -368,7 +370,7 @@ int amSnakeSegmentation::RequestData(
         static_cast<int>(std::ceil(this->SeedRadius / spacing[2])) };
       const int c[3] = { static_cast<int>(std::lround(s->Index[0])) - lo[0],
         static_cast<int>(std::lround(s->Index[1])) - lo[1], static_cast<int>(std::lround(s->Index[2])) - lo[2] };
-      double ssum = 0;
+      double ssum = 0, ssum2 = 0;
       long scount = 0;
       for (int k = std::max(0, c[2] - r[2]); k <= std::min(rd[2] - 1, c[2] + r[2]); ++k)
         for (int j = std::max(0, c[1] - r[1]); j <= std::min(rd[1] - 1, c[1] + r[1]); ++j)
@@ -379,6 +381,7 @@ int amSnakeSegmentation::RequestData(
               sum += v;
               sum2 += v * v;
               ssum += v;
+              ssum2 += v * v;
               ++count;
               ++scount;
             }
@@ -388,9 +391,12 @@ int amSnakeSegmentation::RequestData(
         sum += v;
         sum2 += v * v;
         ssum = v;
+        ssum2 = v * v;
         scount = 1;
         ++count;
       }
+      seedStats[s] = { ssum / scount,
+        std::sqrt(std::max(0.0, ssum2 / scount - (ssum / scount) * (ssum / scount))) };
       if (!this->AllowAirSeeds && range[0] <= -900.0 && ssum / scount < -950.0)
       {
         double w[3];
@@ -525,7 +531,23 @@ int amSnakeSegmentation::RequestData(
           typename MaskImage<2>::Pointer mask;
           try
           {
-            mask = Evolve<2>(sliceFeature(s0), phi, tlo, thi, lsp, iterations2, nullptr);
+            double slo = tlo, shi = thi;
+            if (this->AdaptiveSliceStatistics && this->AutomaticThresholds)
+            {
+              // This slice's own seeds set its interval (the pooled one spans every level of
+              // enhancement met along the structure).
+              double m = 0, d = 0;
+              for (const Seed* sd : entry.second)
+              {
+                m += seedStats[sd].first;
+                d = std::max(d, seedStats[sd].second);
+              }
+              m /= entry.second.size();
+              const double half = std::max(this->IntensityTolerance * d, this->MinimumIntensityWindow);
+              slo = m - half;
+              shi = m + half;
+            }
+            mask = Evolve<2>(sliceFeature(s0), phi, slo, shi, lsp, iterations2, nullptr);
           }
           catch (const itk::ExceptionObject& e)
           {
@@ -565,7 +587,31 @@ int amSnakeSegmentation::RequestData(
               typename MaskImage<2>::Pointer next;
               try
               {
-                next = Evolve<2>(sliceFeature(is), SignedDistance<2>(start), tlo, thi, lsp, iterations2, nullptr);
+                double slo = tlo, shi = thi;
+                if (this->AdaptiveSliceStatistics && this->AutomaticThresholds)
+                {
+                  // Follow the structure: the interval of this slice comes from the section
+                  // found in the previous one (contrast changes along a vessel).
+                  const auto prevFeature = sliceFeature(is - dir);
+                  double a = 0, a2 = 0;
+                  long c = 0;
+                  for (size_t q = 0; q < static_cast<size_t>(nu) * nv; ++q)
+                    if (start->GetBufferPointer()[q])
+                    {
+                      const double f = prevFeature->GetBufferPointer()[q];
+                      a += f;
+                      a2 += f * f;
+                      ++c;
+                    }
+                  if (c > 0)
+                  {
+                    const double m = a / c, d = std::sqrt(std::max(0.0, a2 / c - m * m));
+                    const double half = std::max(this->IntensityTolerance * d, this->MinimumIntensityWindow);
+                    slo = m - half;
+                    shi = m + half;
+                  }
+                }
+                next = Evolve<2>(sliceFeature(is), SignedDistance<2>(start), slo, shi, lsp, iterations2, nullptr);
               }
               catch (const itk::ExceptionObject& e)
               {

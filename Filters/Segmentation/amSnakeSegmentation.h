@@ -161,6 +161,15 @@ public:
   ///@}
 
   ///@{
+  /// Slice-by-slice with automatic thresholds: each slice's interval comes from the statistics
+  /// of the section found in the previous slice (for vessels whose contrast changes along their
+  /// length) instead of the seeds' (default off).
+  vtkSetMacro(AdaptiveSliceStatistics, bool);
+  vtkGetMacro(AdaptiveSliceStatistics, bool);
+  vtkBooleanMacro(AdaptiveSliceStatistics, bool);
+  ///@}
+
+  ///@{
   /// Accept seeds whose neighbourhood is below -950 (air on CT) (default off).
   vtkSetMacro(AllowAirSeeds, bool);
   vtkGetMacro(AllowAirSeeds, bool);
@@ -195,6 +204,7 @@ protected:
   double MinimumSliceArea;
   bool AllowAirSeeds;
   bool RefineToHalfContrast;
+  bool AdaptiveSliceStatistics;
   std::vector<double> Seeds; // x, y, z, label
 
 private:

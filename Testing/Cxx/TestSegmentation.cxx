@@ -122,6 +122,11 @@ TEST(SnakeSegmentation, SliceBySlicePropagationFromSeedPoints)
     EXPECT_GE(d, 0.95) << src->GetLabelName(l);
     std::cout << "slice Dice " << src->GetLabelName(l) << " " << d << std::endl;
   }
+  // The interval may also follow the structure from slice to slice.
+  seg->SetAdaptiveSliceStatistics(true);
+  seg->Update();
+  for (int l : { 6, 7, 3, 4 })
+    EXPECT_GE(LabelDice(Image(seg), Image(src, 1), l), 0.95) << "adaptive " << src->GetLabelName(l);
 }
 
 TEST(SnakeSegmentation, OrgansNeverOverlapAndPrecedenceIsSeedOrder)
