@@ -1,5 +1,6 @@
 #include "amMorphologyCleaning.h"
 
+#include "amInputCheck.h"
 #include "amProvenance.h"
 #include "amThreading.h"
 
@@ -90,15 +91,11 @@ int amMorphologyCleaning::RequestData(
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
-  if (!input || input->GetNumberOfPoints() == 0)
+  std::string why;
+  vtkDataArray* scalars = amInputCheck::ScalarImage(input, why);
+  if (!scalars)
   {
-    vtkErrorMacro("The input label map is empty.");
-    return 0;
-  }
-  vtkDataArray* scalars = input->GetPointData()->GetScalars();
-  if (!scalars || scalars->GetNumberOfComponents() != 1)
-  {
-    vtkErrorMacro("The input needs one-component label scalars.");
+    vtkErrorMacro(<< why);
     return 0;
   }
   const vtkIdType n = scalars->GetNumberOfTuples();

@@ -1,6 +1,7 @@
 #include "amIntensityClassifier.h"
 
 #include "amITKBridge.h"
+#include "amInputCheck.h"
 #include "amProvenance.h"
 #include "amThreading.h"
 
@@ -80,22 +81,11 @@ int amIntensityClassifier::RequestData(
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkImageData* labelsOut = vtkImageData::GetData(outputVector, 0);
   vtkImageData* windowOut = vtkImageData::GetData(outputVector, 1);
-  vtkDataArray* scalars = input ? input->GetPointData()->GetScalars() : nullptr;
-  if (!input || input->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro("The input image is empty.");
-    return 0;
-  }
+  std::string why;
+  vtkDataArray* scalars = amInputCheck::ScalarImage(input, why);
   if (!scalars)
   {
-    vtkErrorMacro("The input image has no scalars to classify.");
-    return 0;
-  }
-  if (scalars->GetNumberOfComponents() != 1)
-  {
-    vtkErrorMacro("The input scalars '" << (scalars->GetName() ? scalars->GetName() : "") << "' have "
-                                        << scalars->GetNumberOfComponents()
-                                        << " components; a scalar (one-component) image is needed.");
+    vtkErrorMacro(<< why);
     return 0;
   }
   if (this->Mode == Ranges)

@@ -1,5 +1,6 @@
 #include "amSnakeSegmentation.h"
 
+#include "amInputCheck.h"
 #include "amProvenance.h"
 #include "amThreading.h"
 
@@ -195,16 +196,11 @@ int amSnakeSegmentation::RequestData(
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkPointSet* seedSet = vtkPointSet::GetData(inputVector[1], 0);
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
-  if (!input || input->GetNumberOfPoints() == 0)
+  std::string why;
+  vtkDataArray* scalars = amInputCheck::ScalarImage(input, why);
+  if (!scalars)
   {
-    vtkErrorMacro("The input image is empty.");
-    return 0;
-  }
-  vtkDataArray* scalars = input->GetPointData()->GetScalars();
-  if (!scalars || scalars->GetNumberOfComponents() != 1)
-  {
-    vtkErrorMacro("The input image needs one-component scalars (it has "
-      << (scalars ? scalars->GetNumberOfComponents() : 0) << " components).");
+    vtkErrorMacro(<< why);
     return 0;
   }
   int dims[3], extent[6];

@@ -186,7 +186,7 @@ TEST(SnakeSegmentation, BadInputGivesClearErrors)
   vectors->AllocateScalars(VTK_FLOAT, 3);
   seg->SetInputData(vectors);
   seg->Update();
-  EXPECT_TRUE(errors->ErrorContains("one-component")) << errors->AllErrors();
+  EXPECT_TRUE(errors->ErrorContains("3 components; a one-component image is needed")) << errors->AllErrors();
 }
 
 TEST(IntensityClassifier, BoneAloneAndLungsAfterOpening)
