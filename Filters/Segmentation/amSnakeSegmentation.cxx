@@ -116,6 +116,46 @@ void KeepOverlapping(MaskImage<D>* mask, const MaskImage<D>* reference)
     m[i] = (c[i] && keep.count(c[i])) ? 1 : 0;
 }
 
+// Slice-by-slice refinement: move the interval's edge that faces the section's surroundings
+// half-way between the section's mean and that of a ring 2..4 pixels outside it, and evolve
+// again from the section. Returns the refined mask (or the input when nothing changes).
+MaskImage<2>::Pointer RefineSection(FloatImage<2>* feature, MaskImage<2>* section, double& lo, double& hi,
+  const LevelSetParameters& p, int iterations)
+{
+  auto dist = SignedDistance<2>(section);
+  const double px = std::max(feature->GetSpacing()[0], feature->GetSpacing()[1]);
+  const size_t n = feature->GetLargestPossibleRegion().GetNumberOfPixels();
+  const float* f = feature->GetBufferPointer();
+  const float* d = dist->GetBufferPointer();
+  double in = 0, out = 0;
+  long ni = 0, no = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (section->GetBufferPointer()[i])
+    {
+      in += f[i];
+      ++ni;
+    }
+    else if (d[i] > 2.0 * px && d[i] <= 4.0 * px)
+    {
+      out += f[i];
+      ++no;
+    }
+  }
+  if (!ni || !no)
+    return section;
+  const double mi = in / ni, mo = out / no, mid = 0.5 * (mi + mo);
+  if (mo < mi && mid < lo)
+    lo = mid;
+  else if (mo > mi && mid > hi)
+    hi = mid;
+  else
+    return section;
+  auto refined = Evolve<2>(feature, dist, lo, hi, p, iterations, nullptr);
+  KeepOverlapping<2>(refined, section);
+  return refined;
+}
+
 struct Seed
 {
   double Index[3]; // continuous index in the input image
@@ -544,13 +584,18 @@ int amSnakeSegmentation::RequestData(
               shi = m + half;
             }
             mask = Evolve<2>(sliceFeature(s0), phi, slo, shi, lsp, iterations2, nullptr);
+            KeepOverlapping<2>(mask, ballMask);
+            if (this->AdaptiveSliceStatistics && this->AutomaticThresholds && this->RefineToHalfContrast)
+            {
+              mask = RefineSection(sliceFeature(s0), mask, slo, shi, lsp, iterations2);
+              KeepOverlapping<2>(mask, ballMask);
+            }
           }
           catch (const itk::ExceptionObject& e)
           {
             vtkErrorMacro("Level-set evolution failed for label " << label << ": " << e.GetDescription());
             return false;
           }
-          KeepOverlapping<2>(mask, ballMask);
           auto store = [&](const MaskImage<2>* m, int is) {
             for (int iv = 0; iv < nv; ++iv)
               for (int iu = 0; iu < nu; ++iu)
@@ -608,6 +653,11 @@ int amSnakeSegmentation::RequestData(
                   }
                 }
                 next = Evolve<2>(sliceFeature(is), SignedDistance<2>(start), slo, shi, lsp, iterations2, nullptr);
+                if (this->AdaptiveSliceStatistics && this->AutomaticThresholds && this->RefineToHalfContrast)
+                {
+                  KeepOverlapping<2>(next, previous);
+                  next = RefineSection(sliceFeature(is), next, slo, shi, lsp, iterations2);
+                }
               }
               catch (const itk::ExceptionObject& e)
               {

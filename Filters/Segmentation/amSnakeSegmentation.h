@@ -161,9 +161,11 @@ public:
   ///@}
 
   ///@{
-  /// Slice-by-slice with automatic thresholds: each slice's interval comes from the statistics
-  /// of the section found in the previous slice (for vessels whose contrast changes along their
-  /// length) instead of the seeds' (default off).
+  /// Slice-by-slice with automatic thresholds: each seed slice's interval comes from its own
+  /// seeds, each later slice's from the section found in the previous slice (for vessels whose
+  /// contrast changes along their length), instead of all seeds pooled; with
+  /// RefineToHalfContrast each section is also refined to half contrast against a ring 2..4
+  /// pixels outside it (default off).
   vtkSetMacro(AdaptiveSliceStatistics, bool);
   vtkGetMacro(AdaptiveSliceStatistics, bool);
   vtkBooleanMacro(AdaptiveSliceStatistics, bool);
