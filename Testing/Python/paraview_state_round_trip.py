@@ -38,6 +38,12 @@ if len(sys.argv) > 1 and sys.argv[1] == "--reload":
     expected = tuple(float(x) for x in sys.argv[2].split(","))
     if (float(got[0]),) + got[1] != expected:
         fail("reloaded numbers %s differ from %s" % (got, expected))
+    snake = FindSource("Snake")
+    if snake is None or list(snake.Seeds) != [72.0, 5.0, 5.0, 4.0]:
+        fail("the snake segmentation or its seeds were not restored")
+    snake.UpdatePipeline()
+    if tuple(snake.PointData["Labels"].GetRange()) != (0.0, 4.0):
+        fail("reloaded snake output range %s" % (snake.PointData["Labels"].GetRange(),))
     print("reloaded state OK:", got)
     sys.exit(0)
 
@@ -50,6 +56,12 @@ if n != 53 * 40 * 35 or rng != (0.0, 10.0):
 reader_ok = "AnatomeshImageReader" in globals() and "MeditMeshReader" in globals()
 if not reader_ok:
     fail("the plugin does not expose AnatomeshImageReader/MeditMeshReader")
+# The segmentation with a repeatable property (x y z label seeds) through ParaView's proxies.
+snake = SnakeSegmentation(registrationName="Snake", Input=OutputPort(src, 0))
+snake.Seeds = [72.0, 5.0, 5.0, 4.0]
+snake.UpdatePipeline()
+if tuple(snake.PointData["Labels"].GetRange()) != (0.0, 4.0):
+    fail("snake output range %s" % (snake.PointData["Labels"].GetRange(),))
 SaveState(STATE)
 child = subprocess.run([os.environ.get("PVBATCH", "pvbatch"), "--force-offscreen-rendering", __file__, "--reload",
                         "%d,%s,%s" % (n, rng[0], rng[1])], capture_output=True, text=True, timeout=300)
