@@ -1,0 +1,46 @@
+"""Segmentation on the real contrast cardiac CT of ../shared/data (skipped when it is absent).
+
+The aorta pipeline (Examples/Pipelines/cardiac_aorta.xml) is compared with the provided
+TotalSegmentator mask. The issue's target is Dice >= 0.85; what the snake reaches today is 0.56,
+so this test guards that level (>= 0.5) until edge/vesselness terms raise it.
+"""
+import os
+import subprocess
+import sys
+import unittest
+
+SOURCE = os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+SHARED = os.environ.get("ANATOMESH_SHARED_DATA", os.path.join(SOURCE, "..", "shared", "data"))
+TMP = os.environ.get("ANATOMESH_TEST_TMP", "/tmp")
+CT = os.path.join(SHARED, "totalseg_cardiac_ct", "aorta_report", "ct_cropped.nii.gz")
+MASK = os.path.join(SHARED, "totalseg_cardiac_ct", "aorta_report", "aorta.nii.gz")
+
+
+@unittest.skipUnless(os.path.exists(CT) and os.path.exists(MASK), "shared cardiac CT absent: " + CT)
+class AortaOfRealCT(unittest.TestCase):
+    def test_aorta_pipeline_against_mask(self):
+        import numpy as np
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+
+        import anatomesh
+        out = os.path.join(TMP, "real_aorta")
+        cli = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh"), "run",
+               os.path.join(SOURCE, "Examples", "Pipelines", "cardiac_aorta.xml"),
+               "--set", "input=" + CT, "--output", out, "--quiet"]
+        p = subprocess.run(cli, capture_output=True, text=True, timeout=600)
+        self.assertEqual(p.returncode, 0, p.stderr)
+
+        def read(path):
+            r = anatomesh.amImageReader()
+            r.SetFileName(path)
+            r.Update()
+            return vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())
+
+        seg, mask = read(os.path.join(out, "aorta_labels.nii.gz")) > 0, read(MASK) > 0
+        dice = 2.0 * (seg & mask).sum() / (seg.sum() + mask.sum())
+        print("aorta Dice against the TotalSegmentator mask: %.3f" % dice)
+        self.assertGreaterEqual(dice, 0.5)
+
+
+if __name__ == "__main__":
+    unittest.main()
