@@ -143,6 +143,8 @@ int amMorphologyCleaning::RequestData(
   // Hand voxels given up by 'from' to their neighbours (most frequent 26-neighbour label other
   // than 'from' among voxels that keep theirs), pass after pass; what no neighbour takes becomes 0.
   auto handOver = [&](std::vector<vtkIdType>& released, int from) {
+    if (released.empty())
+      return;
     std::vector<char> pending(static_cast<size_t>(n), 0);
     for (vtkIdType id : released)
       pending[id] = 1;

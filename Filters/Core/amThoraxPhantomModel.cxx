@@ -107,6 +107,16 @@ amThoraxPhantomModel::amThoraxPhantomModel()
   this->RibZTop = 60.0;
   this->RibSpacing = 20.0;
   this->RibTilt = 0.25; // ribs run down towards the front: dz/dy
+  // Ring of rib pair k: the inner body's cross-section at its height, shrunk by RibRing[0].
+  const double innerC = this->BodyRadii[2] - this->FatThickness;
+  for (int k = 0; k < this->NumberOfRibPairs; ++k)
+  {
+    const double zk = this->RibZTop - k * this->RibSpacing;
+    const double s = std::sqrt(1.0 - std::pow(std::fabs(zk / innerC), this->BodyExponent));
+    this->RibHeight.push_back(zk);
+    this->RibA.push_back((this->BodyRadii[0] - this->FatThickness) * s - this->RibRing[0]);
+    this->RibB.push_back((this->BodyRadii[1] - this->FatThickness) * s - this->RibRing[0]);
+  }
 }
 
 bool amThoraxPhantomModel::InsideSuperquadric(const double x[3], const double radii[3], double q)
@@ -194,17 +204,12 @@ bool amThoraxPhantomModel::InsideRib(const double x[3]) const
 {
   if (std::fabs(x[0]) < this->RibRing[1])
     return false;
-  const double innerC = this->BodyRadii[2] - this->FatThickness;
   for (int k = 0; k < this->NumberOfRibPairs; ++k)
   {
-    const double zk = this->RibZTop - k * this->RibSpacing;
-    const double dz = x[2] - (zk + this->RibTilt * x[1]);
+    const double dz = x[2] - (this->RibHeight[k] + this->RibTilt * x[1]);
     if (std::fabs(dz) > this->RibRadius)
       continue;
-    // Ring: the inner body's cross-section at height zk, shrunk by RibRing[0].
-    const double s = std::sqrt(1.0 - std::pow(std::fabs(zk / innerC), this->BodyExponent));
-    const double A = (this->BodyRadii[0] - this->FatThickness) * s - this->RibRing[0];
-    const double B = (this->BodyRadii[1] - this->FatThickness) * s - this->RibRing[0];
+    const double A = this->RibA[k], B = this->RibB[k];
     const double rho = std::sqrt((x[0] / A) * (x[0] / A) + (x[1] / B) * (x[1] / B));
     if (rho <= 0.0)
       continue;
@@ -352,13 +357,9 @@ void amThoraxPhantomModel::GetOrganCenter(int label, double center[3]) const
     case Ribs:
     {
       // On the centre line of the third rib, on the patient's left side.
-      const double zk = this->RibZTop - 2 * this->RibSpacing;
-      const double innerC = this->BodyRadii[2] - this->FatThickness;
-      const double s = std::sqrt(1.0 - std::pow(std::fabs(zk / innerC), this->BodyExponent));
-      const double A = (this->BodyRadii[0] - this->FatThickness) * s - this->RibRing[0];
-      tmp[0] = A;
+      tmp[0] = this->RibA[2];
       tmp[1] = 0.0;
-      tmp[2] = zk;
+      tmp[2] = this->RibHeight[2];
       c = tmp;
       break;
     }

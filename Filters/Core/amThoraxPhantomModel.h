@@ -128,6 +128,8 @@ private:
   double RibZTop;
   double RibSpacing;
   double RibTilt;
+  // Per rib pair: its height and the semi-axes of its ring (derived in the constructor).
+  std::vector<double> RibHeight, RibA, RibB;
 
   static bool InsideSuperquadric(const double x[3], const double radii[3], double q);
   static double SuperquadricVolume(const double radii[3], double q);

@@ -610,6 +610,7 @@ int amSnakeSegmentation::RequestData(
           for (int dir : { -1, 1 })
           {
             typename MaskImage<2>::Pointer previous = mask;
+            FloatImage<2>::Pointer previousFeature = sliceFeature(s0);
             size_t previousArea = area0;
             for (int is = s0 + dir; is >= 0 && is < ns && !done[is]; is += dir)
             {
@@ -626,6 +627,7 @@ int amSnakeSegmentation::RequestData(
               if (Count<2>(erode->GetOutput()) > 0)
                 start = erode->GetOutput();
               typename MaskImage<2>::Pointer next;
+              const FloatImage<2>::Pointer feature2 = sliceFeature(is);
               try
               {
                 double slo = tlo, shi = thi;
@@ -633,7 +635,7 @@ int amSnakeSegmentation::RequestData(
                 {
                   // Follow the structure: the interval of this slice comes from the section
                   // found in the previous one (contrast changes along a vessel).
-                  const auto prevFeature = sliceFeature(is - dir);
+                  const FloatImage<2>* prevFeature = previousFeature;
                   double a = 0, a2 = 0;
                   long c = 0;
                   for (size_t q = 0; q < static_cast<size_t>(nu) * nv; ++q)
@@ -652,11 +654,11 @@ int amSnakeSegmentation::RequestData(
                     shi = m + half;
                   }
                 }
-                next = Evolve<2>(sliceFeature(is), SignedDistance<2>(start), slo, shi, lsp, iterations2, nullptr);
+                next = Evolve<2>(feature2, SignedDistance<2>(start), slo, shi, lsp, iterations2, nullptr);
                 if (this->AdaptiveSliceStatistics && this->AutomaticThresholds && this->RefineToHalfContrast)
                 {
                   KeepOverlapping<2>(next, previous);
-                  next = RefineSection(sliceFeature(is), next, slo, shi, lsp, iterations2);
+                  next = RefineSection(feature2, next, slo, shi, lsp, iterations2);
                 }
               }
               catch (const itk::ExceptionObject& e)
@@ -672,6 +674,7 @@ int amSnakeSegmentation::RequestData(
                 break;
               store(next, is);
               previous = next;
+              previousFeature = feature2;
               previousArea = area;
               if (this->GetAbortExecute())
                 return false;

@@ -61,7 +61,7 @@ bool ChunkedFor(amThoraxPhantomSource* self, vtkIdType n, double p0, double p1, 
   return true;
 }
 
-// Separable Gaussian blur of a float volume along one axis, in place (via a scratch copy).
+// Separable Gaussian blur of a float volume along one axis, in place (one line at a time).
 void BlurAxis(std::vector<float>& data, const int dims[3], int axis, double sigmaVoxels)
 {
   if (sigmaVoxels <= 0.05 || dims[axis] < 2)
@@ -76,19 +76,21 @@ void BlurAxis(std::vector<float>& data, const int dims[3], int axis, double sigm
   const vtkIdType stride[3] = { 1, dims[0], static_cast<vtkIdType>(dims[0]) * dims[1] };
   const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
   const vtkIdType lines = static_cast<vtkIdType>(dims[a1]) * dims[a2];
-  const std::vector<float> source(data);
   vtkSMPTools::For(0, lines, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<float> line(static_cast<size_t>(dims[axis])); // the line before blurring
     for (vtkIdType l = begin; l < end; ++l)
     {
       const vtkIdType i1 = l % dims[a1], i2 = l / dims[a1];
       const vtkIdType base = i1 * stride[a1] + i2 * stride[a2];
+      for (int i = 0; i < dims[axis]; ++i)
+        line[i] = data[base + i * stride[axis]];
       for (int i = 0; i < dims[axis]; ++i)
       {
         double v = 0.0;
         for (int k = -radius; k <= radius; ++k)
         {
           const int j = std::min(dims[axis] - 1, std::max(0, i + k)); // clamp: air extends outward
-          v += kernel[k + radius] * source[base + j * stride[axis]];
+          v += kernel[k + radius] * line[j];
         }
         data[base + i * stride[axis]] = static_cast<float>(v);
       }

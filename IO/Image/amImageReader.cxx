@@ -524,6 +524,7 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
   double dir[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   itk::IOComponentEnum componentType = itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
   std::string modality, tiltTag;
+  double pixel = 0.0; // the smaller in-plane pixel spacing
   for (size_t i = 0; i < files.size(); ++i)
   {
     auto io = itk::GDCMImageIO::New();
@@ -556,6 +557,7 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
           dir[3 * r + c] = axis[r];
       }
       componentType = io->GetComponentType();
+      pixel = std::min(io->GetSpacing(0), io->GetSpacing(1));
       io->GetValueFromTag("0008|0060", modality);
       io->GetValueFromTag("0018|1120", tiltTag);
     }
@@ -614,10 +616,6 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
     return false;
   }
 
-  auto first = itk::GDCMImageIO::New();
-  first->SetFileName(files[0]);
-  first->ReadImageInformation();
-  const double pixel = std::min(first->GetSpacing(0), first->GetSpacing(1));
   const bool tilted = slices.size() > 1 && maxShift > 0.05 * pixel;
   const bool uneven = slices.size() > 2 && (maxGap - minGap) > 0.01 * maxGap + 1e-3;
   if ((tilted || uneven) && !this->ResampleIrregularSeries)
