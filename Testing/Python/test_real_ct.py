@@ -1,7 +1,7 @@
 """Segmentation on the real contrast cardiac CT of ../shared/data (skipped when it is absent).
 
 The aorta pipeline (Examples/Pipelines/cardiac_aorta.xml) is compared with the provided
-TotalSegmentator mask. The issue's target is Dice >= 0.85; what the snake reaches today is 0.56,
+TotalSegmentator mask. The issue's target is Dice >= 0.85; what the snake reaches today is 0.535,
 so this test guards that level (>= 0.5) until edge/vesselness terms raise it.
 """
 import os
