@@ -1,0 +1,218 @@
+#include "amTriangleLocator.h"
+
+#include "vtkSMPTools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
+  const std::vector<std::array<vtkIdType, 3>>& triangles)
+{
+  this->Points = points;
+  this->Triangles = triangles;
+  const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
+  double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max() };
+  double hi[3] = { -lo[0], -lo[1], -lo[2] };
+  double edgeSum = 0;
+  for (const auto& t : triangles)
+  {
+    for (vtkIdType v : t)
+      for (int d = 0; d < 3; ++d)
+      {
+        lo[d] = std::min(lo[d], points[v][d]);
+        hi[d] = std::max(hi[d], points[v][d]);
+      }
+    const auto &p = points[t[0]], &q = points[t[1]];
+    edgeSum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+  if (nt == 0)
+  {
+    this->N[0] = this->N[1] = this->N[2] = 0;
+    return;
+  }
+  // Bins about one mean edge wide, at most ~4 bins per triangle overall.
+  double h = 1.0 * edgeSum / nt;
+  const double volume = std::max(hi[0] - lo[0], 1e-9) * std::max(hi[1] - lo[1], 1e-9) * std::max(hi[2] - lo[2], 1e-9);
+  h = std::max(h, std::cbrt(volume / (4.0 * nt + 1.0)));
+  if (!(h > 0))
+    h = 1.0;
+  this->H = h;
+  for (int d = 0; d < 3; ++d)
+  {
+    this->Origin[d] = lo[d] - 1e-6 * h;
+    this->N[d] = std::max(1, static_cast<int>(std::floor((hi[d] - this->Origin[d]) / h)) + 1);
+  }
+  const vtkIdType nb = static_cast<vtkIdType>(this->N[0]) * this->N[1] * this->N[2];
+  auto binRange = [&](vtkIdType t, int b0[3], int b1[3]) {
+    for (int d = 0; d < 3; ++d)
+    {
+      double mn = std::numeric_limits<double>::max(), mx = -mn;
+      for (vtkIdType v : triangles[t])
+      {
+        mn = std::min(mn, points[v][d]);
+        mx = std::max(mx, points[v][d]);
+      }
+      b0[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mn - this->Origin[d]) / h)));
+      b1[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mx - this->Origin[d]) / h)));
+    }
+  };
+  this->BinStart.assign(static_cast<size_t>(nb + 1), 0);
+  int b0[3], b1[3];
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    binRange(t, b0, b1);
+    for (int k = b0[2]; k <= b1[2]; ++k)
+      for (int j = b0[1]; j <= b1[1]; ++j)
+        for (int i = b0[0]; i <= b1[0]; ++i)
+          ++this->BinStart[(static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i + 1];
+  }
+  for (vtkIdType b = 0; b < nb; ++b)
+    this->BinStart[b + 1] += this->BinStart[b];
+  this->BinTriangles.resize(static_cast<size_t>(this->BinStart.back()));
+  std::vector<vtkIdType> fill(this->BinStart.begin(), this->BinStart.end() - 1);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    binRange(t, b0, b1);
+    for (int k = b0[2]; k <= b1[2]; ++k)
+      for (int j = b0[1]; j <= b1[1]; ++j)
+        for (int i = b0[0]; i <= b1[0]; ++i)
+          this->BinTriangles[fill[(static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i]++] = t;
+  }
+}
+
+double amTriangleLocator::ClosestPointOnTriangle(
+  const double p[3], const double a[3], const double b[3], const double c[3], double out[3])
+{
+  // Ericson, Real-Time Collision Detection, 5.1.5: Voronoi regions of the triangle.
+  double ab[3], ac[3], ap[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    ab[d] = b[d] - a[d];
+    ac[d] = c[d] - a[d];
+    ap[d] = p[d] - a[d];
+  }
+  auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  auto set = [&](double u, double v, double w) {
+    for (int d = 0; d < 3; ++d)
+      out[d] = u * a[d] + v * b[d] + w * c[d];
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0)
+    set(1, 0, 0);
+  else
+  {
+    double bp[3], cp[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      bp[d] = p[d] - b[d];
+      cp[d] = p[d] - c[d];
+    }
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    if (d3 >= 0 && d4 <= d3)
+      set(0, 1, 0);
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    {
+      const double v = d1 / (d1 - d3);
+      set(1 - v, v, 0);
+    }
+    else if (d6 >= 0 && d5 <= d6)
+      set(0, 0, 1);
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    {
+      const double w = d2 / (d2 - d6);
+      set(1 - w, 0, w);
+    }
+    else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    {
+      const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+      set(0, 1 - w, w);
+    }
+    else
+    {
+      const double denom = 1.0 / (va + vb + vc);
+      const double v = vb * denom, w = vc * denom;
+      set(1 - v - w, v, w);
+    }
+  }
+  double d2s = 0;
+  for (int d = 0; d < 3; ++d)
+    d2s += (p[d] - out[d]) * (p[d] - out[d]);
+  return d2s;
+}
+
+double amTriangleLocator::ClosestPoint(const double x[3], double closest[3], vtkIdType& triangle) const
+{
+  triangle = -1;
+  double best = std::numeric_limits<double>::infinity();
+  if (this->Triangles.empty())
+    return best;
+  int c[3];
+  for (int d = 0; d < 3; ++d)
+    c[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>(std::floor((x[d] - this->Origin[d]) / this->H))));
+  const int maxR = std::max({ c[0], this->N[0] - 1 - c[0], c[1], this->N[1] - 1 - c[1], c[2], this->N[2] - 1 - c[2] });
+  double q[3];
+  for (int r = 0; r <= maxR; ++r)
+  {
+    for (int k = c[2] - r; k <= c[2] + r; ++k)
+    {
+      if (k < 0 || k >= this->N[2])
+        continue;
+      for (int j = c[1] - r; j <= c[1] + r; ++j)
+      {
+        if (j < 0 || j >= this->N[1])
+          continue;
+        const bool shellJK = std::abs(k - c[2]) == r || std::abs(j - c[1]) == r;
+        for (int i = c[0] - r; i <= c[0] + r; i += (shellJK || r == 0) ? 1 : 2 * r)
+        {
+          if (i < 0 || i >= this->N[0])
+            continue;
+          // Skip a bin that cannot hold anything closer than the best so far.
+          const int bi[3] = { i, j, k };
+          double boxD2 = 0;
+          for (int d = 0; d < 3; ++d)
+          {
+            const double lo = this->Origin[d] + bi[d] * this->H, hi = lo + this->H;
+            const double g = x[d] < lo ? lo - x[d] : (x[d] > hi ? x[d] - hi : 0.0);
+            boxD2 += g * g;
+          }
+          if (boxD2 >= best)
+            continue;
+          const vtkIdType b = (static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i;
+          for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
+          {
+            const vtkIdType t = this->BinTriangles[s];
+            const auto& tri = this->Triangles[t];
+            const double d2 = ClosestPointOnTriangle(x, this->Points[tri[0]].data(),
+              this->Points[tri[1]].data(), this->Points[tri[2]].data(), q);
+            if (d2 < best)
+            {
+              best = d2;
+              triangle = t;
+              closest[0] = q[0];
+              closest[1] = q[1];
+              closest[2] = q[2];
+            }
+          }
+        }
+      }
+    }
+    // Everything not yet searched lies outside the box of bins c-r .. c+r.
+    double reach = std::numeric_limits<double>::infinity();
+    for (int d = 0; d < 3; ++d)
+    {
+      if (c[d] - r > 0)
+        reach = std::min(reach, x[d] - (this->Origin[d] + (c[d] - r) * this->H));
+      if (c[d] + r < this->N[d] - 1)
+        reach = std::min(reach, this->Origin[d] + (c[d] + r + 1) * this->H - x[d]);
+    }
+    if (reach == std::numeric_limits<double>::infinity())
+      break; // the whole grid is searched
+    if (reach > 0 && best <= reach * reach)
+      break;
+  }
+  return best;
+}

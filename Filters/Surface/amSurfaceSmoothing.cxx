@@ -1,0 +1,155 @@
+#include "amSurfaceSmoothing.h"
+
+#include "amProvenance.h"
+#include "amSurfaceMesh.h"
+#include "amThreading.h"
+
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(amSurfaceSmoothing);
+
+amSurfaceSmoothing::amSurfaceSmoothing()
+  : NumberOfIterations(20)
+  , PassBand(0.1)
+  , MaximumDisplacement(-1.0)
+  , PreserveFeatures(true)
+  , UsedMaximumDisplacement(0.0)
+{
+  amThreading::Initialize();
+}
+
+amSurfaceSmoothing::~amSurfaceSmoothing() = default;
+
+int amSurfaceSmoothing::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  amSurfaceMesh mesh;
+  std::string why;
+  if (!mesh.Build(input, why))
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
+  double bound = this->MaximumDisplacement;
+  if (bound < 0)
+  {
+    vtkDataArray* voxel = input->GetFieldData()->GetArray("VoxelSize");
+    // Half the voxel diagonal: the ball around a voxel corner that holds its 2x2x2 block's centres.
+    bound = (voxel && voxel->GetNumberOfTuples() > 0) ? 0.5 * std::sqrt(3.0) * voxel->GetComponent(0, 0) : 0.0;
+  }
+  this->UsedMaximumDisplacement = bound;
+  const vtkIdType np = mesh.NumberOfPoints();
+  if (!this->PreserveFeatures)
+    std::fill(mesh.Kind.begin(), mesh.Kind.end(), amSurfaceMesh::Surface);
+
+  // The neighbours each vertex averages over: its whole ring, or its two curve neighbours.
+  std::vector<vtkIdType> start(static_cast<size_t>(np + 1), 0), nbr;
+  nbr.reserve(mesh.Ring.size());
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    if (mesh.Kind[v] == amSurfaceMesh::Surface)
+      nbr.insert(nbr.end(), mesh.Ring.begin() + mesh.RingStart[v], mesh.Ring.begin() + mesh.RingStart[v + 1]);
+    else if (mesh.Kind[v] == amSurfaceMesh::Curve)
+      for (vtkIdType r = mesh.RingStart[v]; r < mesh.RingStart[v + 1]; ++r)
+        if (mesh.FeatureEdge[mesh.RingEdge[r]])
+          nbr.push_back(mesh.Ring[r]);
+    start[v + 1] = static_cast<vtkIdType>(nbr.size());
+  }
+
+  const double lambda = 0.5, mu = 1.0 / (this->PassBand - 1.0 / lambda);
+  std::vector<std::array<double, 3>> x = mesh.Points, next(x.size());
+  const std::vector<std::array<double, 3>>& x0 = mesh.Points;
+  const double bound2 = bound * bound;
+  for (int it = 0; it < 2 * this->NumberOfIterations; ++it)
+  {
+    const double f = (it % 2 == 0) ? lambda : mu;
+    vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+      for (vtkIdType v = v0; v < v1; ++v)
+      {
+        const vtkIdType n = start[v + 1] - start[v];
+        if (n == 0)
+        {
+          next[v] = x[v];
+          continue;
+        }
+        double mean[3] = { 0, 0, 0 };
+        for (vtkIdType r = start[v]; r < start[v + 1]; ++r)
+          for (int d = 0; d < 3; ++d)
+            mean[d] += x[nbr[r]][d];
+        double disp[3], len2 = 0;
+        for (int d = 0; d < 3; ++d)
+        {
+          next[v][d] = x[v][d] + f * (mean[d] / n - x[v][d]);
+          disp[d] = next[v][d] - x0[v][d];
+          len2 += disp[d] * disp[d];
+        }
+        if (bound2 > 0 && len2 > bound2)
+        {
+          const double s = bound / std::sqrt(len2);
+          for (int d = 0; d < 3; ++d)
+            next[v][d] = x0[v][d] + s * disp[d];
+        }
+      }
+    });
+    x.swap(next);
+    if (it % 8 == 7)
+      this->UpdateProgress(static_cast<double>(it + 1) / (2 * this->NumberOfIterations));
+  }
+
+  output->CopyStructure(input);
+  output->GetPointData()->PassData(input->GetPointData());
+  output->GetCellData()->PassData(input->GetCellData());
+  output->GetFieldData()->PassData(input->GetFieldData());
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(np);
+  vtkNew<vtkDoubleArray> displacement;
+  displacement->SetName("Displacement");
+  displacement->SetNumberOfTuples(np);
+  vtkNew<vtkUnsignedCharArray> kind;
+  kind->SetName("FeatureVertex");
+  kind->SetNumberOfTuples(np);
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    points->SetPoint(v, x[v].data());
+    double d2 = 0;
+    for (int d = 0; d < 3; ++d)
+      d2 += (x[v][d] - x0[v][d]) * (x[v][d] - x0[v][d]);
+    displacement->SetValue(v, std::sqrt(d2));
+    kind->SetValue(v, mesh.Kind[v]);
+  }
+  output->SetPoints(points);
+  output->GetPointData()->AddArray(displacement);
+  output->GetPointData()->AddArray(kind);
+  std::ostringstream params;
+  params << "NumberOfIterations=" << this->NumberOfIterations << " PassBand=" << this->PassBand
+         << " MaximumDisplacement=" << bound << " PreserveFeatures=" << this->PreserveFeatures;
+  amProvenance::Record(output, input, "amSurfaceSmoothing", params.str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void amSurfaceSmoothing::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "PassBand: " << this->PassBand << "\n";
+  os << indent << "MaximumDisplacement: " << this->MaximumDisplacement << "\n";
+  os << indent << "PreserveFeatures: " << this->PreserveFeatures << "\n";
+}
