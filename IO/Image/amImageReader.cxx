@@ -21,6 +21,8 @@
 #include <itkImageIOFactory.h>
 #include <itkImageSeriesReader.h>
 #include <itkMetaImageIOFactory.h>
+
+#include <zlib.h>
 #include <itkNiftiImageIOFactory.h>
 #include <itkNrrdImageIOFactory.h>
 
@@ -94,8 +96,13 @@ long long FileSize(const std::string& path)
 
 // ITK's MetaImage reader accepts a short data file (it only prints to stderr): check the size of
 // the voxel data against the header ourselves. Returns an empty string when it is fine.
-std::string CheckMetaImageData(const std::string& path)
+// A compressed stream is inflated here (zlib) to count its bytes: ITK inflates only
+// CompressedDataSize bytes and leaves the rest of the image uninitialised when the header
+// understates it (VTK's frogtissue.mhd says 260020 of 262087 bytes). Such a header is repaired:
+// 'repairedHeader' gets a temporary copy with the true size and an absolute data file path.
+std::string CheckMetaImageData(const std::string& path, std::string& repairedHeader)
 {
+  repairedHeader.clear();
   std::ifstream in(path, std::ios::binary);
   std::string line, dataFile;
   std::vector<long long> dims;
@@ -161,6 +168,68 @@ std::string CheckMetaImageData(const std::string& path)
     if (compressedSize > 0 && available < compressedSize)
       return "the compressed voxel data is truncated (" + std::to_string(available) + " of " +
         std::to_string(compressedSize) + " bytes in '" + where + "')";
+    std::ifstream data(where, std::ios::binary);
+    if (dataFile == "LOCAL")
+      data.seekg(headerBytes);
+    z_stream zs{};
+    if (inflateInit2(&zs, 15 + 32) != Z_OK) // zlib or gzip header
+      return std::string();
+    std::vector<unsigned char> inBuf(1 << 16), outBuf(1 << 20);
+    long long produced = 0;
+    int status = Z_OK;
+    while (status == Z_OK)
+    {
+      if (zs.avail_in == 0)
+      {
+        data.read(reinterpret_cast<char*>(inBuf.data()), static_cast<std::streamsize>(inBuf.size()));
+        zs.avail_in = static_cast<uInt>(data.gcount());
+        zs.next_in = inBuf.data();
+        if (zs.avail_in == 0)
+          break;
+      }
+      zs.next_out = outBuf.data();
+      zs.avail_out = static_cast<uInt>(outBuf.size());
+      status = inflate(&zs, Z_NO_FLUSH);
+      produced += static_cast<long long>(outBuf.size() - zs.avail_out);
+    }
+    const long long consumed = static_cast<long long>(zs.total_in);
+    inflateEnd(&zs);
+    if (status != Z_STREAM_END && status != Z_OK)
+      return "the compressed voxel data in '" + where + "' is corrupt (zlib error " + std::to_string(status) + ")";
+    if (produced < expected)
+      return "the compressed voxel data in '" + where + "' inflates to " + std::to_string(produced) + " of the " +
+        std::to_string(expected) + " bytes the header announces (truncated)";
+    if (compressedSize > 0 && compressedSize != consumed && dataFile != "LOCAL")
+    {
+      std::ifstream header(path);
+      std::string text, l;
+      while (std::getline(header, l))
+      {
+        const std::string key = Trim(l.substr(0, l.find('=')));
+        if (key == "CompressedDataSize")
+          l = "CompressedDataSize = " + std::to_string(consumed);
+        else if (key == "ElementDataFile")
+        {
+          text += "ElementDataFile = " + where + "\n";
+          break;
+        }
+        text += l + "\n";
+      }
+      char tmpl[] = "/tmp/anatomesh-meta-XXXXXX.mhd";
+      const int fd = ::mkstemps(tmpl, 4);
+      if (fd >= 0)
+      {
+        const bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+        ::close(fd);
+        if (ok)
+          repairedHeader = tmpl;
+        else
+          std::remove(tmpl);
+      }
+      if (repairedHeader.empty())
+        return "its header gives CompressedDataSize " + std::to_string(compressedSize) + " but the stream has " +
+          std::to_string(consumed) + " bytes, and no corrected copy could be written";
+    }
     return std::string();
   }
   if (available < expected)
@@ -399,14 +468,30 @@ bool amImageReader::LoadFile(const std::string& path)
       if (!Path.empty())
         std::remove(Path.c_str());
     }
-  } removeRepaired{ repaired };
+  } removeRepaired{ repaired }, metaRepaired{ std::string() };
   if (format.find("Meta") != std::string::npos)
   {
-    const std::string problem = CheckMetaImageData(path);
+    const std::string problem = CheckMetaImageData(path, metaRepaired.Path);
     if (!problem.empty())
     {
       vtkErrorMacro("Cannot read '" << path << "': " << problem << ".");
       return false;
+    }
+    if (!metaRepaired.Path.empty())
+    {
+      vtkWarningMacro("'" << path << "' understates its CompressedDataSize; read with the size of the actual "
+                          "compressed stream (ITK would otherwise leave the last voxels undefined).");
+      readPath = metaRepaired.Path;
+      try
+      {
+        io->SetFileName(readPath);
+        io->ReadImageInformation();
+      }
+      catch (const itk::ExceptionObject& e)
+      {
+        vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(e.what()));
+        return false;
+      }
     }
   }
   const unsigned dim = io->GetNumberOfDimensions();
