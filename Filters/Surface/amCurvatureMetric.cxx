@@ -1,0 +1,296 @@
+#include "amCurvatureMetric.h"
+
+#include "amProvenance.h"
+#include "amSurfaceMesh.h"
+#include "amThreading.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <queue>
+#include <sstream>
+
+vtkStandardNewMacro(amCurvatureMetric);
+
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+
+struct Curvature
+{
+  double K1 = 0, K2 = 0; // K1 >= K2 (signed)
+  Vec3 D1 = Vec3::UnitX(), D2 = Vec3::UnitY(), N = Vec3::UnitZ();
+};
+
+/// Fit the height function to the neighbourhood of p in the frame of normal n.
+Curvature Fit(const Vec3& p, const Vec3& n, const std::vector<Vec3>& nbrs)
+{
+  Curvature c;
+  c.N = n;
+  Vec3 t1 = (std::fabs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
+  Vec3 t2 = n.cross(t1);
+  c.D1 = t1;
+  c.D2 = t2;
+  if (nbrs.size() < 5)
+    return c;
+  Eigen::Matrix<double, 5, 5> A = Eigen::Matrix<double, 5, 5>::Zero();
+  Eigen::Matrix<double, 5, 1> b = Eigen::Matrix<double, 5, 1>::Zero();
+  double scale = 0;
+  for (const Vec3& q : nbrs)
+    scale += (q - p).squaredNorm();
+  scale = std::sqrt(scale / nbrs.size()); // condition the system: unit-size coordinates
+  if (!(scale > 0))
+    return c;
+  for (const Vec3& q : nbrs)
+  {
+    const Vec3 d = (q - p) / scale;
+    const double u = d.dot(t1), v = d.dot(t2), w = d.dot(n);
+    Eigen::Matrix<double, 5, 1> row;
+    row << u * u, u * v, v * v, u, v;
+    A += row * row.transpose();
+    b += row * w;
+  }
+  Eigen::LDLT<Eigen::Matrix<double, 5, 5>> ldlt(A);
+  if (ldlt.info() != Eigen::Success || std::fabs(A.determinant()) < 1e-14)
+    return c;
+  const Eigen::Matrix<double, 5, 1> x = ldlt.solve(b);
+  // Back to mm: h(u,v) in scaled units -> second derivatives divide by scale.
+  const double a = x(0) / scale, bb = x(1) / scale, cc = x(2) / scale, d = x(3), e = x(4);
+  const double W = std::sqrt(1 + d * d + e * e);
+  Eigen::Matrix2d I, II;
+  I << 1 + d * d, d * e, d * e, 1 + e * e;
+  II << 2 * a / W, bb / W, bb / W, 2 * cc / W;
+  const Eigen::Matrix2d S = I.inverse() * II;
+  Eigen::EigenSolver<Eigen::Matrix2d> es(S);
+  const Eigen::Vector2d ev = es.eigenvalues().real();
+  const Eigen::Matrix2d evec = es.eigenvectors().real();
+  // Bending away from the normal is positive curvature: h = -k r^2 / 2.
+  const double k0 = -ev(0), k1 = -ev(1);
+  const int i1 = k0 >= k1 ? 0 : 1, i2 = 1 - i1;
+  c.K1 = -ev(i1);
+  c.K2 = -ev(i2);
+  const Vec3 xu = t1 + d * n, xv = t2 + e * n;
+  Vec3 dir = evec(0, i1) * xu + evec(1, i1) * xv;
+  dir -= dir.dot(n) * n;
+  if (dir.norm() > 1e-12)
+  {
+    c.D1 = dir.normalized();
+    c.D2 = n.cross(c.D1);
+  }
+  return c;
+}
+}
+
+amCurvatureMetric::amCurvatureMetric()
+  : Tolerance(0.2)
+  , MinimumSize(0.5)
+  , MaximumSize(20.0)
+  , Gradation(1.3)
+  , Anisotropic(true)
+  , NeighbourhoodRings(2)
+{
+  amThreading::Initialize();
+}
+
+amCurvatureMetric::~amCurvatureMetric() = default;
+
+int amCurvatureMetric::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (this->MinimumSize > this->MaximumSize)
+  {
+    vtkErrorMacro("MinimumSize " << this->MinimumSize << " mm exceeds MaximumSize " << this->MaximumSize << " mm.");
+    return 0;
+  }
+  amSurfaceMesh mesh;
+  std::string why;
+  if (!mesh.Build(input, why))
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
+  const vtkIdType np = mesh.NumberOfPoints();
+  const bool labelled = mesh.Labels.size() == mesh.Triangles.size();
+  auto sheetOf = [&](vtkIdType t) -> long long {
+    if (!labelled)
+      return 0;
+    const int a = std::min(mesh.Labels[t][0], mesh.Labels[t][1]), b = std::max(mesh.Labels[t][0], mesh.Labels[t][1]);
+    return (static_cast<long long>(a) << 32) ^ static_cast<unsigned int>(b);
+  };
+
+  std::vector<Curvature> curv(static_cast<size_t>(np));
+  const int rings = this->NeighbourhoodRings;
+  vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+    std::vector<vtkIdType> frontier, next, seen;
+    std::vector<Vec3> nbrs;
+    std::vector<long long> sheets;
+    for (vtkIdType v = v0; v < v1; ++v)
+    {
+      sheets.clear();
+      for (vtkIdType r = mesh.VertexTriangleStart[v]; r < mesh.VertexTriangleStart[v + 1]; ++r)
+        sheets.push_back(sheetOf(mesh.VertexTriangles[r]));
+      std::sort(sheets.begin(), sheets.end());
+      sheets.erase(std::unique(sheets.begin(), sheets.end()), sheets.end());
+      const Vec3 p(mesh.Points[v].data());
+      Curvature best;
+      double bestK = -1;
+      for (long long sheet : sheets)
+      {
+        Vec3 n = Vec3::Zero();
+        for (vtkIdType r = mesh.VertexTriangleStart[v]; r < mesh.VertexTriangleStart[v + 1]; ++r)
+        {
+          const vtkIdType t = mesh.VertexTriangles[r];
+          if (sheetOf(t) == sheet)
+            n += Vec3(mesh.TriangleNormal(t).data());
+        }
+        if (n.norm() == 0)
+          continue;
+        n.normalize();
+        // Rings of neighbours through the triangles of this sheet.
+        seen.assign(1, v);
+        frontier.assign(1, v);
+        for (int ring = 0; ring < rings; ++ring)
+        {
+          next.clear();
+          for (vtkIdType f : frontier)
+            for (vtkIdType r = mesh.VertexTriangleStart[f]; r < mesh.VertexTriangleStart[f + 1]; ++r)
+            {
+              const vtkIdType t = mesh.VertexTriangles[r];
+              if (sheetOf(t) != sheet)
+                continue;
+              for (vtkIdType q : mesh.Triangles[t])
+                if (std::find(seen.begin(), seen.end(), q) == seen.end())
+                {
+                  seen.push_back(q);
+                  next.push_back(q);
+                }
+            }
+          frontier.swap(next);
+        }
+        nbrs.clear();
+        for (size_t i = 1; i < seen.size(); ++i)
+          nbrs.emplace_back(mesh.Points[seen[i]].data());
+        const Curvature c = Fit(p, n, nbrs);
+        const double k = std::max(std::fabs(c.K1), std::fabs(c.K2));
+        if (k > bestK)
+        {
+          bestK = k;
+          best = c;
+        }
+      }
+      curv[v] = best;
+    }
+  });
+  this->UpdateProgress(0.6);
+
+  // Sizes along the principal directions, then gradation of the smallest one.
+  const double eps = this->Tolerance, hmin = this->MinimumSize, hmax = this->MaximumSize;
+  auto sizeOf = [&](double k) {
+    const double a = std::fabs(k);
+    return a > 0 ? std::min(hmax, std::max(hmin, std::sqrt(8 * eps / a))) : hmax;
+  };
+  std::vector<double> h1(static_cast<size_t>(np)), h2(static_cast<size_t>(np)), cap(static_cast<size_t>(np));
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    h1[v] = sizeOf(curv[v].K1);
+    h2[v] = sizeOf(curv[v].K2);
+    if (!this->Anisotropic)
+      h1[v] = h2[v] = std::min(h1[v], h2[v]);
+    cap[v] = std::min(h1[v], h2[v]);
+  }
+  if (this->Gradation >= 1.0)
+  {
+    const double slope = this->Gradation - 1.0;
+    using Item = std::pair<double, vtkIdType>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (vtkIdType v = 0; v < np; ++v)
+      queue.push({ cap[v], v });
+    while (!queue.empty())
+    {
+      const Item it = queue.top();
+      queue.pop();
+      if (it.first > cap[it.second])
+        continue;
+      const vtkIdType i = it.second;
+      for (vtkIdType r = mesh.RingStart[i]; r < mesh.RingStart[i + 1]; ++r)
+      {
+        const vtkIdType j = mesh.Ring[r];
+        const double L = (Vec3(mesh.Points[i].data()) - Vec3(mesh.Points[j].data())).norm();
+        const double candidate = cap[i] + slope * L;
+        if (candidate < cap[j])
+        {
+          cap[j] = candidate;
+          queue.push({ candidate, j });
+        }
+      }
+    }
+  }
+  this->UpdateProgress(0.8);
+
+  output->ShallowCopy(input);
+  auto make = [&](const char* name, int comps) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(comps);
+    a->SetNumberOfTuples(np);
+    output->GetPointData()->AddArray(a);
+    return a.GetPointer();
+  };
+  vtkDoubleArray* metric = make("Metric", 6);
+  vtkDoubleArray* size = make("Size", 1);
+  vtkDoubleArray* kmax = make("MaximumCurvature", 1);
+  vtkDoubleArray* kmin = make("MinimumCurvature", 1);
+  vtkDoubleArray* kmean = make("MeanCurvature", 1);
+  vtkDoubleArray* kgauss = make("GaussianCurvature", 1);
+  vtkDoubleArray* dmax = make("MaximumDirection", 3);
+  vtkDoubleArray* dmin = make("MinimumDirection", 3);
+  vtkDoubleArray* normals = make("Normals", 3);
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    const Curvature& c = curv[v];
+    const double a = std::min(h1[v], cap[v]), b = std::min(h2[v], cap[v]), n = std::min(a, b);
+    const Eigen::Matrix3d M = c.D1 * c.D1.transpose() / (a * a) + c.D2 * c.D2.transpose() / (b * b) +
+      c.N * c.N.transpose() / (n * n);
+    const double m[6] = { M(0, 0), M(1, 1), M(2, 2), M(0, 1), M(1, 2), M(0, 2) };
+    metric->SetTypedTuple(v, m);
+    size->SetValue(v, n);
+    kmax->SetValue(v, c.K1);
+    kmin->SetValue(v, c.K2);
+    kmean->SetValue(v, 0.5 * (c.K1 + c.K2));
+    kgauss->SetValue(v, c.K1 * c.K2);
+    dmax->SetTypedTuple(v, c.D1.data());
+    dmin->SetTypedTuple(v, c.D2.data());
+    normals->SetTypedTuple(v, c.N.data());
+  }
+  std::ostringstream params;
+  params << "Tolerance=" << eps << " MinimumSize=" << hmin << " MaximumSize=" << hmax
+         << " Gradation=" << this->Gradation << " Anisotropic=" << this->Anisotropic
+         << " NeighbourhoodRings=" << rings;
+  amProvenance::Record(output, input, "amCurvatureMetric", params.str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void amCurvatureMetric::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "MinimumSize: " << this->MinimumSize << "\n";
+  os << indent << "MaximumSize: " << this->MaximumSize << "\n";
+  os << indent << "Gradation: " << this->Gradation << "\n";
+  os << indent << "Anisotropic: " << this->Anisotropic << "\n";
+  os << indent << "NeighbourhoodRings: " << this->NeighbourhoodRings << "\n";
+}
