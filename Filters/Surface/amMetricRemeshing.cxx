@@ -1,0 +1,790 @@
+#include "amMetricRemeshing.h"
+
+#include "amProvenance.h"
+#include "amSurfaceMesh.h"
+#include "amThreading.h"
+#include "amTriangleLocator.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+vtkStandardNewMacro(amMetricRemeshing);
+
+namespace
+{
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+struct Tri
+{
+  int V[3];
+  int Sheet;
+  int Labels[2];
+  bool Alive;
+};
+
+double MinAngle(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 p[3] = { a, b, c };
+  double best = M_PI;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3 u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
+    const double nu = u.norm(), nv = v.norm();
+    if (nu == 0 || nv == 0)
+      return 0;
+    best = std::min(best, std::acos(std::max(-1.0, std::min(1.0, u.dot(v) / (nu * nv)))));
+  }
+  return best;
+}
+
+class Remesher
+{
+public:
+  std::vector<Vec3> P;
+  std::vector<Mat3> M;
+  std::vector<unsigned char> Kind;
+  std::vector<char> VAlive;
+  std::vector<Tri> T;
+  std::vector<std::vector<int>> VT;
+  std::vector<amTriangleLocator> Ref; // per sheet: the input surface
+  std::vector<std::vector<Vec3>> RefSamples; // per sheet: input vertices and centroids
+  std::vector<Vec3> RefPoints;                // the input vertices
+  // Input vertices each vertex stands for, with the interface they must stay near (-1: every
+  // interface around the vertex, for junction-curve points).
+  std::vector<std::vector<std::pair<int, int>>> Cluster;
+  double Eps = 0.2;
+  long long Collapses = 0, Flips = 0, Moves = 0;
+
+  double Length(int a, int b) const
+  {
+    const Vec3 e = this->P[b] - this->P[a];
+    return 0.5 * (std::sqrt(std::max(0.0, e.dot(this->M[a] * e))) + std::sqrt(std::max(0.0, e.dot(this->M[b] * e))));
+  }
+  bool Near(int sheet, const Vec3& x) const
+  {
+    double cl[3];
+    vtkIdType t;
+    return this->Ref[sheet].ClosestPoint(x.data(), cl, t) <= this->Eps * this->Eps;
+  }
+  /// Edge midpoints and centroid of a (new) triangle lie within Eps of its interface.
+  bool TriangleNear(int sheet, const Vec3& a, const Vec3& b, const Vec3& c) const
+  {
+    return this->Near(sheet, (a + b + c) / 3.0) && this->Near(sheet, 0.5 * (a + b)) &&
+      this->Near(sheet, 0.5 * (b + c)) && this->Near(sheet, 0.5 * (c + a));
+  }
+  void Neighbours(int v, std::vector<int>& out) const
+  {
+    out.clear();
+    for (int t : this->VT[v])
+      for (int k = 0; k < 3; ++k)
+        if (this->T[t].V[k] != v)
+          out.push_back(this->T[t].V[k]);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+  void EdgeTriangles(int a, int b, std::vector<int>& out) const
+  {
+    out.clear();
+    for (int t : this->VT[a])
+    {
+      const int* v = this->T[t].V;
+      if (v[0] == b || v[1] == b || v[2] == b)
+        out.push_back(t);
+    }
+  }
+  Vec3 Normal(int t) const
+  {
+    const int* v = this->T[t].V;
+    return (this->P[v[1]] - this->P[v[0]]).cross(this->P[v[2]] - this->P[v[0]]);
+  }
+  void Detach(int t)
+  {
+    this->T[t].Alive = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      auto& l = this->VT[this->T[t].V[k]];
+      l.erase(std::remove(l.begin(), l.end(), t), l.end());
+    }
+  }
+  int AddTriangle(int a, int b, int c, const Tri& like)
+  {
+    Tri t = like;
+    t.V[0] = a;
+    t.V[1] = b;
+    t.V[2] = c;
+    t.Alive = true;
+    this->T.push_back(t);
+    const int id = static_cast<int>(this->T.size()) - 1;
+    this->VT[a].push_back(id);
+    this->VT[b].push_back(id);
+    this->VT[c].push_back(id);
+    return id;
+  }
+
+  /// Half-edge collapse: a disappears onto b.
+  bool Collapse(int a, int b)
+  {
+    if (!this->VAlive[a] || !this->VAlive[b] || this->Kind[a] == amSurfaceMesh::Corner)
+      return false;
+    std::vector<int> edge;
+    this->EdgeTriangles(a, b, edge);
+    if (edge.empty())
+      return false;
+    const bool feature = edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet;
+    if ((this->Kind[a] == amSurfaceMesh::Curve) != feature)
+      return false;
+    // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
+    std::vector<int> na, nb, common, apex;
+    this->Neighbours(a, na);
+    this->Neighbours(b, nb);
+    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+    for (int t : edge)
+      for (int k = 0; k < 3; ++k)
+        if (this->T[t].V[k] != a && this->T[t].V[k] != b)
+          apex.push_back(this->T[t].V[k]);
+    std::sort(apex.begin(), apex.end());
+    apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
+    if (apex != common || apex.size() != edge.size())
+      return false;
+    for (int t : this->VT[a])
+    {
+      if (std::find(edge.begin(), edge.end(), t) != edge.end())
+        continue;
+      Vec3 p[3];
+      int other[2], o = 0;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int v = this->T[t].V[k];
+        p[k] = v == a ? this->P[b] : this->P[v];
+        if (v != a)
+          other[o++] = v;
+      }
+      const Vec3 n0 = this->Normal(t), n1 = (p[1] - p[0]).cross(p[2] - p[0]);
+      if (n1.norm() <= 1e-12 * n0.norm() || n0.normalized().dot(n1.normalized()) < 0.5)
+        return false;
+      if (MinAngle(p[0], p[1], p[2]) < 0.09) // ~5 degrees
+        return false;
+      if (this->Length(b, other[0]) > 4.0 / 3.0 || this->Length(b, other[1]) > 4.0 / 3.0)
+        return false;
+      if (!this->TriangleNear(this->T[t].Sheet, p[0], p[1], p[2]))
+        return false;
+    }
+    // The input vertices a stood for must stay within Eps of the triangles of their interface
+    // around b afterwards (so no patch of an interface can retract or vanish).
+    {
+      std::map<int, std::vector<std::array<Vec3, 3>>> ring;
+      for (int t : this->VT[b])
+        if (std::find(edge.begin(), edge.end(), t) == edge.end())
+          ring[this->T[t].Sheet].push_back(
+            { this->P[this->T[t].V[0]], this->P[this->T[t].V[1]], this->P[this->T[t].V[2]] });
+      for (int t : this->VT[a])
+        if (std::find(edge.begin(), edge.end(), t) == edge.end())
+        {
+          std::array<Vec3, 3> q;
+          for (int k = 0; k < 3; ++k)
+            q[k] = this->T[t].V[k] == a ? this->P[b] : this->P[this->T[t].V[k]];
+          ring[this->T[t].Sheet].push_back(q);
+        }
+      std::vector<int> sheetsOfA;
+      for (int t : this->VT[a])
+        sheetsOfA.push_back(this->T[t].Sheet);
+      std::sort(sheetsOfA.begin(), sheetsOfA.end());
+      sheetsOfA.erase(std::unique(sheetsOfA.begin(), sheetsOfA.end()), sheetsOfA.end());
+      const double eps2 = this->Eps * this->Eps;
+      auto near = [&](const Vec3& x, int sheet) {
+        auto it = ring.find(sheet);
+        if (it == ring.end())
+          return false;
+        double cl[3];
+        for (const auto& q : it->second)
+          if (amTriangleLocator::ClosestPointOnTriangle(x.data(), q[0].data(), q[1].data(), q[2].data(), cl) <= eps2)
+            return true;
+        return false;
+      };
+      for (const auto& entry : this->Cluster[a])
+      {
+        const Vec3& x = this->RefPoints[entry.first];
+        if (entry.second >= 0)
+        {
+          if (!near(x, entry.second))
+            return false;
+        }
+        else
+          for (int sheet : sheetsOfA)
+            if (!near(x, sheet))
+              return false;
+      }
+    }
+    for (int t : edge)
+      this->Detach(t);
+    this->Cluster[b].insert(this->Cluster[b].end(), this->Cluster[a].begin(), this->Cluster[a].end());
+    std::vector<std::pair<int, int>>().swap(this->Cluster[a]);
+    for (int t : this->VT[a])
+    {
+      for (int k = 0; k < 3; ++k)
+        if (this->T[t].V[k] == a)
+          this->T[t].V[k] = b;
+      this->VT[b].push_back(t);
+    }
+    this->VT[a].clear();
+    this->VAlive[a] = 0;
+    ++this->Collapses;
+    return true;
+  }
+
+  int CollapsePass()
+  {
+    std::vector<std::pair<double, std::pair<int, int>>> cand;
+    for (size_t t = 0; t < this->T.size(); ++t)
+    {
+      if (!this->T[t].Alive)
+        continue;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
+        if (a < b)
+        {
+          const double L = this->Length(a, b);
+          if (L < 0.8)
+            cand.push_back({ L, { a, b } });
+        }
+      }
+    }
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+    int done = 0;
+    for (const auto& c : cand)
+    {
+      const int a = c.second.first, b = c.second.second;
+      if (!this->VAlive[a] || !this->VAlive[b] || this->Length(a, b) >= 0.8)
+        continue;
+      // Remove the less constrained end first.
+      if (this->Kind[a] <= this->Kind[b] ? (this->Collapse(a, b) || this->Collapse(b, a))
+                                         : (this->Collapse(b, a) || this->Collapse(a, b)))
+        ++done;
+    }
+    return done;
+  }
+
+  bool Flip(int a, int b)
+  {
+    std::vector<int> edge;
+    this->EdgeTriangles(a, b, edge);
+    if (edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet)
+      return false;
+    // t1 = (a, b, c), t2 = (b, a, d) in their own orientation.
+    int t1 = edge[0], t2 = edge[1];
+    auto rotateTo = [&](int t, int first, int second) {
+      const int* v = this->T[t].V;
+      for (int k = 0; k < 3; ++k)
+        if (v[k] == first && v[(k + 1) % 3] == second)
+          return v[(k + 2) % 3];
+      return -1;
+    };
+    int c = rotateTo(t1, a, b), d = rotateTo(t2, b, a);
+    if (c < 0 || d < 0)
+    {
+      std::swap(t1, t2);
+      c = rotateTo(t1, a, b);
+      d = rotateTo(t2, b, a);
+      if (c < 0 || d < 0)
+        return false; // inconsistent orientation: leave it
+    }
+    if (c == d)
+      return false;
+    std::vector<int> nc;
+    this->Neighbours(c, nc);
+    if (std::binary_search(nc.begin(), nc.end(), d))
+      return false;
+    const Vec3 &pa = this->P[a], &pb = this->P[b], &pc = this->P[c], &pd = this->P[d];
+    const double before = std::min(MinAngle(pa, pb, pc), MinAngle(pb, pa, pd));
+    const double after = std::min(MinAngle(pa, pd, pc), MinAngle(pd, pb, pc));
+    if (after <= before + 1e-3)
+      return false;
+    const Vec3 n0 = (this->Normal(t1).normalized() + this->Normal(t2).normalized()).normalized();
+    const Vec3 n1 = (pd - pa).cross(pc - pa), n2 = (pb - pd).cross(pc - pd);
+    if (n1.norm() == 0 || n2.norm() == 0 || n1.normalized().dot(n0) < 0.9 || n2.normalized().dot(n0) < 0.9)
+      return false;
+    const int sheet = this->T[t1].Sheet;
+    if (!this->TriangleNear(sheet, pa, pd, pc) || !this->TriangleNear(sheet, pd, pb, pc))
+      return false;
+    const Tri like = this->T[t1];
+    this->Detach(t1);
+    this->Detach(t2);
+    this->AddTriangle(a, d, c, like);
+    this->AddTriangle(d, b, c, like);
+    ++this->Flips;
+    return true;
+  }
+
+  int FlipPass()
+  {
+    std::vector<std::pair<int, int>> edges;
+    for (size_t t = 0; t < this->T.size(); ++t)
+      if (this->T[t].Alive)
+        for (int k = 0; k < 3; ++k)
+        {
+          const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
+          edges.push_back({ std::min(a, b), std::max(a, b) });
+        }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    int done = 0;
+    for (const auto& e : edges)
+      done += this->Flip(e.first, e.second);
+    return done;
+  }
+
+  int RelaxPass()
+  {
+    int done = 0;
+    std::vector<int> ring;
+    for (size_t v = 0; v < this->P.size(); ++v)
+    {
+      if (!this->VAlive[v] || this->Kind[v] != amSurfaceMesh::Surface || this->VT[v].empty())
+        continue;
+      this->Neighbours(static_cast<int>(v), ring);
+      Vec3 centroid = Vec3::Zero(), n = Vec3::Zero();
+      for (int q : ring)
+        centroid += this->P[q];
+      centroid /= static_cast<double>(ring.size());
+      for (int t : this->VT[v])
+        n += this->Normal(t);
+      if (n.norm() == 0)
+        continue;
+      n.normalize();
+      Vec3 x = this->P[v] + 0.5 * ((centroid - this->P[v]) - (centroid - this->P[v]).dot(n) * n);
+      const int sheet = this->T[this->VT[v][0]].Sheet;
+      double cl[3];
+      vtkIdType tri;
+      this->Ref[sheet].ClosestPoint(x.data(), cl, tri);
+      x = Vec3(cl);
+      double before = M_PI, after = M_PI;
+      bool ok = true;
+      for (int t : this->VT[v])
+      {
+        Vec3 p[3], q[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          p[k] = this->P[this->T[t].V[k]];
+          q[k] = this->T[t].V[k] == static_cast<int>(v) ? x : p[k];
+        }
+        before = std::min(before, MinAngle(p[0], p[1], p[2]));
+        after = std::min(after, MinAngle(q[0], q[1], q[2]));
+        const Vec3 n0 = (p[1] - p[0]).cross(p[2] - p[0]), n1 = (q[1] - q[0]).cross(q[2] - q[0]);
+        if (n1.norm() == 0 || n0.normalized().dot(n1.normalized()) < 0.7)
+        {
+          ok = false;
+          break;
+        }
+      }
+      if (!ok || after < before)
+        continue;
+      bool near = true;
+      for (int t : this->VT[v])
+      {
+        Vec3 q[3];
+        for (int k = 0; k < 3; ++k)
+          q[k] = this->T[t].V[k] == static_cast<int>(v) ? x : this->P[this->T[t].V[k]];
+        if (!this->TriangleNear(this->T[t].Sheet, q[0], q[1], q[2]))
+        {
+          near = false;
+          break;
+        }
+      }
+      if (!near)
+        continue;
+      this->P[v] = x;
+      ++done;
+      ++this->Moves;
+    }
+    return done;
+  }
+
+  /// The two-sided distance per interface; fills the points to insert where it exceeds Eps.
+  double Measure(double& upperBound, std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf)
+  {
+    edgeOf.clear();
+    const int nSheets = static_cast<int>(this->Ref.size());
+    std::vector<amTriangleLocator> cur(static_cast<size_t>(nSheets));
+    std::vector<std::vector<int>> ids(static_cast<size_t>(nSheets));
+    {
+      std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets));
+      std::vector<std::array<double, 3>> pts(this->P.size());
+      for (size_t i = 0; i < this->P.size(); ++i)
+        pts[i] = { this->P[i].x(), this->P[i].y(), this->P[i].z() };
+      for (size_t t = 0; t < this->T.size(); ++t)
+        if (this->T[t].Alive)
+        {
+          tris[this->T[t].Sheet].push_back({ this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] });
+          ids[this->T[t].Sheet].push_back(static_cast<int>(t));
+        }
+      for (int s = 0; s < nSheets; ++s)
+        cur[s].Build(pts, tris[s]);
+    }
+    double worst = 0, gap = 0;
+    insert.clear();
+    std::vector<char> used(this->T.size(), 0);
+    const double eps2 = this->Eps * this->Eps;
+    // Input -> remeshed.
+    for (int s = 0; s < nSheets; ++s)
+    {
+      const auto& samples = this->RefSamples[s];
+      std::vector<double> d2(samples.size());
+      std::vector<vtkIdType> at(samples.size());
+      vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType i0, vtkIdType i1) {
+        double cl[3];
+        for (vtkIdType i = i0; i < i1; ++i)
+          d2[i] = cur[s].ClosestPoint(samples[i].data(), cl, at[i]);
+      });
+      for (size_t i = 0; i < samples.size(); ++i)
+      {
+        worst = std::max(worst, std::sqrt(d2[i]));
+        if (d2[i] > eps2 && at[i] >= 0)
+        {
+          const int t = ids[s][at[i]];
+          if (!used[t])
+          {
+            used[t] = 1;
+            insert.push_back({ t, samples[i] });
+            edgeOf.push_back(-1);
+          }
+        }
+      }
+    }
+    // Remeshed -> input: a grid of points on every triangle, spacing at most Eps.
+    std::vector<int> alive;
+    for (size_t t = 0; t < this->T.size(); ++t)
+      if (this->T[t].Alive)
+        alive.push_back(static_cast<int>(t));
+    std::vector<double> triWorst(alive.size()), triGap(alive.size());
+    std::vector<Vec3> triFar(alive.size());
+    std::vector<int> triEdge(alive.size(), -1); // the far sample lies on edge k (V[k], V[k+1]), or -1
+    vtkSMPTools::For(0, static_cast<vtkIdType>(alive.size()), [&](vtkIdType i0, vtkIdType i1) {
+      double cl[3];
+      vtkIdType tt;
+      for (vtkIdType i = i0; i < i1; ++i)
+      {
+        const Tri& t = this->T[alive[i]];
+        const Vec3 &a = this->P[t.V[0]], &b = this->P[t.V[1]], &c = this->P[t.V[2]];
+        const double longest = std::max({ (b - a).norm(), (c - b).norm(), (a - c).norm() });
+        // Spacing Eps, at most 12 intervals per edge (the gap enters the upper bound).
+        const int n = std::min(12, std::max(2, static_cast<int>(std::ceil(longest / this->Eps))));
+        double w = 0;
+        Vec3 far = a;
+        int onEdge = -1;
+        for (int u = 0; u <= n; ++u)
+          for (int v = 0; u + v <= n; ++v)
+          {
+            const Vec3 x = a + (b - a) * (static_cast<double>(u) / n) + (c - a) * (static_cast<double>(v) / n);
+            const double d = this->Ref[t.Sheet].ClosestPoint(x.data(), cl, tt);
+            if (d > w)
+            {
+              w = d;
+              far = Vec3(cl);
+              onEdge = v == 0 ? 0 : (u + v == n ? 1 : (u == 0 ? 2 : -1));
+            }
+          }
+        triWorst[i] = std::sqrt(w);
+        triFar[i] = far;
+        triEdge[i] = onEdge;
+        triGap[i] = longest / n / std::sqrt(3.0);
+      }
+    });
+    for (size_t i = 0; i < alive.size(); ++i)
+    {
+      worst = std::max(worst, triWorst[i]);
+      gap = std::max(gap, triGap[i]);
+      if (triWorst[i] > this->Eps && !used[alive[i]])
+      {
+        used[alive[i]] = 1;
+        insert.push_back({ alive[i], triFar[i] });
+        edgeOf.push_back(triEdge[i]);
+      }
+    }
+    upperBound = worst + gap;
+    return worst;
+  }
+
+  /// Split edge k of triangle t (and every triangle on that edge) at x.
+  void SplitEdge(int t, int k, const Vec3& x)
+  {
+    if (!this->T[t].Alive)
+      return;
+    const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
+    std::vector<int> edge;
+    this->EdgeTriangles(a, b, edge);
+    const bool feature = edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet;
+    const int v = static_cast<int>(this->P.size());
+    this->P.push_back(x);
+    this->M.push_back(0.5 * (this->M[a] + this->M[b]));
+    this->Kind.push_back(feature ? amSurfaceMesh::Curve : amSurfaceMesh::Surface);
+    this->VAlive.push_back(1);
+    this->VT.emplace_back();
+    this->Cluster.emplace_back();
+    for (int e : edge)
+    {
+      const Tri like = this->T[e];
+      int i = 0;
+      while (!(like.V[i] == a || like.V[i] == b) || !(like.V[(i + 1) % 3] == a || like.V[(i + 1) % 3] == b))
+        ++i;
+      const int p = like.V[i], q = like.V[(i + 1) % 3], c = like.V[(i + 2) % 3];
+      this->Detach(e);
+      this->AddTriangle(p, v, c, like);
+      this->AddTriangle(v, q, c, like);
+    }
+  }
+
+  /// Insert x into triangle t (1 -> 3), then improve the neighbourhood by flips.
+  void Insert(int t, const Vec3& x)
+  {
+    if (!this->T[t].Alive)
+      return;
+    const Tri like = this->T[t];
+    const int v = static_cast<int>(this->P.size());
+    this->P.push_back(x);
+    Mat3 m = (this->M[like.V[0]] + this->M[like.V[1]] + this->M[like.V[2]]) / 3.0;
+    this->M.push_back(m);
+    this->Kind.push_back(amSurfaceMesh::Surface);
+    this->VAlive.push_back(1);
+    this->VT.emplace_back();
+    this->Cluster.emplace_back();
+    this->Detach(t);
+    this->AddTriangle(like.V[0], like.V[1], v, like);
+    this->AddTriangle(like.V[1], like.V[2], v, like);
+    this->AddTriangle(like.V[2], like.V[0], v, like);
+    for (int k = 0; k < 3; ++k)
+      this->Flip(like.V[k], like.V[(k + 1) % 3]);
+  }
+};
+}
+
+amMetricRemeshing::amMetricRemeshing()
+  : Tolerance(0.2)
+  , TargetSize(0.0)
+  , NumberOfIterations(4)
+  , Hausdorff(0)
+  , HausdorffUpperBound(0)
+  , InsertedPoints(0)
+{
+  amThreading::Initialize();
+}
+
+amMetricRemeshing::~amMetricRemeshing() = default;
+
+int amMetricRemeshing::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  amSurfaceMesh mesh;
+  std::string why;
+  if (!mesh.Build(input, why))
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
+  vtkDataArray* metric = input->GetPointData()->GetArray("Metric");
+  if (this->TargetSize <= 0 && (!metric || metric->GetNumberOfComponents() != 6))
+  {
+    vtkErrorMacro("The input has no 6-component point data \"Metric\" (run Curvature Metric first) and no "
+                  "TargetSize is set.");
+    return 0;
+  }
+  if (mesh.Labels.empty())
+    for (size_t e = 0; e < mesh.Edges.size(); ++e)
+      if (mesh.EdgeTriangleStart[e + 1] - mesh.EdgeTriangleStart[e] > 2)
+      {
+        vtkErrorMacro("The surface has a non-manifold edge (" << mesh.Edges[e][0] << ", " << mesh.Edges[e][1]
+                                                             << ") and no \"Labels\" to tell its interfaces apart.");
+        return 0;
+      }
+
+  Remesher r;
+  r.Eps = this->Tolerance;
+  const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
+  r.P.resize(static_cast<size_t>(np));
+  r.M.resize(static_cast<size_t>(np));
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    r.P[v] = Vec3(mesh.Points[v].data());
+    if (this->TargetSize > 0)
+      r.M[v] = Mat3::Identity() / (this->TargetSize * this->TargetSize);
+    else
+    {
+      double m[6];
+      metric->GetTuple(v, m);
+      r.M[v] << m[0], m[3], m[5], m[3], m[1], m[4], m[5], m[4], m[2];
+      if (!r.M[v].allFinite())
+      {
+        vtkErrorMacro("The metric of point " << v << " is not finite.");
+        return 0;
+      }
+    }
+  }
+  r.Kind = mesh.Kind;
+  r.RefPoints = r.P;
+  r.Cluster.resize(static_cast<size_t>(np));
+  for (vtkIdType v = 0; v < np; ++v)
+    r.Cluster[v].assign(1,
+      { static_cast<int>(v), -1 }); // the interface is set below for surface vertices
+  r.VAlive.assign(static_cast<size_t>(np), 1);
+  r.VT.resize(static_cast<size_t>(np));
+  std::map<std::pair<int, int>, int> sheetIds;
+  const bool labelled = !mesh.Labels.empty();
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    Tri tri;
+    for (int k = 0; k < 3; ++k)
+      tri.V[k] = static_cast<int>(mesh.Triangles[t][k]);
+    tri.Labels[0] = labelled ? mesh.Labels[t][0] : 0;
+    tri.Labels[1] = labelled ? mesh.Labels[t][1] : 0;
+    const std::pair<int, int> key(std::min(tri.Labels[0], tri.Labels[1]), std::max(tri.Labels[0], tri.Labels[1]));
+    auto it = sheetIds.emplace(key, static_cast<int>(sheetIds.size())).first;
+    tri.Sheet = it->second;
+    tri.Alive = true;
+    r.T.push_back(tri);
+    for (int k = 0; k < 3; ++k)
+      r.VT[tri.V[k]].push_back(static_cast<int>(t));
+  }
+  for (vtkIdType v = 0; v < np; ++v)
+    if (r.Kind[v] == amSurfaceMesh::Surface && !r.VT[v].empty())
+      r.Cluster[v][0].second = r.T[r.VT[v][0]].Sheet;
+  // The input surface of every interface: locator and the samples of the final check.
+  const int nSheets = static_cast<int>(sheetIds.size());
+  r.Ref.resize(static_cast<size_t>(nSheets));
+  r.RefSamples.resize(static_cast<size_t>(nSheets));
+  {
+    std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets));
+    std::vector<std::vector<char>> seen(static_cast<size_t>(nSheets));
+    for (const Tri& t : r.T)
+    {
+      tris[t.Sheet].push_back({ t.V[0], t.V[1], t.V[2] });
+      r.RefSamples[t.Sheet].push_back((r.P[t.V[0]] + r.P[t.V[1]] + r.P[t.V[2]]) / 3.0);
+      auto& s = seen[t.Sheet];
+      if (s.empty())
+        s.assign(static_cast<size_t>(np), 0);
+      for (int k = 0; k < 3; ++k)
+        if (!s[t.V[k]])
+        {
+          s[t.V[k]] = 1;
+          r.RefSamples[t.Sheet].push_back(r.P[t.V[k]]);
+        }
+    }
+    vtkSMPTools::For(0, nSheets, [&](vtkIdType s0, vtkIdType s1) {
+      for (vtkIdType s = s0; s < s1; ++s)
+        r.Ref[s].Build(mesh.Points, tris[s]);
+    });
+  }
+  this->UpdateProgress(0.05);
+
+  for (int it = 0; it < this->NumberOfIterations; ++it)
+  {
+    for (int pass = 0; pass < 8; ++pass)
+      if (r.CollapsePass() == 0)
+        break;
+    for (int pass = 0; pass < 3; ++pass)
+      if (r.FlipPass() == 0)
+        break;
+    r.RelaxPass();
+    this->UpdateProgress(0.05 + 0.75 * (it + 1) / this->NumberOfIterations);
+  }
+  r.FlipPass();
+  // The guarantee: measure, insert where the bound is exceeded, measure again.
+  std::vector<std::pair<int, Vec3>> insert;
+  std::vector<int> edgeOf;
+  double upper = 0;
+  double h = r.Measure(upper, insert, edgeOf);
+  vtkIdType inserted = 0;
+  for (int round = 0; round < 10 && !insert.empty(); ++round)
+  {
+    for (size_t i = 0; i < insert.size(); ++i)
+    {
+      if (edgeOf[i] >= 0)
+        r.SplitEdge(insert[i].first, edgeOf[i], insert[i].second);
+      else
+        r.Insert(insert[i].first, insert[i].second);
+    }
+    inserted += static_cast<vtkIdType>(insert.size());
+    h = r.Measure(upper, insert, edgeOf);
+  }
+  this->Hausdorff = h;
+  this->HausdorffUpperBound = upper;
+  this->InsertedPoints = inserted;
+  if (h > this->Tolerance)
+    vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance "
+                                                              << this->Tolerance << " mm, after 10 insertion rounds.");
+  this->UpdateProgress(0.95);
+
+  // Output: live vertices and triangles, labels and orientation kept.
+  std::vector<vtkIdType> newId(r.P.size(), -1);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (size_t v = 0; v < r.P.size(); ++v)
+    if (r.VAlive[v] && !r.VT[v].empty())
+    {
+      newId[v] = points->InsertNextPoint(r.P[v].data());
+    }
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfComponents(2);
+  for (const Tri& t : r.T)
+    if (t.Alive)
+    {
+      const vtkIdType ids[3] = { newId[t.V[0]], newId[t.V[1]], newId[t.V[2]] };
+      polys->InsertNextCell(3, ids);
+      labels->InsertNextTypedTuple(t.Labels);
+    }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  if (labelled)
+    output->GetCellData()->AddArray(labels);
+  output->GetFieldData()->PassData(input->GetFieldData());
+  for (const auto& f : { std::make_pair("Hausdorff", h), std::make_pair("HausdorffUpperBound", upper) })
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(f.first);
+    a->InsertNextValue(f.second);
+    output->GetFieldData()->AddArray(a);
+  }
+  std::ostringstream params;
+  params << "Tolerance=" << this->Tolerance << " TargetSize=" << this->TargetSize
+         << " NumberOfIterations=" << this->NumberOfIterations << " Hausdorff=" << h
+         << " InsertedPoints=" << inserted << " Collapses=" << r.Collapses << " Flips=" << r.Flips
+         << " Moves=" << r.Moves;
+  amProvenance::Record(output, input, "amMetricRemeshing", params.str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void amMetricRemeshing::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "TargetSize: " << this->TargetSize << "\n";
+  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+}

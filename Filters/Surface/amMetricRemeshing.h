@@ -1,0 +1,86 @@
+/**
+ * @class   amMetricRemeshing
+ * @brief   Remeshes a (multi-material) triangle surface to unit edge length in a size metric,
+ *          keeping junction curves and labels, with a guaranteed two-sided Hausdorff bound.
+ *
+ * The paper's "Yams" stage. Sizes come from the point-data tensor "Metric" (amCurvatureMetric;
+ * edge length in the metric: sqrt(e^T M e), averaged over the two ends) or, when absent or
+ * TargetSize > 0, from a uniform TargetSize in mm. Each iteration:
+ * 1. half-edge collapses of the edges shorter than 4/5, shortest first: a surface vertex
+ *    collapses along a surface edge, a junction-curve vertex only along its curve, curve ends
+ *    (corners) never; a collapse is refused when it would break the link condition (the surface
+ *    of some region would become non-manifold), flip or nearly flatten a triangle, make an edge
+ *    longer than 4/3, or put a point of a new triangle (edge midpoints, centroid) farther than
+ *    Tolerance from the input surface of the same interface;
+ * 2. edge flips inside an interface that raise the smaller of the two triangles' minimum angles,
+ *    between nearly coplanar triangles, under the same distance check;
+ * 3. tangential relaxation of surface vertices towards the centroid of their ring, projected back
+ *    onto the input surface of their interface (exact closest point), under the same checks.
+ * Junction curves therefore stay exactly on input vertices, and every triangle keeps its
+ * "Labels" pair and orientation.
+ *
+ * Then the two-sided Hausdorff distance to the input is computed (amSurfaceDistance's sampling,
+ * per interface: every input vertex and centroid against the remeshed triangles of its interface,
+ * and a grid of points on each remeshed triangle against the input), and wherever it exceeds
+ * Tolerance the offending input vertex (or the projection of the offending sample) is inserted
+ * into the nearest triangle (or, for a far point on an edge, that edge is split there), until
+ * the bound holds (at most 10 rounds). The achieved value is
+ * stored in field data "Hausdorff" (and "HausdorffUpperBound" with the sampling gap); a warning
+ * says so if the bound could not be reached.
+ */
+#ifndef amMetricRemeshing_h
+#define amMetricRemeshing_h
+
+#include "AnatomeshFiltersSurfaceModule.h" // export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class ANATOMESHFILTERSSURFACE_EXPORT amMetricRemeshing : public vtkPolyDataAlgorithm
+{
+public:
+  static amMetricRemeshing* New();
+  vtkTypeMacro(amMetricRemeshing, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Two-sided Hausdorff bound to the input, mm (default 0.2).
+  vtkSetClampMacro(Tolerance, double, 1e-6, 1e6);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /// Uniform target edge length, mm (default 0: use the "Metric" point data).
+  vtkSetClampMacro(TargetSize, double, 0.0, 1e6);
+  vtkGetMacro(TargetSize, double);
+  ///@}
+
+  ///@{
+  /// Collapse/flip/relax iterations (default 4).
+  vtkSetClampMacro(NumberOfIterations, int, 1, 100);
+  vtkGetMacro(NumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /// Results of the last run.
+  vtkGetMacro(Hausdorff, double);
+  vtkGetMacro(HausdorffUpperBound, double);
+  vtkGetMacro(InsertedPoints, vtkIdType);
+  ///@}
+
+protected:
+  amMetricRemeshing();
+  ~amMetricRemeshing() override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Tolerance;
+  double TargetSize;
+  int NumberOfIterations;
+  double Hausdorff;
+  double HausdorffUpperBound;
+  vtkIdType InsertedPoints;
+
+private:
+  amMetricRemeshing(const amMetricRemeshing&) = delete;
+  void operator=(const amMetricRemeshing&) = delete;
+};
+
+#endif

@@ -1,0 +1,148 @@
+// Metric remeshing: fewer, better triangles; every region still closed and oriented; labels and
+// junctions kept; the Hausdorff bound holds when measured independently.
+#include "amCurvatureMetric.h"
+#include "amLabelSurface.h"
+#include "amMetricRemeshing.h"
+#include "amSurfaceDistance.h"
+#include "amSurfaceSmoothing.h"
+#include "amSurfaceTestUtilities.h"
+#include "amSurfaceTopology.h"
+#include "amTestUtilities.h"
+#include "amThoraxPhantomSource.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkSphereSource.h"
+
+#include <cmath>
+#include <set>
+
+namespace
+{
+/// Fraction of triangles whose smallest angle is at least 'degrees'.
+double AngleFraction(vtkPolyData* pd, double degrees)
+{
+  vtkIdType good = 0, npts;
+  const vtkIdType* ids;
+  for (pd->GetPolys()->InitTraversal(); pd->GetPolys()->GetNextCell(npts, ids);)
+  {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      pd->GetPoint(ids[k], p[k]);
+    double smallest = 180;
+    for (int k = 0; k < 3; ++k)
+    {
+      double u[3], v[3];
+      vtkMath::Subtract(p[(k + 1) % 3], p[k], u);
+      vtkMath::Subtract(p[(k + 2) % 3], p[k], v);
+      smallest = std::min(smallest, vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v)));
+    }
+    good += smallest >= degrees;
+  }
+  return static_cast<double>(good) / pd->GetNumberOfCells();
+}
+
+void ExpectClosedRegions(vtkPolyData* pd)
+{
+  std::vector<amSurfaceTopology::Region> regions;
+  std::string why;
+  ASSERT_TRUE(amSurfaceTopology::Analyse(pd, regions, why)) << why;
+  for (const auto& r : regions)
+  {
+    EXPECT_EQ(r.BoundaryEdges, 0) << r.Label;
+    EXPECT_EQ(r.NonManifoldEdges, 0) << r.Label;
+    EXPECT_EQ(r.MisorientedEdges, 0) << r.Label;
+  }
+}
+}
+
+TEST(MetricRemeshing, TwoMaterialBallUniformSize)
+{
+  // A ball of radius 12 voxels split into labels 1 (x < 0) and 2: a junction circle.
+  const double origin[3] = { -15.5, -15.5, -15.5 };
+  auto img = amTest::LabelMap(32, 32, 32, 1.0, origin, [](double x, double y, double z) {
+    return x * x + y * y + z * z < 144 ? (x < 0 ? 1 : 2) : 0;
+  });
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputData(img);
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputConnection(ls->GetOutputPort());
+  vtkNew<amMetricRemeshing> rm;
+  rm->SetInputConnection(sm->GetOutputPort());
+  rm->SetTargetSize(3.0);
+  rm->SetTolerance(0.3);
+  rm->Update();
+  vtkPolyData* out = rm->GetOutput();
+  sm->Update();
+  const vtkIdType before = sm->GetOutput()->GetNumberOfCells(), after = out->GetNumberOfCells();
+  EXPECT_LT(after * 5, before);
+  ExpectClosedRegions(out);
+  EXPECT_LE(rm->GetHausdorff(), 0.3);
+  // Measured independently with denser sampling: within the reported upper bound.
+  vtkNew<amSurfaceDistance> d;
+  d->SetInputConnection(0, rm->GetOutputPort());
+  d->SetInputConnection(1, sm->GetOutputPort());
+  d->SetSamplingDistance(0.05);
+  d->Update();
+  EXPECT_LE(d->GetHausdorff(), rm->GetHausdorffUpperBound() + 1e-9);
+  EXPECT_LE(d->GetHausdorff(), 0.3 + 0.05);
+  EXPECT_GT(AngleFraction(out, 20), 0.95);
+  // Labels kept: exactly the pairs of the input, and the field data says what was achieved.
+  std::set<std::pair<int, int>> pairs;
+  vtkDataArray* labels = out->GetCellData()->GetArray("Labels");
+  ASSERT_NE(labels, nullptr);
+  for (vtkIdType t = 0; t < out->GetNumberOfCells(); ++t)
+    pairs.insert({ static_cast<int>(labels->GetComponent(t, 0)), static_cast<int>(labels->GetComponent(t, 1)) });
+  EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 1, 0 }, { 2, 0 }, { 2, 1 } }));
+  ASSERT_NE(out->GetFieldData()->GetArray("Hausdorff"), nullptr);
+  EXPECT_NEAR(out->GetFieldData()->GetArray("Hausdorff")->GetComponent(0, 0), rm->GetHausdorff(), 1e-12);
+}
+
+TEST(MetricRemeshing, PhantomWithCurvatureMetric)
+{
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(2, 2, 2);
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputConnection(src->GetOutputPort(1));
+  ls->SetComputeTopology(false);
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputConnection(ls->GetOutputPort());
+  vtkNew<amCurvatureMetric> cm;
+  cm->SetInputConnection(sm->GetOutputPort());
+  cm->SetTolerance(0.5);
+  cm->SetMinimumSize(2);
+  cm->SetAnisotropic(false);
+  vtkNew<amMetricRemeshing> rm;
+  rm->SetInputConnection(cm->GetOutputPort());
+  rm->SetTolerance(0.5);
+  rm->Update();
+  sm->Update();
+  vtkPolyData* out = rm->GetOutput();
+  EXPECT_LT(out->GetNumberOfCells() * 5, sm->GetOutput()->GetNumberOfCells());
+  EXPECT_LE(rm->GetHausdorff(), 0.5);
+  ExpectClosedRegions(out);
+  EXPECT_GT(AngleFraction(out, 20), 0.95);
+  // Every region is still there.
+  std::vector<amSurfaceTopology::Region> regions;
+  std::string why;
+  ASSERT_TRUE(amSurfaceTopology::Analyse(out, regions, why));
+  EXPECT_EQ(regions.size(), 10u);
+}
+
+TEST(MetricRemeshing, BadInput)
+{
+  vtkNew<amTest::ErrorCatcher> errors;
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<amMetricRemeshing> rm;
+  errors->Watch(rm);
+  errors->Watch(rm->GetExecutive());
+  rm->SetInputConnection(sphere->GetOutputPort());
+  rm->Update();
+  EXPECT_TRUE(errors->ErrorContains("no 6-component point data \"Metric\"")) << errors->AllErrors();
+}
