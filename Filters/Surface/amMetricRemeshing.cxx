@@ -70,7 +70,7 @@ public:
   std::vector<Tri> T;
   std::vector<std::vector<int>> VT;
   std::vector<amTriangleLocator> Ref; // per sheet: the input surface
-  std::vector<std::vector<Vec3>> RefSamples; // per sheet: input vertices and centroids
+  std::vector<std::vector<Vec3>> RefSamples; // per sheet: input vertices, edge midpoints, centroids
   std::vector<Vec3> RefPoints;                // the input vertices
   // Input vertices each vertex stands for, with the interface they must stay near (-1: every
   // interface around the vertex, for junction-curve points).
@@ -684,6 +684,8 @@ int amMetricRemeshing::RequestData(
     {
       tris[t.Sheet].push_back({ t.V[0], t.V[1], t.V[2] });
       r.RefSamples[t.Sheet].push_back((r.P[t.V[0]] + r.P[t.V[1]] + r.P[t.V[2]]) / 3.0);
+      for (int k = 0; k < 3; ++k) // interior edges twice, junction edges once per interface
+        r.RefSamples[t.Sheet].push_back(0.5 * (r.P[t.V[k]] + r.P[t.V[(k + 1) % 3]]));
       auto& s = seen[t.Sheet];
       if (s.empty())
         s.assign(static_cast<size_t>(np), 0);

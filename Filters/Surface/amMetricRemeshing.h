@@ -20,7 +20,8 @@
  * "Labels" pair and orientation.
  *
  * Then the two-sided Hausdorff distance to the input is computed (amSurfaceDistance's sampling,
- * per interface: every input vertex and centroid against the remeshed triangles of its interface,
+ * per interface: every input vertex, edge midpoint and centroid against the remeshed triangles of
+ * its interface,
  * and a grid of points on each remeshed triangle against the input), and wherever it exceeds
  * Tolerance the offending input vertex (or the projection of the offending sample) is inserted
  * into the nearest triangle (or, for a far point on an edge, that edge is split there), until

@@ -71,6 +71,9 @@ def _describe(data):
     elif data.IsA("vtkDataSet"):
         lines.append("      %s: %d points, %d cells" % (data.GetClassName(), data.GetNumberOfPoints(),
                                                        data.GetNumberOfCells()))
+        hausdorff = data.GetFieldData().GetArray("Hausdorff")
+        if hausdorff is not None:
+            lines.append("      two-sided Hausdorff distance to its input surface: %.3f mm" % hausdorff.GetValue(0))
     return lines
 
 

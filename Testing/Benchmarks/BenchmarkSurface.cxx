@@ -1,0 +1,209 @@
+// Surface benchmarks: label map -> surface (amLabelSurface against the VTK filters a user would
+// otherwise pick), smoothing, curvature metric and metric remeshing (against vtkQuadricDecimation
+// at the same triangle count, on accuracy and triangle quality). Phantom at 1 mm and 0.5 mm and
+// the frog. Prints seconds, triangles, Hausdorff distances and the process's peak memory.
+// Run: build/bin/BenchmarkSurface [--benchmark_filter=...]
+#include "amCurvatureMetric.h"
+#include "amImageReader.h"
+#include "amLabelSurface.h"
+#include "amMetricRemeshing.h"
+#include "amSurfaceDistance.h"
+#include "amSurfaceSmoothing.h"
+#include "amThoraxPhantomSource.h"
+
+#include "vtkCellArray.h"
+#include "vtkDiscreteFlyingEdges3D.h"
+#include "vtkDiscreteMarchingCubes.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkQuadricDecimation.h"
+#include "vtkSMPTools.h"
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <map>
+#include <sys/resource.h>
+#include <sys/stat.h>
+
+namespace
+{
+double PeakMegabytes()
+{
+  struct rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;
+}
+
+vtkImageData* Labels(int which) // 10: phantom 1 mm, 5: phantom 0.5 mm, 0: frog
+{
+  static std::map<int, vtkSmartPointer<vtkImageData>> cache;
+  auto& img = cache[which];
+  if (!img)
+  {
+    img = vtkSmartPointer<vtkImageData>::New();
+    if (which == 0)
+    {
+      const std::string path = std::string(ANATOMESH_SHARED_DATA) + "/vtk_frog_tissue_labels/frogtissue.mhd";
+      struct stat st;
+      if (::stat(path.c_str(), &st) != 0)
+        return nullptr;
+      vtkNew<amImageReader> r;
+      r->SetFileName(path.c_str());
+      r->Update();
+      img->ShallowCopy(r->GetOutput());
+    }
+    else
+    {
+      vtkNew<amThoraxPhantomSource> src;
+      src->SetSpacing(which / 10.0, which / 10.0, which / 10.0);
+      src->Update();
+      img->ShallowCopy(src->GetOutput(1));
+    }
+  }
+  return img;
+}
+
+int MaxLabel(vtkImageData* img)
+{
+  double range[2];
+  img->GetScalarRange(range);
+  return static_cast<int>(range[1]);
+}
+
+void Extract(benchmark::State& state)
+{
+  const int which = static_cast<int>(state.range(0)), method = static_cast<int>(state.range(1));
+  vtkImageData* img = Labels(which);
+  if (!img)
+  {
+    state.SkipWithError("../shared/data/vtk_frog_tissue_labels is absent");
+    return;
+  }
+  vtkSMPTools::SetBackend("STDThread");
+  vtkIdType triangles = 0;
+  for (auto _ : state)
+  {
+    vtkSmartPointer<vtkPolyDataAlgorithm> f;
+    if (method == 0)
+    {
+      auto ls = vtkSmartPointer<amLabelSurface>::New();
+      ls->SetComputeTopology(false);
+      f = ls;
+    }
+    else if (method == 1)
+    {
+      auto d = vtkSmartPointer<vtkDiscreteFlyingEdges3D>::New();
+      d->GenerateValues(MaxLabel(img), 1, MaxLabel(img));
+      d->ComputeNormalsOff();
+      d->ComputeGradientsOff();
+      d->ComputeScalarsOn();
+      f = d;
+    }
+    else
+    {
+      auto d = vtkSmartPointer<vtkDiscreteMarchingCubes>::New();
+      d->GenerateValues(MaxLabel(img), 1, MaxLabel(img));
+      d->ComputeNormalsOff();
+      d->ComputeGradientsOff();
+      f = d;
+    }
+    f->SetInputData(img);
+    f->Update();
+    triangles = f->GetOutput()->GetNumberOfCells();
+  }
+  state.counters["triangles"] = static_cast<double>(triangles);
+  state.counters["peak_MB"] = PeakMegabytes();
+}
+// (data, method): data 10 = phantom 1 mm, 5 = phantom 0.5 mm, 0 = frog;
+// method 0 = amLabelSurface, 1 = vtkDiscreteFlyingEdges3D, 2 = vtkDiscreteMarchingCubes.
+BENCHMARK(Extract)
+  ->ArgsProduct({ { 10, 5, 0 }, { 0, 1, 2 } })
+  ->Unit(benchmark::kSecond)
+  ->Iterations(1)
+  ->UseRealTime();
+
+/// Phantom at 1 mm: smoothing, metric and remeshing (eps 0.2 mm); then vtkQuadricDecimation of
+/// the smoothed surface to the same triangle count. Both measured against the smoothed surface.
+void Remesh(benchmark::State& state)
+{
+  const bool quadric = state.range(0) == 1;
+  static vtkSmartPointer<vtkPolyData> smooth;
+  static vtkIdType remeshedTriangles = 0;
+  vtkSMPTools::SetBackend("STDThread");
+  if (!smooth)
+  {
+    vtkNew<amLabelSurface> ls;
+    ls->SetInputData(Labels(10));
+    ls->SetComputeTopology(false);
+    vtkNew<amSurfaceSmoothing> sm;
+    sm->SetInputConnection(ls->GetOutputPort());
+    sm->Update();
+    smooth = sm->GetOutput();
+  }
+  vtkSmartPointer<vtkPolyData> result;
+  double secondsMetric = 0;
+  for (auto _ : state)
+  {
+    if (!quadric)
+    {
+      vtkNew<amCurvatureMetric> cm;
+      cm->SetInputData(smooth);
+      cm->SetTolerance(0.2);
+      cm->SetMinimumSize(1.0);
+      cm->SetAnisotropic(false);
+      const auto t0 = std::chrono::steady_clock::now();
+      cm->Update();
+      secondsMetric = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      vtkNew<amMetricRemeshing> rm;
+      rm->SetInputConnection(cm->GetOutputPort());
+      rm->SetTolerance(0.2);
+      rm->Update();
+      result = rm->GetOutput();
+      remeshedTriangles = result->GetNumberOfCells();
+    }
+    else
+    {
+      vtkNew<vtkQuadricDecimation> q;
+      q->SetInputData(smooth);
+      q->SetTargetReduction(1.0 - static_cast<double>(remeshedTriangles ? remeshedTriangles : 227000) /
+          smooth->GetNumberOfCells());
+      q->Update();
+      result = q->GetOutput();
+    }
+  }
+  vtkNew<amSurfaceDistance> d;
+  d->SetInputData(0, result);
+  d->SetInputData(1, smooth);
+  d->Update();
+  vtkIdType good = 0, npts;
+  const vtkIdType* ids;
+  for (result->GetPolys()->InitTraversal(); result->GetPolys()->GetNextCell(npts, ids);)
+  {
+    double p[3][3], smallest = 180;
+    for (int k = 0; k < 3; ++k)
+      result->GetPoint(ids[k], p[k]);
+    for (int k = 0; k < 3; ++k)
+    {
+      double u[3], v[3];
+      vtkMath::Subtract(p[(k + 1) % 3], p[k], u);
+      vtkMath::Subtract(p[(k + 2) % 3], p[k], v);
+      smallest = std::min(smallest, vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v)));
+    }
+    good += smallest >= 20;
+  }
+  state.counters["input_triangles"] = static_cast<double>(smooth->GetNumberOfCells());
+  state.counters["triangles"] = static_cast<double>(result->GetNumberOfCells());
+  state.counters["hausdorff_mm"] = d->GetHausdorff();
+  state.counters["mean_mm"] = 0.5 * (d->GetMeanAToB() + d->GetMeanBToA());
+  state.counters["angles_ge_20"] = static_cast<double>(good) / result->GetNumberOfCells();
+  state.counters["metric_s"] = secondsMetric;
+  state.counters["peak_MB"] = PeakMegabytes();
+}
+// 0 = amCurvatureMetric + amMetricRemeshing, 1 = vtkQuadricDecimation to the same count.
+BENCHMARK(Remesh)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+}
+
+BENCHMARK_MAIN();
