@@ -34,7 +34,7 @@ print("%5s %9s %9s %6s %5s %8s %12s %12s" % ("label", "triangles", "vertices", "
                                             "bad", "volume mm3", "voxels mm3"))
 for r in range(table.GetNumberOfRows()):
     row = {table.GetColumnName(c): table.GetValue(r, c).ToDouble() for c in range(table.GetNumberOfColumns())}
-    bad = row["BoundaryEdges"] + row["NonManifoldEdges"] + row["MisorientedEdges"]
+    bad = row["BoundaryEdges"] + row["NonManifoldEdges"] + row["MisorientedEdges"] + row["NonManifoldVertices"]
     ok = ok and bad == 0
     print("%5d %9d %9d %6d %5d %8d %12.0f %12.0f" % (row["Label"], row["Triangles"], row["Vertices"],
           row["EulerCharacteristic"], row["Components"], bad, row["Volume"], row["VoxelVolume"]))
@@ -54,6 +54,7 @@ for name, port in (("surface_voxels", surface.GetOutputPort(0)), ("surface_smoot
     w = vtkXMLPolyDataWriter()
     w.SetInputConnection(port)
     w.SetFileName(os.path.join(out, name + ".vtp"))
+    w.SetDataModeToBinary()  # appended data is unreadable with Debian 12's expat (see README)
     w.Write()
 medit = anatomesh.amMeditWriter()
 medit.SetInputConnection(smooth.GetOutputPort())

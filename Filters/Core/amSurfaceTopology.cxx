@@ -22,7 +22,8 @@ namespace
 struct DirectedEdge
 {
   vtkIdType Lo, Hi;
-  int Forward; // 1 when traversed Lo -> Hi
+  int Forward;           // 1 when traversed Lo -> Hi
+  vtkIdType CornerLo, CornerHi; // corner nodes (3 * local triangle + k) of Lo and Hi
   bool operator<(const DirectedEdge& o) const
   {
     return this->Lo != o.Lo ? this->Lo < o.Lo : (this->Hi != o.Hi ? this->Hi < o.Hi : this->Forward < o.Forward);
@@ -127,6 +128,7 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
         const vtkIdType t0 = ts[0] >= 0 ? ts[0] : -ts[0] - 1;
         points->GetPoint(tri[t0][0], ref);
       }
+      vtkIdType local = 0;
       for (vtkIdType code : ts)
       {
         const bool reversed = code < 0;
@@ -140,13 +142,15 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
             p[k][d] -= ref[d];
           verts.push_back(v[k]);
           const vtkIdType a = v[k], b = v[(k + 1) % 3];
-          edges.push_back({ std::min(a, b), std::max(a, b), a < b ? 1 : 0 });
+          const vtkIdType ca = 3 * local + k, cb = 3 * local + (k + 1) % 3;
+          edges.push_back({ std::min(a, b), std::max(a, b), a < b ? 1 : 0, a < b ? ca : cb, a < b ? cb : ca });
         }
         const double e1[3] = { p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2] };
         const double e2[3] = { p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2] };
         const double n[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
           e1[0] * e2[1] - e1[1] * e2[0] };
         out.Area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        ++local;
         out.Volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
                         p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
                         p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
@@ -159,9 +163,19 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
       // Components: union-find over the region's vertices (local numbering).
       std::vector<vtkIdType> parent(verts.size());
       std::iota(parent.begin(), parent.end(), 0);
-      auto local = [&](vtkIdType v) {
+      auto localIndex = [&](vtkIdType v) {
         return static_cast<vtkIdType>(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin());
       };
+      // Fans: the corners of the triangles around a vertex joined across its manifold edges; a
+      // vertex whose corners form more than one group is a non-manifold (pinched) vertex.
+      std::vector<vtkIdType> corner(3 * ts.size());
+      std::iota(corner.begin(), corner.end(), 0);
+      std::vector<vtkIdType> cornerVertex(3 * ts.size());
+      for (const auto& e : edges)
+      {
+        cornerVertex[e.CornerLo] = e.Lo;
+        cornerVertex[e.CornerHi] = e.Hi;
+      }
       for (size_t i = 0; i < edges.size();)
       {
         size_t j = i;
@@ -179,7 +193,15 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
           ++out.NonManifoldEdges;
         else if (forward != 1)
           ++out.MisorientedEdges;
-        const vtkIdType a = Find(parent, local(edges[i].Lo)), b = Find(parent, local(edges[i].Hi));
+        if (count == 2)
+          for (vtkIdType* c : { &edges[i].CornerLo, &edges[i].CornerHi })
+          {
+            const vtkIdType x = Find(corner, *c), y = Find(corner, *(c == &edges[i].CornerLo ? &edges[i + 1].CornerLo
+                                                                                             : &edges[i + 1].CornerHi));
+            if (x != y)
+              corner[std::max(x, y)] = std::min(x, y);
+          }
+        const vtkIdType a = Find(parent, localIndex(edges[i].Lo)), b = Find(parent, localIndex(edges[i].Hi));
         if (a != b)
           parent[std::max(a, b)] = std::min(a, b);
         i = j;
@@ -187,6 +209,14 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
       for (size_t v = 0; v < parent.size(); ++v)
         if (Find(parent, static_cast<vtkIdType>(v)) == static_cast<vtkIdType>(v))
           ++out.Components;
+      std::vector<std::pair<vtkIdType, vtkIdType>> fans; // (vertex, fan root)
+      for (size_t c = 0; c < corner.size(); ++c)
+        fans.emplace_back(cornerVertex[c], Find(corner, static_cast<vtkIdType>(c)));
+      std::sort(fans.begin(), fans.end());
+      fans.erase(std::unique(fans.begin(), fans.end()), fans.end());
+      for (size_t f = 1; f < fans.size(); ++f)
+        out.NonManifoldVertices += fans[f].first == fans[f - 1].first &&
+          (f < 2 || fans[f - 2].first != fans[f].first);
       out.Euler = out.Vertices - out.Edges + out.Triangles;
     }
   });
@@ -197,7 +227,7 @@ vtkSmartPointer<vtkTable> amSurfaceTopology::ToTable(const std::vector<Region>& 
 {
   auto table = vtkSmartPointer<vtkTable>::New();
   const char* intNames[] = { "Label", "Triangles", "Vertices", "Edges", "EulerCharacteristic",
-    "Components", "BoundaryEdges", "NonManifoldEdges", "MisorientedEdges" };
+    "Components", "BoundaryEdges", "NonManifoldEdges", "MisorientedEdges", "NonManifoldVertices" };
   for (const char* name : intNames)
   {
     vtkNew<vtkIdTypeArray> a;
@@ -216,11 +246,11 @@ vtkSmartPointer<vtkTable> amSurfaceTopology::ToTable(const std::vector<Region>& 
   {
     const Region& g = regions[r];
     const long long v[] = { g.Label, g.Triangles, g.Vertices, g.Edges, g.Euler, g.Components,
-      g.BoundaryEdges, g.NonManifoldEdges, g.MisorientedEdges };
-    for (int c = 0; c < 9; ++c)
+      g.BoundaryEdges, g.NonManifoldEdges, g.MisorientedEdges, g.NonManifoldVertices };
+    for (int c = 0; c < 10; ++c)
       vtkIdTypeArray::SafeDownCast(table->GetColumn(c))->SetValue(static_cast<vtkIdType>(r), v[c]);
-    vtkDoubleArray::SafeDownCast(table->GetColumn(9))->SetValue(static_cast<vtkIdType>(r), g.Area);
-    vtkDoubleArray::SafeDownCast(table->GetColumn(10))->SetValue(static_cast<vtkIdType>(r), g.Volume);
+    vtkDoubleArray::SafeDownCast(table->GetColumn(10))->SetValue(static_cast<vtkIdType>(r), g.Area);
+    vtkDoubleArray::SafeDownCast(table->GetColumn(11))->SetValue(static_cast<vtkIdType>(r), g.Volume);
   }
   return table;
 }

@@ -9,8 +9,9 @@
  * vertices V, edges E, triangles F, Euler characteristic V - E + F (2 for a sphere, 0 for a
  * torus, summed over components), connected components, boundary edges (one triangle: the region
  * is open there), non-manifold edges (more than two triangles), misoriented edges (two triangles
- * that traverse the edge the same way), area and enclosed volume (divergence theorem). A closed,
- * oriented, manifold boundary has zero boundary, non-manifold and misoriented edges.
+ * that traverse the edge the same way), non-manifold vertices (where the region's triangles form
+ * several fans: a pinch), area and enclosed volume (divergence theorem). A closed, oriented,
+ * manifold boundary has zero boundary, non-manifold and misoriented edges and no pinched vertex.
  */
 #ifndef amSurfaceTopology_h
 #define amSurfaceTopology_h
@@ -32,6 +33,7 @@ public:
     int Label = 0;
     long long Triangles = 0, Vertices = 0, Edges = 0, Euler = 0;
     long long Components = 0, BoundaryEdges = 0, NonManifoldEdges = 0, MisorientedEdges = 0;
+    long long NonManifoldVertices = 0; // vertices where the region's triangles form several fans
     double Area = 0.0, Volume = 0.0;
   };
 

@@ -170,6 +170,87 @@ int CornerCopies(const int lab[8], int comp[12], int& resolvedHalfLines)
   return copies;
 }
 
+/// A label that touches itself only at this corner through separate fans that the vertex copies
+/// cannot separate (they are joined through other regions' interfaces, e.g. octants 0 and 7 of one
+/// label with two other labels filling the rest). Returns the octant to relabel and its new label
+/// (the most frequent other label among its three face neighbours in the block), or -1.
+int CornerPinch(const int lab[8], int& newLabel)
+{
+  int comp[12], resolved;
+  if (CornerCopies(lab, comp, resolved) == 0)
+    return -1;
+  // Octants of one label connected through faces or through resolved (kept-connected) edges.
+  int parent[8];
+  for (int o = 0; o < 8; ++o)
+    parent[o] = o;
+  auto find = [&](int a) {
+    while (parent[a] != a)
+      a = parent[a];
+    return a;
+  };
+  auto join = [&](int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b)
+      parent[std::max(a, b)] = std::min(a, b);
+  };
+  for (int o = 0; o < 8; ++o)
+    for (int k = 0; k < 3; ++k)
+      if (lab[o] == lab[o ^ (1 << k)])
+        join(o, o ^ (1 << k));
+  for (int m = 0; m < 3; ++m)
+    for (int s = 0; s < 2; ++s)
+    {
+      const int bits[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+      int oct[4], q[4];
+      for (int t = 0; t < 4; ++t)
+      {
+        oct[t] = Octant(m, s, bits[t][0], bits[t][1]);
+        q[t] = lab[oct[t]];
+      }
+      const int diag = ResolveEdge(q);
+      if (diag >= 0)
+        join(oct[diag], oct[diag + 2]);
+    }
+  // The copy of each octant: that of any of its present faces.
+  int copyOf[8];
+  for (int o = 0; o < 8; ++o)
+  {
+    copyOf[o] = -1;
+    for (int k = 0; k < 3 && copyOf[o] < 0; ++k)
+    {
+      const int f = FaceOf(k, o);
+      if (comp[f] >= 0)
+        copyOf[o] = comp[f];
+    }
+  }
+  for (int a = 0; a < 8; ++a)
+    for (int b = a + 1; b < 8; ++b)
+      if (lab[a] == lab[b] && find(a) != find(b) && copyOf[a] >= 0 && copyOf[a] == copyOf[b])
+      {
+        int best = -1, bestCount = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const int c = lab[b ^ (1 << k)];
+          if (c == lab[b])
+            continue;
+          int count = 0;
+          for (int j = 0; j < 3; ++j)
+            count += lab[b ^ (1 << j)] == c;
+          if (count > bestCount || (count == bestCount && c < best))
+          {
+            best = c;
+            bestCount = count;
+          }
+        }
+        if (best < 0)
+          continue;
+        newLabel = best;
+        return b;
+      }
+  return -1;
+}
+
 struct Grid
 {
   int N[3];
@@ -238,6 +319,7 @@ amLabelSurface::amLabelSurface()
   , ComputeTopology(true)
   , ResolvedEdges(0)
   , SplitCorners(0)
+  , RelabelledVoxels(0)
 {
   amThreading::Initialize();
   this->SetNumberOfOutputPorts(2);
@@ -382,6 +464,50 @@ int amLabelSurface::RequestData(
     }
   });
   this->UpdateProgress(0.1);
+
+  // Repair: relabel one voxel at each corner where a label touches itself through fans that no
+  // vertex split can separate; repeat until there is none.
+  this->RelabelledVoxels = 0;
+  for (int round = 0; round < 20; ++round)
+  {
+    std::vector<std::vector<std::pair<size_t, std::uint16_t>>> changes(static_cast<size_t>(g.N[2] + 1));
+    vtkSMPTools::For(0, g.N[2] + 1, [&](vtkIdType k0, vtkIdType k1) {
+      int lab[8];
+      for (vtkIdType ck = k0; ck < k1; ++ck)
+        for (int cj = 0; cj <= g.N[1]; ++cj)
+          for (int ci = 0; ci <= g.N[0]; ++ci)
+          {
+            g.CornerLabels(ci, cj, static_cast<int>(ck), lab);
+            bool uniform = true;
+            for (int o = 1; o < 8 && uniform; ++o)
+              uniform = lab[o] == lab[0];
+            if (uniform)
+              continue;
+            int newLabel;
+            const int o = CornerPinch(lab, newLabel);
+            if (o < 0)
+              continue;
+            const int v[3] = { ci - 1 + Bit(o, 0), cj - 1 + Bit(o, 1), static_cast<int>(ck) - 1 + Bit(o, 2) };
+            if (v[0] < 0 || v[1] < 0 || v[2] < 0 || v[0] >= g.N[0] || v[1] >= g.N[1] || v[2] >= g.N[2])
+              continue; // outside the image: the background cannot change
+            changes[ck].push_back({ (static_cast<size_t>(v[2]) * g.N[1] + v[1]) * g.N[0] + v[0],
+              static_cast<std::uint16_t>(newLabel) });
+          }
+    });
+    std::map<size_t, std::uint16_t> apply;
+    for (const auto& c : changes)
+      for (const auto& x : c)
+        apply.emplace(x.first, x.second); // the first corner (in order) decides
+    if (apply.empty())
+      break;
+    for (const auto& x : apply)
+      g.Labels[x.first] = x.second;
+    this->RelabelledVoxels += static_cast<vtkIdType>(apply.size());
+  }
+  if (this->RelabelledVoxels > 0)
+    vtkWarningMacro(<< this->RelabelledVoxels
+                    << " voxel(s) relabelled where a label touched itself only at a voxel corner "
+                       "between other regions (no vertex split can make that manifold).");
 
   // Pass 1: the corners on the surface and how many copies of each one's vertex, row by row.
   const int cn[3] = { g.N[0] + 1, g.N[1] + 1, g.N[2] + 1 };
@@ -702,7 +828,7 @@ int amLabelSurface::RequestData(
   output->GetFieldData()->AddArray(voxelSize);
   std::ostringstream params;
   params << "BackgroundLabel=" << this->BackgroundLabel << " ResolvedEdges=" << this->ResolvedEdges
-         << " SplitCorners=" << this->SplitCorners;
+         << " SplitCorners=" << this->SplitCorners << " RelabelledVoxels=" << this->RelabelledVoxels;
   amProvenance::Record(output, input, "amLabelSurface", params.str());
   this->UpdateProgress(0.85);
 

@@ -107,6 +107,44 @@ int amSurfaceSmoothing::RequestData(
         }
       }
     });
+    // No fold: a triangle whose normal would turn by more than 90 degrees from its input normal
+    // keeps its vertices where they were in this step (repeated until no such triangle is left).
+    for (int guard = 0; guard < 10; ++guard)
+    {
+      std::vector<unsigned char> revert(static_cast<size_t>(np), 0);
+      std::vector<unsigned char> flagged(mesh.Triangles.size(), 0);
+      vtkSMPTools::For(0, mesh.NumberOfTriangles(), [&](vtkIdType t0, vtkIdType t1) {
+        for (vtkIdType t = t0; t < t1; ++t)
+        {
+          const auto& tri = mesh.Triangles[t];
+          double u[3], w[3], u0[3], w0[3];
+          for (int d = 0; d < 3; ++d)
+          {
+            u[d] = next[tri[1]][d] - next[tri[0]][d];
+            w[d] = next[tri[2]][d] - next[tri[0]][d];
+            u0[d] = x0[tri[1]][d] - x0[tri[0]][d];
+            w0[d] = x0[tri[2]][d] - x0[tri[0]][d];
+          }
+          const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+          const double n0[3] = { u0[1] * w0[2] - u0[2] * w0[1], u0[2] * w0[0] - u0[0] * w0[2],
+            u0[0] * w0[1] - u0[1] * w0[0] };
+          flagged[t] = n[0] * n0[0] + n[1] * n0[1] + n[2] * n0[2] <= 0;
+        }
+      });
+      bool any = false;
+      for (vtkIdType t = 0; t < mesh.NumberOfTriangles(); ++t)
+        if (flagged[t])
+        {
+          any = true;
+          for (vtkIdType v : mesh.Triangles[t])
+            revert[v] = 1;
+        }
+      if (!any)
+        break;
+      for (vtkIdType v = 0; v < np; ++v)
+        if (revert[v])
+          next[v] = x[v];
+    }
     x.swap(next);
     if (it % 8 == 7)
       this->UpdateProgress(static_cast<double>(it + 1) / (2 * this->NumberOfIterations));

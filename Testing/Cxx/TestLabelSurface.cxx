@@ -38,6 +38,7 @@ void ExpectClosedManifold(vtkTable* table, double volumeTolerance, double absolu
     EXPECT_EQ(r.at("BoundaryEdges"), 0) << "label " << kv.first;
     EXPECT_EQ(r.at("NonManifoldEdges"), 0) << "label " << kv.first;
     EXPECT_EQ(r.at("MisorientedEdges"), 0) << "label " << kv.first;
+    EXPECT_EQ(r.at("NonManifoldVertices"), 0) << "label " << kv.first;
     EXPECT_NEAR(r.at("Volume"), r.at("VoxelVolume"), volumeTolerance * r.at("VoxelVolume") + absoluteSlack)
       << "label " << kv.first;
   }
@@ -150,9 +151,34 @@ TEST(LabelSurface, CheckerboardEdgeAndCornerPinchAreResolved)
   EXPECT_EQ(rows[3]["EulerCharacteristic"], 4);
 }
 
+TEST(LabelSurface, CornerPinchAcrossOtherRegionsIsRepaired)
+{
+  // Around one voxel corner: label 1 in two opposite octants, 3 and 10 in three octants each,
+  // so the two label-1 fans are joined through the 3|10 interface and cannot be split.
+  auto img = amTest::LabelMap(4, 4, 4, 1.0, kOrigin, [](double x, double y, double z) {
+    const int i = static_cast<int>(x), j = static_cast<int>(y), k = static_cast<int>(z);
+    if (i < 1 || i > 2 || j < 1 || j > 2 || k < 1 || k > 2)
+      return 0;
+    const int o = (i - 1) + 2 * (j - 1) + 4 * (k - 1);
+    return (o == 0 || o == 7) ? 1 : ((o == 1 || o == 4 || o == 5) ? 3 : 10);
+  });
+  vtkNew<amTest::ErrorCatcher> messages;
+  vtkNew<amLabelSurface> ls;
+  messages->Watch(ls);
+  ls->SetInputData(img);
+  ls->Update();
+  EXPECT_EQ(ls->GetRelabelledVoxels(), 1);
+  ASSERT_EQ(messages->Warnings.size(), 1u);
+  EXPECT_NE(messages->Warnings[0].find("relabelled"), std::string::npos);
+  ExpectClosedManifold(vtkTable::SafeDownCast(ls->GetOutputDataObject(1)), 0.15);
+}
+
 TEST(LabelSurface, RandomLabelNoiseGivesClosedOrientedManifolds)
 {
-  // The worst case for self-touching labels: independent random voxels, 2 to 5 labels.
+  // The worst case for self-touching labels: independent random voxels, 2 to 5 labels. Edges are
+  // always manifold and oriented; the corner repair can leave a pinched vertex in such noise
+  // (measured: 3 vertices over these 40 volumes; none in the phantom or the frog).
+  int pinched = 0;
   for (unsigned seed = 1; seed <= 40; ++seed)
   {
     std::mt19937 rng(seed);
@@ -167,10 +193,12 @@ TEST(LabelSurface, RandomLabelNoiseGivesClosedOrientedManifolds)
       EXPECT_EQ(kv.second.at("BoundaryEdges"), 0) << "seed " << seed << " label " << kv.first;
       EXPECT_EQ(kv.second.at("NonManifoldEdges"), 0) << "seed " << seed << " label " << kv.first;
       EXPECT_EQ(kv.second.at("MisorientedEdges"), 0) << "seed " << seed << " label " << kv.first;
+      pinched += static_cast<int>(kv.second.at("NonManifoldVertices"));
       EXPECT_GT(kv.second.at("Volume"), 0);
     }
     ExpectNoDuplicateOrDegenerate(ls->GetOutput());
   }
+  EXPECT_LE(pinched, 3);
 }
 
 TEST(LabelSurface, DeterministicAndMirroredDirectionKeepsOrientation)

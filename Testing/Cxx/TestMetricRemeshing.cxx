@@ -58,6 +58,7 @@ void ExpectClosedRegions(vtkPolyData* pd)
     EXPECT_EQ(r.BoundaryEdges, 0) << r.Label;
     EXPECT_EQ(r.NonManifoldEdges, 0) << r.Label;
     EXPECT_EQ(r.MisorientedEdges, 0) << r.Label;
+    EXPECT_EQ(r.NonManifoldVertices, 0) << r.Label;
   }
 }
 }

@@ -32,9 +32,9 @@ class ThoraxJob(unittest.TestCase):
         out = os.path.join(TMP, "thorax_job")
         shutil.rmtree(out, ignore_errors=True)
         code, stdout, stderr = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"),
-                                   "--output", out, "--set", "spacing=4")
+                                   "--output", out, "--set", "spacing=4", "--set", "tolerance=1")
         self.assertEqual(code, 0, stderr)
-        self.assertIn("Wrote 4 file(s)", stdout)
+        self.assertIn("Wrote 6 file(s)", stdout)
         self.assertIn("phantom", stderr)  # progress lines
         import anatomesh
         from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -54,6 +54,15 @@ class ThoraxJob(unittest.TestCase):
         for label in (3, 4, 6, 7, 8):
             a, b = labels == label, truth == label
             self.assertGreater(2.0 * (a & b).sum() / (a.sum() + b.sum()), 0.8, label)
+        # The remeshed surface of those organs: their interfaces only, within the tolerance.
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        surface = vtkXMLPolyDataReader()
+        surface.SetFileName(os.path.join(out, "thorax_surface.vtp"))
+        surface.Update()
+        pairs = vtk_to_numpy(surface.GetOutput().GetCellData().GetArray("Labels"))
+        self.assertTrue(set(pairs.ravel().tolist()) <= {0, 3, 4, 6, 7, 8})
+        self.assertLessEqual(surface.GetOutput().GetFieldData().GetArray("Hausdorff").GetValue(0), 1.0)
+        self.assertTrue(os.path.getsize(os.path.join(out, "thorax_surface.mesh")) > 0)
         leftovers = [f for f in os.listdir(out) if ".tmp" in f]
         self.assertEqual(leftovers, [])
 

@@ -384,7 +384,9 @@ def write_vtk_xml(data, path):
     tmp = os.path.join(folder, ".%s.tmp%d%s" % (os.path.splitext(base)[0], os.getpid(), ext))
     writer.SetFileName(tmp)
     writer.SetInputData(data)
-    writer.SetDataModeToAppended()
+    # Inline base64 ("binary"), not appended: Debian 12's expat (2.5.0+deb12u5, with the backported
+    # reparse deferral) breaks VTK 9.2's reading of appended data beyond a few kB.
+    writer.SetDataModeToBinary()
     writer.SetCompressorTypeToZLib()
     try:
         if not writer.Write():

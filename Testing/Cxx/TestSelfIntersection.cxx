@@ -1,0 +1,130 @@
+// No self-intersections: every region of the surface extracted from the phantom and from the frog
+// is a manifold polygon mesh (CGAL's soup check: one fan per vertex) without self-intersections
+// (CGAL's exact test). Isolated in its own executable: CGAL is a heavy compile.
+// Smoothing and remeshing are not covered yet: on the 2 mm phantom, Taubin smoothing with the
+// default bound folds triangles near junctions (a few hundred intersecting pairs per region;
+// none with a 0.3-voxel bound) and remeshing inherits them. See README, Known limits.
+#include "amCurvatureMetric.h"
+#include "amImageReader.h"
+#include "amLabelSurface.h"
+#include "amMetricRemeshing.h"
+#include "amSurfaceSmoothing.h"
+#include "amTestUtilities.h"
+#include "amThoraxPhantomSource.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <map>
+
+namespace
+{
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+
+/// Number of self-intersecting triangle pairs in each region's closed boundary (label -> pairs).
+std::map<int, size_t> SelfIntersections(vtkPolyData* pd)
+{
+  vtkDataArray* labels = pd->GetCellData()->GetArray("Labels");
+  std::map<int, size_t> result;
+  std::map<int, std::vector<vtkIdType>> byRegion;
+  for (vtkIdType t = 0; t < pd->GetNumberOfCells(); ++t)
+    for (int side = 0; side < 2; ++side)
+    {
+      const int l = static_cast<int>(labels->GetComponent(t, side));
+      if (l != 0)
+        byRegion[l].push_back(side == 0 ? t : -t - 1);
+    }
+  vtkIdType npts;
+  const vtkIdType* ids;
+  for (const auto& kv : byRegion)
+  {
+    // Each region's boundary as a polygon soup (outward orientation), checked to be a manifold
+    // polygon mesh (every vertex one fan), then built and tested.
+    std::vector<K::Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    std::map<vtkIdType, std::size_t> vmap;
+    auto vertex = [&](vtkIdType id) {
+      auto it = vmap.find(id);
+      if (it != vmap.end())
+        return it->second;
+      double p[3];
+      pd->GetPoint(id, p);
+      points.emplace_back(p[0], p[1], p[2]);
+      return vmap[id] = points.size() - 1;
+    };
+    for (vtkIdType code : kv.second)
+    {
+      const bool reversed = code < 0;
+      pd->GetCellPoints(reversed ? -code - 1 : code, npts, ids);
+      polygons.push_back({ vertex(ids[0]), vertex(ids[reversed ? 2 : 1]), vertex(ids[reversed ? 1 : 2]) });
+    }
+    if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    {
+      ADD_FAILURE() << "region " << kv.first << " is not a manifold oriented surface (a vertex with two fans?)";
+      continue;
+    }
+    Mesh m;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, m);
+    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+    CGAL::Polygon_mesh_processing::self_intersections(m, std::back_inserter(pairs));
+    result[kv.first] = pairs.size();
+  }
+  return result;
+}
+
+void ExpectNone(vtkPolyData* pd, const char* stage)
+{
+  for (const auto& kv : SelfIntersections(pd))
+    EXPECT_EQ(kv.second, 0u) << stage << ": region " << kv.first;
+}
+}
+
+TEST(SelfIntersection, PhantomExtracted)
+{
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(2, 2, 2);
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputConnection(src->GetOutputPort(1));
+  ls->SetComputeTopology(false);
+  ls->Update();
+  EXPECT_EQ(ls->GetRelabelledVoxels(), 2); // two corner pinches that no vertex split can resolve
+  ExpectNone(ls->GetOutput(), "extracted");
+}
+
+TEST(SelfIntersection, SmoothedWithSmallBound)
+{
+  // With displacements bounded by 0.3 voxel, smoothing cannot fold the voxel surface here.
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(2, 2, 2);
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputConnection(src->GetOutputPort(1));
+  ls->SetComputeTopology(false);
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputConnection(ls->GetOutputPort());
+  sm->SetMaximumDisplacement(0.6);
+  sm->Update();
+  ExpectNone(sm->GetOutput(), "smoothed");
+}
+
+TEST(SelfIntersection, Frog)
+{
+  const std::string path = amTest::SharedData("vtk_frog_tissue_labels/frogtissue.mhd");
+  if (path.empty())
+    GTEST_SKIP() << "../shared/data/vtk_frog_tissue_labels is absent";
+  vtkNew<amImageReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputConnection(reader->GetOutputPort());
+  ls->SetComputeTopology(false);
+  ls->Update();
+  ExpectNone(ls->GetOutput(), "extracted");
+}
