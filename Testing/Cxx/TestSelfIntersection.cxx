@@ -1,9 +1,9 @@
 // No self-intersections: every region of the surface extracted from the phantom and from the frog
 // is a manifold polygon mesh (CGAL's soup check: one fan per vertex) without self-intersections
 // (CGAL's exact test). Isolated in its own executable: CGAL is a heavy compile.
-// Smoothing and remeshing are not covered yet: on the 2 mm phantom, Taubin smoothing with the
-// default bound folds triangles near junctions (a few hundred intersecting pairs per region;
-// none with a 0.3-voxel bound) and remeshing inherits them. See README, Known limits.
+// Smoothing with the default bound is not covered yet: on the 2 mm phantom it leaves 126 crossing
+// triangle pairs near junctions (none with a 0.3-voxel bound, tested here), and remeshing
+// inherits them. See README, Known limits.
 #include "amCurvatureMetric.h"
 #include "amImageReader.h"
 #include "amLabelSurface.h"
