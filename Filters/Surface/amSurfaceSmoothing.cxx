@@ -1,6 +1,7 @@
 #include "amSurfaceSmoothing.h"
 
 #include "amProvenance.h"
+#include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amThreading.h"
 
@@ -27,7 +28,9 @@ amSurfaceSmoothing::amSurfaceSmoothing()
   , PassBand(0.1)
   , MaximumDisplacement(-1.0)
   , PreserveFeatures(true)
+  , PreventSelfIntersections(true)
   , UsedMaximumDisplacement(0.0)
+  , UntangledVertices(0)
 {
   amThreading::Initialize();
 }
@@ -150,6 +153,24 @@ int amSurfaceSmoothing::RequestData(
       this->UpdateProgress(static_cast<double>(it + 1) / (2 * this->NumberOfIterations));
   }
 
+  // Untangle: wherever triangles of a region's boundary cross (possible near junctions, where
+  // the ring averages of several interfaces pull at each other), their vertices go back to the
+  // input, which has no crossing, until none is left (each check is a CGAL pass over every
+  // region, so vertices are restored at once rather than bisected).
+  this->UntangledVertices = 0;
+  if (this->PreventSelfIntersections && !mesh.Labels.empty())
+  {
+    for (int round = 0; round < 10; ++round)
+    {
+      const std::vector<vtkIdType> tangled = amSelfIntersection::Vertices(mesh, x);
+      if (tangled.empty())
+        break;
+      for (vtkIdType v : tangled)
+        x[v] = x0[v];
+      this->UntangledVertices += static_cast<vtkIdType>(tangled.size());
+    }
+  }
+
   output->CopyStructure(input);
   output->GetPointData()->PassData(input->GetPointData());
   output->GetCellData()->PassData(input->GetCellData());
@@ -177,7 +198,8 @@ int amSurfaceSmoothing::RequestData(
   output->GetPointData()->AddArray(kind);
   std::ostringstream params;
   params << "NumberOfIterations=" << this->NumberOfIterations << " PassBand=" << this->PassBand
-         << " MaximumDisplacement=" << bound << " PreserveFeatures=" << this->PreserveFeatures;
+         << " MaximumDisplacement=" << bound << " PreserveFeatures=" << this->PreserveFeatures
+         << " PreventSelfIntersections=" << this->PreventSelfIntersections;
   amProvenance::Record(output, input, "amSurfaceSmoothing", params.str());
   this->UpdateProgress(1.0);
   return 1;
