@@ -1,6 +1,5 @@
 #include "amTriangleLocator.h"
 
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>

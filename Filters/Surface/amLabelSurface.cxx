@@ -71,6 +71,19 @@ inline int ResolveEdge(const int q[4])
   return d0 ? 0 : (d1 ? 1 : -1);
 }
 
+/// The four octants around the half-line from a corner along -m (s = 0) or +m (s = 1), in cyclic
+/// order, and their labels.
+const int kCycle[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+inline void HalfLine(const int lab[8], int m, int s, int oct[4], int q[4])
+{
+  for (int t = 0; t < 4; ++t)
+  {
+    oct[t] = Octant(m, s, kCycle[t][0], kCycle[t][1]);
+    q[t] = lab[oct[t]];
+  }
+}
+
+/// Union-find over at most 12 items (the block's faces or octants).
 struct UnionFind12
 {
   int Parent[12];
@@ -97,7 +110,7 @@ struct UnionFind12
 /// The surface around one voxel corner: which of the 12 block faces are present, and how they
 /// group into copies of the corner vertex (one copy per connected fan of faces). Returns the
 /// number of copies (0: no surface here).
-int CornerCopies(const int lab[8], int comp[12], int& resolvedHalfLines)
+int CornerCopies(const int lab[8], int comp[12])
 {
   bool present[12];
   int any = 0;
@@ -108,7 +121,6 @@ int CornerCopies(const int lab[8], int comp[12], int& resolvedHalfLines)
     any += present[f];
     comp[f] = -1;
   }
-  resolvedHalfLines = 0;
   if (!any)
     return 0;
   UnionFind12 uf;
@@ -117,19 +129,13 @@ int CornerCopies(const int lab[8], int comp[12], int& resolvedHalfLines)
     const int a = (m + 1) % 3, b = (m + 2) % 3;
     for (int s = 0; s < 2; ++s)
     {
-      // The four octants around the half-line from V along +-m, in cyclic order.
-      const int bits[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
       int oct[4], q[4];
-      for (int t = 0; t < 4; ++t)
-      {
-        oct[t] = Octant(m, s, bits[t][0], bits[t][1]);
-        q[t] = lab[oct[t]];
-      }
+      HalfLine(lab, m, s, oct, q);
       int face[4]; // face between oct[t] and oct[t+1]
       for (int t = 0; t < 4; ++t)
       {
         const int u = (t + 1) % 4;
-        const int axis = bits[t][0] != bits[u][0] ? a : b;
+        const int axis = kCycle[t][0] != kCycle[u][0] ? a : b;
         face[t] = FaceOf(axis, oct[t]);
       }
       const int diag = ResolveEdge(q);
@@ -147,7 +153,6 @@ int CornerCopies(const int lab[8], int comp[12], int& resolvedHalfLines)
       }
       else
       {
-        ++resolvedHalfLines;
         // Connected label on the diagonal 'diag': the faces wrap the two other voxels.
         const int w0 = diag == 0 ? 1 : 0, w1 = w0 + 2; // wrapped positions
         uf.Join(face[(w0 + 3) % 4], face[w0]);
@@ -173,44 +178,24 @@ int CornerCopies(const int lab[8], int comp[12], int& resolvedHalfLines)
 /// A label that touches itself only at this corner through separate fans that the vertex copies
 /// cannot separate (they are joined through other regions' interfaces, e.g. octants 0 and 7 of one
 /// label with two other labels filling the rest). Returns the octant to relabel and its new label
-/// (the most frequent other label among its three face neighbours in the block), or -1.
-int CornerPinch(const int lab[8], int& newLabel)
+/// (the most frequent other label among its three face neighbours in the block), or -1. comp is
+/// CornerCopies' grouping of the block's faces.
+int CornerPinch(const int lab[8], const int comp[12], int& newLabel)
 {
-  int comp[12], resolved;
-  if (CornerCopies(lab, comp, resolved) == 0)
-    return -1;
   // Octants of one label connected through faces or through resolved (kept-connected) edges.
-  int parent[8];
-  for (int o = 0; o < 8; ++o)
-    parent[o] = o;
-  auto find = [&](int a) {
-    while (parent[a] != a)
-      a = parent[a];
-    return a;
-  };
-  auto join = [&](int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b)
-      parent[std::max(a, b)] = std::min(a, b);
-  };
+  UnionFind12 octants;
   for (int o = 0; o < 8; ++o)
     for (int k = 0; k < 3; ++k)
       if (lab[o] == lab[o ^ (1 << k)])
-        join(o, o ^ (1 << k));
+        octants.Join(o, o ^ (1 << k));
   for (int m = 0; m < 3; ++m)
     for (int s = 0; s < 2; ++s)
     {
-      const int bits[4][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
       int oct[4], q[4];
-      for (int t = 0; t < 4; ++t)
-      {
-        oct[t] = Octant(m, s, bits[t][0], bits[t][1]);
-        q[t] = lab[oct[t]];
-      }
+      HalfLine(lab, m, s, oct, q);
       const int diag = ResolveEdge(q);
       if (diag >= 0)
-        join(oct[diag], oct[diag + 2]);
+        octants.Join(oct[diag], oct[diag + 2]);
     }
   // The copy of each octant: that of any of its present faces.
   int copyOf[8];
@@ -226,7 +211,7 @@ int CornerPinch(const int lab[8], int& newLabel)
   }
   for (int a = 0; a < 8; ++a)
     for (int b = a + 1; b < 8; ++b)
-      if (lab[a] == lab[b] && find(a) != find(b) && copyOf[a] >= 0 && copyOf[a] == copyOf[b])
+      if (lab[a] == lab[b] && octants.Find(a) != octants.Find(b) && copyOf[a] >= 0 && copyOf[a] == copyOf[b])
       {
         int best = -1, bestCount = 0;
         for (int k = 0; k < 3; ++k)
@@ -289,6 +274,26 @@ struct Grid
   {
     for (int o = 0; o < 8; ++o)
       lab[o] = this->Label(ci - 1 + Bit(o, 0), cj - 1 + Bit(o, 1), ck - 1 + Bit(o, 2));
+  }
+  /// True when the 8 voxels around the corner hold one label; otherwise fills lab.
+  bool UniformCorner(int ci, int cj, int ck, int lab[8]) const
+  {
+    if (ci > 0 && cj > 0 && ck > 0 && ci < this->N[0] && cj < this->N[1] && ck < this->N[2])
+    {
+      // Interior corner: most are inside one region; test without bounds checks.
+      const size_t sy = this->N[0], sz = static_cast<size_t>(this->N[0]) * this->N[1];
+      const std::uint16_t* v =
+        this->Labels.data() + ((static_cast<size_t>(ck) - 1) * this->N[1] + (cj - 1)) * this->N[0] + (ci - 1);
+      const std::uint16_t l0 = v[0];
+      if (v[1] == l0 && v[sy] == l0 && v[sy + 1] == l0 && v[sz] == l0 && v[sz + 1] == l0 && v[sz + sy] == l0 &&
+        v[sz + sy + 1] == l0)
+        return true;
+    }
+    this->CornerLabels(ci, cj, ck, lab);
+    for (int o = 1; o < 8; ++o)
+      if (lab[o] != lab[0])
+        return false;
+    return true;
   }
   vtkIdType Corner(int ci, int cj, int ck) const
   {
@@ -465,26 +470,47 @@ int amLabelSurface::RequestData(
   });
   this->UpdateProgress(0.1);
 
-  // Repair: relabel one voxel at each corner where a label touches itself through fans that no
-  // vertex split can separate; repeat until there is none.
+  // Pass 1: the corners on the surface and how many copies of each one's vertex, row by row.
+  // The same scan finds the corners where a label touches itself through fans that no vertex
+  // split can separate; if there are any, one voxel each is relabelled and the scan is redone
+  // for the slabs of corners around the relabelled voxels only.
+  const int cn[3] = { g.N[0] + 1, g.N[1] + 1, g.N[2] + 1 };
+  std::vector<std::vector<Grid::Entry>> slabEntries(static_cast<size_t>(cn[2]));
+  std::vector<std::vector<std::pair<size_t, std::uint16_t>>> changes(static_cast<size_t>(cn[2]));
+  std::vector<char> dirty(static_cast<size_t>(cn[2]), 1);
+  g.RowStart.assign(static_cast<size_t>(cn[1]) * cn[2] + 1, 0);
   this->RelabelledVoxels = 0;
-  for (int round = 0; round < 20; ++round)
+  for (int round = 0;; ++round)
   {
-    std::vector<std::vector<std::pair<size_t, std::uint16_t>>> changes(static_cast<size_t>(g.N[2] + 1));
-    vtkSMPTools::For(0, g.N[2] + 1, [&](vtkIdType k0, vtkIdType k1) {
-      int lab[8];
+    vtkSMPTools::For(0, cn[2], [&](vtkIdType k0, vtkIdType k1) {
+      int lab[8], comp[12];
       for (vtkIdType ck = k0; ck < k1; ++ck)
-        for (int cj = 0; cj <= g.N[1]; ++cj)
-          for (int ci = 0; ci <= g.N[0]; ++ci)
+      {
+        if (!dirty[ck])
+          continue;
+        slabEntries[ck].clear();
+        changes[ck].clear();
+        for (int cj = 0; cj < cn[1]; ++cj)
+        {
+          const size_t row = static_cast<size_t>(ck) * cn[1] + cj;
+          const size_t before = slabEntries[ck].size();
+          for (int ci = 0; ci < cn[0]; ++ci)
           {
-            g.CornerLabels(ci, cj, static_cast<int>(ck), lab);
-            bool uniform = true;
-            for (int o = 1; o < 8 && uniform; ++o)
-              uniform = lab[o] == lab[0];
-            if (uniform)
+            if (g.UniformCorner(ci, cj, static_cast<int>(ck), lab))
               continue;
+            const int c = CornerCopies(lab, comp);
+            slabEntries[ck].push_back({ ci, c, 0 });
             int newLabel;
-            const int o = CornerPinch(lab, newLabel);
+            // With two labels every fan of one is a boundary of the other: no pinch is possible.
+            int other = lab[0];
+            bool third = false;
+            for (int k = 1; k < 8 && !third; ++k)
+            {
+              if (other == lab[0])
+                other = lab[k];
+              third = lab[k] != lab[0] && lab[k] != other;
+            }
+            const int o = (c > 0 && third) ? CornerPinch(lab, comp, newLabel) : -1;
             if (o < 0)
               continue;
             const int v[3] = { ci - 1 + Bit(o, 0), cj - 1 + Bit(o, 1), static_cast<int>(ck) - 1 + Bit(o, 2) };
@@ -493,60 +519,32 @@ int amLabelSurface::RequestData(
             changes[ck].push_back({ (static_cast<size_t>(v[2]) * g.N[1] + v[1]) * g.N[0] + v[0],
               static_cast<std::uint16_t>(newLabel) });
           }
+          g.RowStart[row + 1] = static_cast<vtkIdType>(slabEntries[ck].size() - before);
+        }
+      }
     });
     std::map<size_t, std::uint16_t> apply;
     for (const auto& c : changes)
       for (const auto& x : c)
         apply.emplace(x.first, x.second); // the first corner (in order) decides
-    if (apply.empty())
+    if (apply.empty() || round == 20)
       break;
+    std::fill(dirty.begin(), dirty.end(), 0);
+    const size_t slice = static_cast<size_t>(g.N[0]) * g.N[1];
     for (const auto& x : apply)
+    {
       g.Labels[x.first] = x.second;
+      const size_t k = x.first / slice; // corners k and k + 1 touch voxel slice k
+      dirty[k] = dirty[k + 1] = 1;
+    }
     this->RelabelledVoxels += static_cast<vtkIdType>(apply.size());
   }
   if (this->RelabelledVoxels > 0)
     vtkWarningMacro(<< this->RelabelledVoxels
                     << " voxel(s) relabelled where a label touched itself only at a voxel corner "
                        "between other regions (no vertex split can make that manifold).");
-
-  // Pass 1: the corners on the surface and how many copies of each one's vertex, row by row.
-  const int cn[3] = { g.N[0] + 1, g.N[1] + 1, g.N[2] + 1 };
-  std::vector<std::vector<Grid::Entry>> slabEntries(static_cast<size_t>(cn[2]));
-  g.RowStart.assign(static_cast<size_t>(cn[1]) * cn[2] + 1, 0);
-  vtkSMPTools::For(0, cn[2], [&](vtkIdType k0, vtkIdType k1) {
-    int lab[8], comp[12], resolved;
-    const size_t sy = g.N[0], sz = static_cast<size_t>(g.N[0]) * g.N[1];
-    for (vtkIdType ck = k0; ck < k1; ++ck)
-      for (int cj = 0; cj < cn[1]; ++cj)
-      {
-        const size_t row = static_cast<size_t>(ck) * cn[1] + cj;
-        const size_t before = slabEntries[ck].size();
-        for (int ci = 0; ci < cn[0]; ++ci)
-        {
-          if (ci > 0 && cj > 0 && ck > 0 && ci < g.N[0] && cj < g.N[1] && ck < g.N[2])
-          {
-            // Interior corner: most are inside one region; test without bounds checks.
-            const std::uint16_t* v = g.Labels.data() +
-              ((static_cast<size_t>(ck) - 1) * g.N[1] + (cj - 1)) * g.N[0] + (ci - 1);
-            const std::uint16_t l0 = v[0];
-            if (v[1] == l0 && v[sy] == l0 && v[sy + 1] == l0 && v[sz] == l0 && v[sz + 1] == l0 &&
-              v[sz + sy] == l0 && v[sz + sy + 1] == l0)
-              continue;
-          }
-          g.CornerLabels(ci, cj, static_cast<int>(ck), lab);
-          bool uniform = true;
-          for (int o = 1; o < 8 && uniform; ++o)
-            uniform = lab[o] == lab[0];
-          if (uniform)
-            continue;
-          const int c = CornerCopies(lab, comp, resolved);
-          slabEntries[ck].push_back({ ci, c, 0 });
-        }
-        g.RowStart[row + 1] = static_cast<vtkIdType>(slabEntries[ck].size() - before);
-      }
-  });
   for (size_t r = 1; r < g.RowStart.size(); ++r)
-    g.RowStart[r] += g.RowStart[r - 1];
+    g.RowStart[r] += g.RowStart[r - 1]; // per-row counts -> offsets
   g.Entries.reserve(static_cast<size_t>(g.RowStart.back()));
   vtkIdType nBasePoints = 0;
   for (auto& slab : slabEntries)
@@ -568,7 +566,7 @@ int amLabelSurface::RequestData(
   points->SetNumberOfPoints(nBasePoints);
   float* xyz = static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0);
   vtkSMPTools::For(0, cn[2], [&](vtkIdType k0, vtkIdType k1) {
-    int lab[8], comp[12], resolved;
+    int lab[8], comp[12];
     for (vtkIdType ck = k0; ck < k1; ++ck)
       for (int cj = 0; cj < cn[1]; ++cj)
       {
@@ -584,7 +582,7 @@ int amLabelSurface::RequestData(
             continue;
           }
           g.CornerLabels(ci, cj, static_cast<int>(ck), lab);
-          const int nc = CornerCopies(lab, comp, resolved);
+          const int nc = CornerCopies(lab, comp);
           for (int cc = 0; cc < nc; ++cc)
           {
             double shift[3] = { 0, 0, 0 };
@@ -617,9 +615,9 @@ int amLabelSurface::RequestData(
     const Grid::Entry* e = g.Find(c[0], c[1], c[2]);
     if (e->Copies == 1)
       return e->Base;
-    int lab[8], comp[12], resolved;
+    int lab[8], comp[12];
     g.CornerLabels(c[0], c[1], c[2], lab);
-    CornerCopies(lab, comp, resolved);
+    CornerCopies(lab, comp);
     return e->Base + comp[axis * 4 + (1 - a) + 2 * (1 - b)];
   };
   // The four voxels around the edge of a face from local corner (a0,b0) to (a1,b1), cyclic.

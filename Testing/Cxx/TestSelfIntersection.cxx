@@ -4,10 +4,8 @@
 // Smoothing is covered with its defaults (it untangles what its steps cross) and with a small
 // bound. Remeshing is not yet: on the 2 mm phantom (eps 0.5 mm) it makes ~140 crossing pairs
 // near junctions. See README, Known limits.
-#include "amCurvatureMetric.h"
 #include "amImageReader.h"
 #include "amLabelSurface.h"
-#include "amMetricRemeshing.h"
 #include "amSurfaceSmoothing.h"
 #include "amTestUtilities.h"
 #include "amThoraxPhantomSource.h"
@@ -17,6 +15,7 @@
 #include "vtkDataArray.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -86,49 +85,56 @@ void ExpectNone(vtkPolyData* pd, const char* stage)
   for (const auto& kv : SelfIntersections(pd))
     EXPECT_EQ(kv.second, 0u) << stage << ": region " << kv.first;
 }
+
+/// The 2 mm phantom's extracted surface, made once for the tests of this file.
+amLabelSurface* PhantomSurface()
+{
+  static vtkSmartPointer<amLabelSurface> ls;
+  if (!ls)
+  {
+    vtkNew<amThoraxPhantomSource> src;
+    src->SetSpacing(2, 2, 2);
+    ls = vtkSmartPointer<amLabelSurface>::New();
+    ls->SetInputConnection(src->GetOutputPort(1));
+    ls->SetComputeTopology(false);
+    ls->Update();
+  }
+  return ls;
+}
+
+vtkSmartPointer<vtkPolyData> Smoothed(double bound, bool untangle, vtkIdType* untangled = nullptr)
+{
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputData(PhantomSurface()->GetOutput());
+  sm->SetMaximumDisplacement(bound);
+  sm->SetPreventSelfIntersections(untangle);
+  sm->Update();
+  if (untangled)
+    *untangled = sm->GetUntangledVertices();
+  return sm->GetOutput();
+}
 }
 
 TEST(SelfIntersection, PhantomExtracted)
 {
-  vtkNew<amThoraxPhantomSource> src;
-  src->SetSpacing(2, 2, 2);
-  vtkNew<amLabelSurface> ls;
-  ls->SetInputConnection(src->GetOutputPort(1));
-  ls->SetComputeTopology(false);
-  ls->Update();
-  EXPECT_EQ(ls->GetRelabelledVoxels(), 2); // two corner pinches that no vertex split can resolve
-  ExpectNone(ls->GetOutput(), "extracted");
+  EXPECT_EQ(PhantomSurface()->GetRelabelledVoxels(), 2); // two corner pinches no vertex split resolves
+  ExpectNone(PhantomSurface()->GetOutput(), "extracted");
 }
 
 TEST(SelfIntersection, SmoothedWithSmallBound)
 {
-  // With displacements bounded by 0.3 voxel, smoothing cannot fold the voxel surface here.
-  vtkNew<amThoraxPhantomSource> src;
-  src->SetSpacing(2, 2, 2);
-  vtkNew<amLabelSurface> ls;
-  ls->SetInputConnection(src->GetOutputPort(1));
-  ls->SetComputeTopology(false);
-  vtkNew<amSurfaceSmoothing> sm;
-  sm->SetInputConnection(ls->GetOutputPort());
-  sm->SetMaximumDisplacement(0.6);
-  sm->Update();
-  ExpectNone(sm->GetOutput(), "smoothed");
+  // With displacements bounded by 0.3 voxel, smoothing alone (no untangling) does not fold it.
+  ExpectNone(Smoothed(0.6, false), "smoothed");
 }
 
 TEST(SelfIntersection, SmoothedWithDefaults)
 {
   // The default bound lets Taubin steps cross triangles near junctions; the untangling moves them
   // back until nothing crosses.
-  vtkNew<amThoraxPhantomSource> src;
-  src->SetSpacing(2, 2, 2);
-  vtkNew<amLabelSurface> ls;
-  ls->SetInputConnection(src->GetOutputPort(1));
-  ls->SetComputeTopology(false);
-  vtkNew<amSurfaceSmoothing> sm;
-  sm->SetInputConnection(ls->GetOutputPort());
-  sm->Update();
-  EXPECT_GT(sm->GetUntangledVertices(), 0); // there was something to untangle
-  ExpectNone(sm->GetOutput(), "smoothed");
+  vtkIdType untangled = 0;
+  vtkSmartPointer<vtkPolyData> out = Smoothed(-1, true, &untangled);
+  EXPECT_GT(untangled, 0); // there was something to untangle
+  ExpectNone(out, "smoothed");
 }
 
 TEST(SelfIntersection, Frog)
