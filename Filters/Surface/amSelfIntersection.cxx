@@ -2,7 +2,9 @@
 
 #include "amSurfaceMesh.h"
 
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
@@ -75,4 +77,82 @@ std::vector<vtkIdType> amSelfIntersection::Triangles(
   std::sort(result.begin(), result.end());
   result.erase(std::unique(result.begin(), result.end()), result.end());
   return result;
+}
+
+std::vector<vtkIdType> amSelfIntersection::AllTriangles(
+  const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& points)
+{
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, vtkIdType>;
+  const vtkIdType nt = mesh.NumberOfTriangles();
+  std::vector<Box> boxes;
+  boxes.reserve(static_cast<size_t>(nt));
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    double lo[3], hi[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      lo[d] = hi[d] = points[mesh.Triangles[t][0]][d];
+      for (int k = 1; k < 3; ++k)
+      {
+        lo[d] = std::min(lo[d], points[mesh.Triangles[t][k]][d]);
+        hi[d] = std::max(hi[d], points[mesh.Triangles[t][k]][d]);
+      }
+    }
+    boxes.emplace_back(lo, hi, t);
+  }
+  std::vector<vtkIdType> result;
+  auto check = [&](const Box& a, const Box& b) {
+    const auto& ta = mesh.Triangles[a.info()];
+    const auto& tb = mesh.Triangles[b.info()];
+    const double* pa[3] = { points[ta[0]].data(), points[ta[1]].data(), points[ta[2]].data() };
+    const double* pb[3] = { points[tb[0]].data(), points[tb[1]].data(), points[tb[2]].data() };
+    const vtkIdType ia[3] = { ta[0], ta[1], ta[2] }, ib[3] = { tb[0], tb[1], tb[2] };
+    if (amSelfIntersection::Cross(pa, ia, pb, ib))
+    {
+      result.push_back(a.info());
+      result.push_back(b.info());
+    }
+  };
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), check);
+  std::sort(result.begin(), result.end());
+  result.erase(std::unique(result.begin(), result.end()), result.end());
+  return result;
+}
+
+bool amSelfIntersection::Cross(
+  const double* const a[3], const vtkIdType ia[3], const double* const b[3], const vtkIdType ib[3])
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using P = K::Point_3;
+  const P pa[3] = { P(a[0][0], a[0][1], a[0][2]), P(a[1][0], a[1][1], a[1][2]), P(a[2][0], a[2][1], a[2][2]) };
+  const P pb[3] = { P(b[0][0], b[0][1], b[0][2]), P(b[1][0], b[1][1], b[1][2]), P(b[2][0], b[2][1], b[2][2]) };
+  int sa[3], sb[3], shared = 0; // positions of the shared vertices in a and b
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (ia[i] == ib[j])
+      {
+        sa[shared] = i;
+        sb[shared] = j;
+        ++shared;
+      }
+  if (shared == 3)
+    return true;
+  if (shared == 0)
+    return CGAL::do_intersect(K::Triangle_3(pa[0], pa[1], pa[2]), K::Triangle_3(pb[0], pb[1], pb[2]));
+  if (shared == 1)
+  {
+    // They cross beyond the shared vertex iff the opposite edge of one meets the other.
+    const P& p1 = pa[(sa[0] + 1) % 3];
+    const P& p2 = pa[(sa[0] + 2) % 3];
+    const P& q1 = pb[(sb[0] + 1) % 3];
+    const P& q2 = pb[(sb[0] + 2) % 3];
+    return CGAL::do_intersect(K::Segment_3(p1, p2), K::Triangle_3(pb[0], pb[1], pb[2])) ||
+      CGAL::do_intersect(K::Segment_3(q1, q2), K::Triangle_3(pa[0], pa[1], pa[2]));
+  }
+  // Shared edge: they overlap iff coplanar with the other two vertices on the same side.
+  const P& s0 = pa[sa[0]];
+  const P& s1 = pa[sa[1]];
+  const P& p = pa[3 - sa[0] - sa[1]];
+  const P& q = pb[3 - sb[0] - sb[1]];
+  return CGAL::coplanar(s0, s1, p, q) && CGAL::coplanar_orientation(s0, s1, p, q) == CGAL::POSITIVE;
 }

@@ -10,6 +10,7 @@
 #ifndef amSelfIntersection_h
 #define amSelfIntersection_h
 
+#include "AnatomeshFiltersSurfaceModule.h" // export macro
 #include "vtkType.h"
 
 #include <array>
@@ -17,7 +18,7 @@
 
 class amSurfaceMesh;
 
-class amSelfIntersection
+class ANATOMESHFILTERSSURFACE_EXPORT amSelfIntersection
 {
 public:
   /// Sorted vertex ids of all triangles involved in a crossing, using the given positions.
@@ -26,6 +27,17 @@ public:
   /// Sorted indices of the triangles involved in a crossing.
   static std::vector<vtkIdType> Triangles(const amSurfaceMesh& mesh,
     const std::vector<std::array<double, 3>>& points, int background = 0);
+
+  /// Sorted indices of the triangles that cross any other triangle of the whole surface, whatever
+  /// their regions (two organs' boundaries running through each other are found too).
+  static std::vector<vtkIdType> AllTriangles(
+    const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& points);
+
+  /// Exact test (CGAL's filtered predicates): do triangles a and b, with vertex ids ia and ib,
+  /// meet anywhere other than in the vertices and edge they share? Identical vertex sets count
+  /// as crossing; so do two triangles on one edge folded flat onto each other.
+  static bool Cross(const double* const a[3], const vtkIdType ia[3], const double* const b[3],
+    const vtkIdType ib[3]);
 };
 
 #endif
