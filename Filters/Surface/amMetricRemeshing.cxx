@@ -1,6 +1,7 @@
 #include "amMetricRemeshing.h"
 
 #include "amProvenance.h"
+#include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amThreading.h"
 #include "amTriangleLocator.h"
@@ -29,6 +30,7 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <unordered_map>
 
 vtkStandardNewMacro(amMetricRemeshing);
 
@@ -76,7 +78,198 @@ public:
   // interface around the vertex, for junction-curve points).
   std::vector<std::vector<std::pair<int, int>>> Cluster;
   double Eps = 0.2;
-  long long Collapses = 0, Flips = 0, Moves = 0;
+  long long Collapses = 0, Flips = 0, Moves = 0, Refused = 0;
+  int LastHit = -1; // the live triangle the last refused operation would have crossed
+
+  // Input vertices on junction curves (and corners), binned: a junction edge is split at one of
+  // them, so that junction curves stay on the input's curves.
+  double CurveCell = 1.0;
+  std::unordered_map<long long, std::vector<int>> CurveBins;
+  void BuildCurveBins(const std::vector<unsigned char>& inputKind)
+  {
+    double sum = 0;
+    long long n = 0;
+    for (const Tri& t : this->T)
+      if (t.Alive)
+        for (int k = 0; k < 3; ++k, ++n)
+          sum += (this->RefPoints[t.V[(k + 1) % 3]] - this->RefPoints[t.V[k]]).norm();
+    this->CurveCell = n ? std::max(sum / n, 1e-6) : 1.0;
+    for (size_t v = 0; v < inputKind.size(); ++v)
+      if (inputKind[v] != amSurfaceMesh::Surface)
+      {
+        const Vec3& x = this->RefPoints[v];
+        this->CurveBins[BinKey(static_cast<long long>(std::floor(x[0] / this->CurveCell)),
+                          static_cast<long long>(std::floor(x[1] / this->CurveCell)),
+                          static_cast<long long>(std::floor(x[2] / this->CurveCell)))]
+          .push_back(static_cast<int>(v));
+      }
+  }
+  /// The input curve vertex nearest to x within radius r (false if none).
+  bool NearestCurvePoint(const Vec3& x, double r, Vec3& out) const
+  {
+    const long long reach = static_cast<long long>(std::ceil(r / this->CurveCell));
+    const long long c[3] = { static_cast<long long>(std::floor(x[0] / this->CurveCell)),
+      static_cast<long long>(std::floor(x[1] / this->CurveCell)),
+      static_cast<long long>(std::floor(x[2] / this->CurveCell)) };
+    double best = r * r;
+    bool found = false;
+    for (long long i = c[0] - reach; i <= c[0] + reach; ++i)
+      for (long long j = c[1] - reach; j <= c[1] + reach; ++j)
+        for (long long k = c[2] - reach; k <= c[2] + reach; ++k)
+        {
+          auto it = this->CurveBins.find(BinKey(i, j, k));
+          if (it == this->CurveBins.end())
+            continue;
+          for (int v : it->second)
+          {
+            const double d = (this->RefPoints[v] - x).squaredNorm();
+            if (d < best)
+            {
+              best = d;
+              out = this->RefPoints[v];
+              found = true;
+            }
+          }
+        }
+    return found;
+  }
+
+  // Bins of the live triangles (entries may be stale: a query checks the actual bounding box), so
+  // that every local operation can refuse to make a triangle cross another one.
+  double BinSize = 1.0;
+  std::unordered_map<long long, std::vector<int>> Bins;
+  std::vector<int> Stamp;
+  int StampValue = 0;
+
+  static long long BinKey(long long i, long long j, long long k)
+  {
+    return ((i + (1 << 20)) << 42) | ((j + (1 << 20)) << 21) | (k + (1 << 20));
+  }
+  void Box(const Vec3* p, Vec3& lo, Vec3& hi) const
+  {
+    lo = p[0].cwiseMin(p[1]).cwiseMin(p[2]);
+    hi = p[0].cwiseMax(p[1]).cwiseMax(p[2]);
+  }
+  template <typename F>
+  void ForBins(const Vec3& lo, const Vec3& hi, F f)
+  {
+    long long l[3], h[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      l[d] = static_cast<long long>(std::floor(lo[d] / this->BinSize));
+      h[d] = static_cast<long long>(std::floor(hi[d] / this->BinSize));
+    }
+    for (long long i = l[0]; i <= h[0]; ++i)
+      for (long long j = l[1]; j <= h[1]; ++j)
+        for (long long k = l[2]; k <= h[2]; ++k)
+          f(BinKey(i, j, k));
+  }
+  void BinTriangle(int t)
+  {
+    Vec3 p[3], lo, hi;
+    for (int k = 0; k < 3; ++k)
+      p[k] = this->P[this->T[t].V[k]];
+    this->Box(p, lo, hi);
+    this->ForBins(lo, hi, [&](long long key) { this->Bins[key].push_back(t); });
+  }
+  void RebuildBins()
+  {
+    double sum = 0;
+    long long n = 0;
+    for (const Tri& t : this->T)
+      if (t.Alive)
+        for (int k = 0; k < 3; ++k, ++n)
+          sum += (this->P[t.V[(k + 1) % 3]] - this->P[t.V[k]]).norm();
+    this->BinSize = n ? std::max(2.0 * sum / n, 1e-6) : 1.0;
+    this->Bins.clear();
+    for (size_t t = 0; t < this->T.size(); ++t)
+      if (this->T[t].Alive)
+        this->BinTriangle(static_cast<int>(t));
+  }
+  /// Would the new triangles (vertex ids and positions), replacing the triangles 'removed', cross
+  /// any live triangle or each other (CGAL exact test; also two triangles folded flat on an edge)?
+  bool Crosses(const std::vector<std::array<int, 3>>& ids, const std::vector<std::array<Vec3, 3>>& pos,
+    const std::vector<int>& removed)
+  {
+    if (this->Stamp.size() < this->T.size())
+      this->Stamp.resize(this->T.size() * 2, 0);
+    auto pairCrosses = [](const std::array<int, 3>& ia, const std::array<Vec3, 3>& pa,
+                         const std::array<int, 3>& ib, const Vec3* pb) {
+      const double* a[3] = { pa[0].data(), pa[1].data(), pa[2].data() };
+      const double* b[3] = { pb[0].data(), pb[1].data(), pb[2].data() };
+      const vtkIdType va[3] = { ia[0], ia[1], ia[2] }, vb[3] = { ib[0], ib[1], ib[2] };
+      // Two triangles on one edge at a dihedral angle under ~5 degrees: a fold.
+      int shared = 0, oa = -1, ob = -1;
+      for (int i = 0; i < 3; ++i)
+      {
+        bool found = false;
+        for (int j = 0; j < 3; ++j)
+          found = found || ia[i] == ib[j];
+        shared += found;
+        if (!found)
+          oa = i;
+      }
+      for (int j = 0; j < 3; ++j)
+        if (ib[j] != ia[0] && ib[j] != ia[1] && ib[j] != ia[2])
+          ob = j;
+      if (shared == 2)
+      {
+        const Vec3& e0 = pa[(oa + 1) % 3];
+        const Vec3 e = (pa[(oa + 2) % 3] - e0).normalized();
+        Vec3 u = pa[oa] - e0, w = pb[ob] - e0;
+        u -= u.dot(e) * e;
+        w -= w.dot(e) * e;
+        if (u.norm() > 0 && w.norm() > 0 && u.normalized().dot(w.normalized()) > 0.99985)
+          return true;
+      }
+      return amSelfIntersection::Cross(a, va, b, vb);
+    };
+    for (size_t n = 0; n < ids.size(); ++n)
+    {
+      for (size_t m = n + 1; m < ids.size(); ++m)
+        if (pairCrosses(ids[n], pos[n], ids[m], pos[m].data()))
+        {
+          this->LastHit = -1;
+          return true;
+        }
+      Vec3 lo, hi;
+      this->Box(pos[n].data(), lo, hi);
+      bool hit = false;
+      const int stamp = ++this->StampValue;
+      this->ForBins(lo, hi, [&](long long key) {
+        if (hit)
+          return;
+        auto it = this->Bins.find(key);
+        if (it == this->Bins.end())
+          return;
+        for (int t : it->second)
+        {
+          if (this->Stamp[t] == stamp || !this->T[t].Alive || std::find(removed.begin(), removed.end(), t) != removed.end())
+            continue;
+          this->Stamp[t] = stamp;
+          Vec3 q[3], qlo, qhi;
+          for (int k = 0; k < 3; ++k)
+            q[k] = this->P[this->T[t].V[k]];
+          this->Box(q, qlo, qhi);
+          if ((qlo.array() > hi.array()).any() || (qhi.array() < lo.array()).any())
+            continue;
+          const std::array<int, 3> qi = { this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] };
+          if (pairCrosses(ids[n], pos[n], qi, q))
+          {
+            this->LastHit = t;
+            hit = true;
+            return;
+          }
+        }
+      });
+      if (hit)
+      {
+        ++this->Refused;
+        return true;
+      }
+    }
+    return false;
+  }
 
   double Length(int a, int b) const
   {
@@ -141,6 +334,9 @@ public:
     this->VT[a].push_back(id);
     this->VT[b].push_back(id);
     this->VT[c].push_back(id);
+    if (this->Stamp.size() < this->T.size())
+      this->Stamp.resize(this->T.size() * 2, 0);
+    this->BinTriangle(id);
     return id;
   }
 
@@ -238,6 +434,25 @@ public:
               return false;
       }
     }
+    {
+      std::vector<std::array<int, 3>> ids;
+      std::vector<std::array<Vec3, 3>> pos;
+      for (int t : this->VT[a])
+        if (std::find(edge.begin(), edge.end(), t) == edge.end())
+        {
+          std::array<int, 3> v;
+          std::array<Vec3, 3> x;
+          for (int k = 0; k < 3; ++k)
+          {
+            v[k] = this->T[t].V[k] == a ? b : this->T[t].V[k];
+            x[k] = this->P[v[k]];
+          }
+          ids.push_back(v);
+          pos.push_back(x);
+        }
+      if (this->Crosses(ids, pos, this->VT[a]))
+        return false;
+    }
     for (int t : edge)
       this->Detach(t);
     this->Cluster[b].insert(this->Cluster[b].end(), this->Cluster[a].begin(), this->Cluster[a].end());
@@ -248,6 +463,7 @@ public:
         if (this->T[t].V[k] == a)
           this->T[t].V[k] = b;
       this->VT[b].push_back(t);
+      this->BinTriangle(t);
     }
     this->VT[a].clear();
     this->VAlive[a] = 0;
@@ -330,6 +546,8 @@ public:
       return false;
     const int sheet = this->T[t1].Sheet;
     if (!this->TriangleNear(sheet, pa, pd, pc) || !this->TriangleNear(sheet, pd, pb, pc))
+      return false;
+    if (this->Crosses({ { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } }, { t1, t2 }))
       return false;
     const Tri like = this->T[t1];
     this->Detach(t1);
@@ -417,7 +635,23 @@ public:
       }
       if (!near)
         continue;
+      {
+        std::vector<std::array<int, 3>> ids;
+        std::vector<std::array<Vec3, 3>> pos;
+        for (int t : this->VT[v])
+        {
+          ids.push_back({ this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] });
+          std::array<Vec3, 3> q;
+          for (int k = 0; k < 3; ++k)
+            q[k] = this->T[t].V[k] == static_cast<int>(v) ? x : this->P[this->T[t].V[k]];
+          pos.push_back(q);
+        }
+        if (this->Crosses(ids, pos, this->VT[v]))
+          continue;
+      }
       this->P[v] = x;
+      for (int t : this->VT[v])
+        this->BinTriangle(t);
       ++done;
       ++this->Moves;
     }
@@ -529,42 +763,105 @@ public:
     return worst;
   }
 
-  /// Split edge k of triangle t (and every triangle on that edge) at x.
-  void SplitEdge(int t, int k, const Vec3& x)
+  /// Split edge k of triangle t (and every triangle on that edge) at x, unless the new triangles
+  /// would cross another triangle. Returns whether it was done.
+  bool SplitEdge(int t, int k, Vec3 x)
   {
     if (!this->T[t].Alive)
-      return;
+      return false;
     const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
     std::vector<int> edge;
     this->EdgeTriangles(a, b, edge);
     const bool feature = edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet;
+    if (feature)
+    {
+      // A junction edge is split at the input curve vertex nearest its midpoint (a point of one
+      // interface off the curve would fold the others).
+      const double length = (this->P[b] - this->P[a]).norm();
+      Vec3 c;
+      if (!this->NearestCurvePoint(0.5 * (this->P[a] + this->P[b]), 0.5 * length, c) ||
+        (c - this->P[a]).norm() < 1e-6 * length || (c - this->P[b]).norm() < 1e-6 * length)
+        return false;
+      x = c;
+    }
     const int v = static_cast<int>(this->P.size());
+    struct Half
+    {
+      int P, Q, C;
+    };
+    std::vector<Half> halves;
+    std::vector<std::array<int, 3>> ids;
+    std::vector<std::array<Vec3, 3>> pos;
+    for (int e : edge)
+    {
+      const Tri& like = this->T[e];
+      int i = 0;
+      while (!(like.V[i] == a || like.V[i] == b) || !(like.V[(i + 1) % 3] == a || like.V[(i + 1) % 3] == b))
+        ++i;
+      const Half h{ like.V[i], like.V[(i + 1) % 3], like.V[(i + 2) % 3] };
+      halves.push_back(h);
+      ids.push_back({ h.P, v, h.C });
+      pos.push_back({ this->P[h.P], x, this->P[h.C] });
+      ids.push_back({ v, h.Q, h.C });
+      pos.push_back({ x, this->P[h.Q], this->P[h.C] });
+    }
+    if (this->Crosses(ids, pos, edge))
+      return false;
     this->P.push_back(x);
     this->M.push_back(0.5 * (this->M[a] + this->M[b]));
     this->Kind.push_back(feature ? amSurfaceMesh::Curve : amSurfaceMesh::Surface);
     this->VAlive.push_back(1);
     this->VT.emplace_back();
     this->Cluster.emplace_back();
-    for (int e : edge)
+    for (size_t n = 0; n < edge.size(); ++n)
     {
-      const Tri like = this->T[e];
-      int i = 0;
-      while (!(like.V[i] == a || like.V[i] == b) || !(like.V[(i + 1) % 3] == a || like.V[(i + 1) % 3] == b))
-        ++i;
-      const int p = like.V[i], q = like.V[(i + 1) % 3], c = like.V[(i + 2) % 3];
-      this->Detach(e);
-      this->AddTriangle(p, v, c, like);
-      this->AddTriangle(v, q, c, like);
+      const Tri like = this->T[edge[n]];
+      this->Detach(edge[n]);
+      this->AddTriangle(halves[n].P, v, halves[n].C, like);
+      this->AddTriangle(v, halves[n].Q, halves[n].C, like);
     }
+    return true;
   }
 
-  /// Insert x into triangle t (1 -> 3), then improve the neighbourhood by flips.
-  void Insert(int t, const Vec3& x)
+  /// Where an insertion was refused because it would cross triangle 'other' of another part of
+  /// the surface: bring both closer to their own input surfaces (which do not cross) by splitting
+  /// their longest edges at points of the input. Returns the number of splits done.
+  int Refine(int t)
+  {
+    if (t < 0 || !this->T[t].Alive)
+      return 0;
+    int k = 0;
+    double longest = -1;
+    for (int e = 0; e < 3; ++e)
+    {
+      const double l = (this->P[this->T[t].V[(e + 1) % 3]] - this->P[this->T[t].V[e]]).norm();
+      if (l > longest)
+      {
+        longest = l;
+        k = e;
+      }
+    }
+    const Vec3 mid = 0.5 * (this->P[this->T[t].V[k]] + this->P[this->T[t].V[(k + 1) % 3]]);
+    double cl[3];
+    vtkIdType tri;
+    this->Ref[this->T[t].Sheet].ClosestPoint(mid.data(), cl, tri);
+    return this->SplitEdge(t, k, Vec3(cl)) ? 1 : 0;
+  }
+
+  /// Insert x into triangle t (1 -> 3), then improve the neighbourhood by flips; refused when the
+  /// new triangles would cross another triangle. Returns whether it was done.
+  bool Insert(int t, const Vec3& x)
   {
     if (!this->T[t].Alive)
-      return;
+      return false;
     const Tri like = this->T[t];
     const int v = static_cast<int>(this->P.size());
+    const int* w = like.V;
+    if (this->Crosses({ { w[0], w[1], v }, { w[1], w[2], v }, { w[2], w[0], v } },
+          { { this->P[w[0]], this->P[w[1]], x }, { this->P[w[1]], this->P[w[2]], x },
+            { this->P[w[2]], this->P[w[0]], x } },
+          { t }))
+      return false;
     this->P.push_back(x);
     Mat3 m = (this->M[like.V[0]] + this->M[like.V[1]] + this->M[like.V[2]]) / 3.0;
     this->M.push_back(m);
@@ -578,6 +875,7 @@ public:
     this->AddTriangle(like.V[2], like.V[0], v, like);
     for (int k = 0; k < 3; ++k)
       this->Flip(like.V[k], like.V[(k + 1) % 3]);
+    return true;
   }
 };
 }
@@ -701,10 +999,12 @@ int amMetricRemeshing::RequestData(
         r.Ref[s].Build(mesh.Points, tris[s]);
     });
   }
+  r.BuildCurveBins(mesh.Kind);
   this->UpdateProgress(0.05);
 
   for (int it = 0; it < this->NumberOfIterations; ++it)
   {
+    r.RebuildBins();
     for (int pass = 0; pass < 8; ++pass)
       if (r.CollapsePass() == 0)
         break;
@@ -721,24 +1021,37 @@ int amMetricRemeshing::RequestData(
   double upper = 0;
   double h = r.Measure(upper, insert, edgeOf);
   vtkIdType inserted = 0;
-  for (int round = 0; round < 10 && !insert.empty(); ++round)
+  r.RebuildBins();
+  for (int round = 0; round < 30 && !insert.empty(); ++round)
   {
+    vtkIdType done = 0;
+    std::vector<int> blocked;
     for (size_t i = 0; i < insert.size(); ++i)
     {
-      if (edgeOf[i] >= 0)
-        r.SplitEdge(insert[i].first, edgeOf[i], insert[i].second);
-      else
-        r.Insert(insert[i].first, insert[i].second);
+      const int t = insert[i].first;
+      const bool ok = edgeOf[i] >= 0 ? r.SplitEdge(t, edgeOf[i], insert[i].second) : r.Insert(t, insert[i].second);
+      done += ok;
+      if (!ok)
+      {
+        blocked.push_back(insert[i].first);
+        blocked.push_back(r.LastHit);
+      }
     }
-    inserted += static_cast<vtkIdType>(insert.size());
+    // Refused where a triangle is in the way (or the new ones would fold): refine both, towards
+    // the input where nothing crosses.
+    for (int t : blocked)
+      done += r.Refine(t);
+    inserted += done;
     h = r.Measure(upper, insert, edgeOf);
+    if (done == 0)
+      break;
   }
   this->Hausdorff = h;
   this->HausdorffUpperBound = upper;
   this->InsertedPoints = inserted;
   if (h > this->Tolerance)
     vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance "
-                                                              << this->Tolerance << " mm, after 10 insertion rounds.");
+                                                              << this->Tolerance << " mm: refining further would make triangles cross (near junction curves).");
   this->UpdateProgress(0.95);
 
   // Output: live vertices and triangles, labels and orientation kept.

@@ -19,15 +19,23 @@
  * Junction curves therefore stay exactly on input vertices, and every triangle keeps its
  * "Labels" pair and orientation.
  *
+ * No operation may make triangles cross: each collapse, flip, relaxation, insertion and split is
+ * refused when one of its new triangles would meet a live triangle other than at their shared
+ * vertices or edge (CGAL's exact predicates, on bins of the live triangles), or fold flat onto a
+ * neighbour across an edge (dihedral under 1 degree). The output is therefore as free of
+ * self-intersections as the input, which a tetrahedral mesher needs.
+ *
  * Then the two-sided Hausdorff distance to the input is computed (amSurfaceDistance's sampling,
  * per interface: every input vertex, edge midpoint and centroid against the remeshed triangles of
- * its interface,
- * and a grid of points on each remeshed triangle against the input), and wherever it exceeds
- * Tolerance the offending input vertex (or the projection of the offending sample) is inserted
- * into the nearest triangle (or, for a far point on an edge, that edge is split there), until
- * the bound holds (at most 10 rounds). The achieved value is
- * stored in field data "Hausdorff" (and "HausdorffUpperBound" with the sampling gap); a warning
- * says so if the bound could not be reached.
+ * its interface, and a grid of points on each remeshed triangle against the input), and wherever
+ * it exceeds Tolerance the offending input vertex (or the projection of the offending sample) is
+ * inserted into the nearest triangle (or, for a far point on an edge, that edge is split there; a
+ * junction edge at the input curve vertex nearest its midpoint). An insertion refused because it
+ * would cross something refines the triangles in the way instead (longest edge split at a point
+ * of the input), up to 30 rounds. The achieved value is stored in field data "Hausdorff" (and
+ * "HausdorffUpperBound" with the sampling gap); a warning says so if the bound could not be
+ * reached: where two interfaces meet at a small angle, the crossing-free rule can stop a few
+ * insertions (2 mm phantom, eps 0.5 mm: 0.57 mm).
  */
 #ifndef amMetricRemeshing_h
 #define amMetricRemeshing_h
