@@ -1,0 +1,334 @@
+#include "amMeshQuality.h"
+
+#include "amThreading.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+
+vtkStandardNewMacro(amMeshQuality);
+
+namespace
+{
+using Vec = std::array<double, 3>;
+Vec Sub(const double* a, const double* b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+Vec Cross(const Vec& a, const Vec& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+double Dot(const Vec& a, const Vec& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+double Norm(const Vec& a)
+{
+  return std::sqrt(Dot(a, a));
+}
+}
+
+void amMeshQuality::TetraQuality(const double p0[3], const double p1[3], const double p2[3],
+  const double p3[3], double& quality, double& minDihedral, double& maxDihedral,
+  double& radiusRatio, double& volume)
+{
+  const double* p[4] = { p0, p1, p2, p3 };
+  const Vec a = Sub(p1, p0), b = Sub(p2, p0), c = Sub(p3, p0);
+  volume = Dot(a, Cross(b, c)) / 6.0;
+  // Outward-facing (for positive volume) face normals, face i opposite vertex i.
+  static const int faceOf[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
+  Vec n[4];
+  double area = 0;
+  for (int f = 0; f < 4; ++f)
+  {
+    n[f] = Cross(Sub(p[faceOf[f][1]], p[faceOf[f][0]]), Sub(p[faceOf[f][2]], p[faceOf[f][0]]));
+    area += 0.5 * Norm(n[f]);
+  }
+  double longest = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      longest = std::max(longest, Norm(Sub(p[j], p[i])));
+  const double inradius = area > 0 ? 3.0 * std::fabs(volume) / area : 0.0;
+  const double inf = std::numeric_limits<double>::infinity();
+  quality = inradius > 0 ? std::sqrt(6.0) / 12.0 * longest / inradius : inf;
+  // Dihedral angle at the edge shared by faces f and g: pi - angle between their outward normals.
+  minDihedral = 180.0;
+  maxDihedral = 0.0;
+  for (int f = 0; f < 4; ++f)
+    for (int g = f + 1; g < 4; ++g)
+    {
+      const double nf = Norm(n[f]), ng = Norm(n[g]);
+      double angle = 0.0;
+      if (nf > 0 && ng > 0)
+      {
+        const double cosine = std::max(-1.0, std::min(1.0, Dot(n[f], n[g]) / (nf * ng)));
+        angle = 180.0 - std::acos(cosine) * 180.0 / M_PI;
+      }
+      if (volume <= 0)
+        angle = 0.0;
+      minDihedral = std::min(minDihedral, angle);
+      maxDihedral = std::max(maxDihedral, volume <= 0 ? 180.0 : angle);
+    }
+  // Circumradius: |a^2 (b x c) + b^2 (c x a) + c^2 (a x b)| / (12 V).
+  const Vec bc = Cross(b, c), ca = Cross(c, a), ab = Cross(a, b);
+  const double la = Dot(a, a), lb = Dot(b, b), lc = Dot(c, c);
+  Vec r;
+  for (int d = 0; d < 3; ++d)
+    r[d] = la * bc[d] + lb * ca[d] + lc * ab[d];
+  const double circumradius = volume != 0 ? Norm(r) / (12.0 * std::fabs(volume)) : inf;
+  radiusRatio = inradius > 0 ? circumradius / (3.0 * inradius) : inf;
+}
+
+amMeshQuality::amMeshQuality()
+  : RegionArrayName(nullptr)
+  , MeanQuality(0)
+  , MaximumQuality(0)
+  , MinimumDihedralAngle(0)
+  , MaximumDihedralAngle(0)
+  , NumberOfInvertedTetrahedra(0)
+{
+  amThreading::Initialize();
+  this->SetRegionArrayName("Region");
+  this->SetNumberOfOutputPorts(2);
+}
+
+amMeshQuality::~amMeshQuality()
+{
+  this->SetRegionArrayName(nullptr);
+}
+
+int amMeshQuality::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkTable");
+  return 1;
+}
+
+int amMeshQuality::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkTable* table = vtkTable::GetData(outputVector, 1);
+  const vtkIdType ne = input->GetNumberOfCells();
+  if (ne == 0)
+  {
+    vtkErrorMacro("The input mesh has no cells.");
+    return 0;
+  }
+  for (vtkIdType c = 0; c < ne; ++c)
+    if (input->GetCellType(c) != VTK_TETRA)
+    {
+      vtkErrorMacro("Cell " << c << " is not a tetrahedron (VTK cell type " << input->GetCellType(c)
+                            << "); MeshQuality measures tetrahedral meshes.");
+      return 0;
+    }
+  vtkDataArray* regionArray = this->RegionArrayName && *this->RegionArrayName
+    ? input->GetCellData()->GetArray(this->RegionArrayName)
+    : nullptr;
+  vtkPoints* pts = input->GetPoints();
+  for (vtkIdType v = 0; v < input->GetNumberOfPoints(); ++v)
+  {
+    double x[3];
+    pts->GetPoint(v, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      vtkErrorMacro("Point " << v << " has a non-finite coordinate.");
+      return 0;
+    }
+  }
+  vtkCellArray* cells = input->GetCells();
+  std::vector<std::array<vtkIdType, 4>> tets(static_cast<size_t>(ne));
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    vtkIdType c = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++c)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      std::copy(ids, ids + 4, tets[c].begin());
+    }
+  }
+  std::vector<int> region(static_cast<size_t>(ne), 0);
+  if (regionArray)
+    for (vtkIdType c = 0; c < ne; ++c)
+      region[c] = static_cast<int>(regionArray->GetComponent(c, 0));
+
+  vtkNew<vtkDoubleArray> q, dmin, dmax, rr, vol;
+  q->SetName("Quality");
+  dmin->SetName("MinimumDihedralAngle");
+  dmax->SetName("MaximumDihedralAngle");
+  rr->SetName("RadiusRatio");
+  vol->SetName("Volume");
+  for (auto* a : { q.Get(), dmin.Get(), dmax.Get(), rr.Get(), vol.Get() })
+    a->SetNumberOfTuples(ne);
+  vtkSMPTools::For(0, ne, [&](vtkIdType c0, vtkIdType c1) {
+    double x[4][3];
+    for (vtkIdType c = c0; c < c1; ++c)
+    {
+      for (int i = 0; i < 4; ++i)
+        pts->GetPoint(tets[c][i], x[i]);
+      double qq, a, b, r, v;
+      amMeshQuality::TetraQuality(x[0], x[1], x[2], x[3], qq, a, b, r, v);
+      q->SetValue(c, qq);
+      dmin->SetValue(c, a);
+      dmax->SetValue(c, b);
+      rr->SetValue(c, r);
+      vol->SetValue(c, v);
+    }
+  });
+  this->UpdateProgress(0.5);
+
+  // Faces: sorted (a, b, c, region) so that a face shared within a region appears twice in a row.
+  struct Face
+  {
+    vtkIdType V[3];
+    int Region;
+    bool operator<(const Face& o) const
+    {
+      if (this->V[0] != o.V[0])
+        return this->V[0] < o.V[0];
+      if (this->V[1] != o.V[1])
+        return this->V[1] < o.V[1];
+      if (this->V[2] != o.V[2])
+        return this->V[2] < o.V[2];
+      return this->Region < o.Region;
+    }
+    bool SameFace(const Face& o) const
+    {
+      return this->V[0] == o.V[0] && this->V[1] == o.V[1] && this->V[2] == o.V[2];
+    }
+  };
+  std::vector<Face> faces(static_cast<size_t>(4 * ne));
+  for (vtkIdType c = 0; c < ne; ++c)
+    for (int i = 0; i < 4; ++i)
+    {
+      Face& f = faces[4 * c + i];
+      int k = 0;
+      for (int j = 0; j < 4; ++j)
+        if (j != i)
+          f.V[k++] = tets[c][j];
+      std::sort(f.V, f.V + 3);
+      f.Region = region[c];
+    }
+  std::sort(faces.begin(), faces.end());
+
+  struct Row
+  {
+    long long np = 0, nt = 0, ne = 0, inverted = 0;
+    double sumQ = 0, minQ = std::numeric_limits<double>::infinity(), maxQ = 0;
+    double minD = 180, maxD = 0, volume = 0;
+  };
+  std::map<int, Row> rows;
+  Row all;
+  for (vtkIdType c = 0; c < ne; ++c)
+    for (Row* r : { &rows[region[c]], &all })
+    {
+      ++r->ne;
+      r->sumQ += q->GetValue(c);
+      r->minQ = std::min(r->minQ, q->GetValue(c));
+      r->maxQ = std::max(r->maxQ, q->GetValue(c));
+      r->minD = std::min(r->minD, dmin->GetValue(c));
+      r->maxD = std::max(r->maxD, dmax->GetValue(c));
+      r->volume += vol->GetValue(c);
+      r->inverted += vol->GetValue(c) <= 0 ? 1 : 0;
+    }
+  for (size_t i = 0; i < faces.size();)
+  {
+    size_t j = i;
+    while (j < faces.size() && faces[j].SameFace(faces[i]))
+      ++j;
+    // Faces i..j-1 are one geometric face; per region, a count of one means a boundary face.
+    for (size_t k = i; k < j;)
+    {
+      size_t l = k;
+      while (l < j && faces[l].Region == faces[k].Region)
+        ++l;
+      if (l - k == 1)
+        ++rows[faces[k].Region].nt;
+      k = l;
+    }
+    if (j - i == 1 || faces[i].Region != faces[j - 1].Region)
+      ++all.nt;
+    i = j;
+  }
+  {
+    std::map<int, std::vector<vtkIdType>> used;
+    for (vtkIdType c = 0; c < ne; ++c)
+      for (vtkIdType v : tets[c])
+        used[region[c]].push_back(v);
+    std::vector<char> any(static_cast<size_t>(input->GetNumberOfPoints()), 0);
+    for (auto& kv : used)
+    {
+      std::sort(kv.second.begin(), kv.second.end());
+      rows[kv.first].np = std::unique(kv.second.begin(), kv.second.end()) - kv.second.begin();
+      for (vtkIdType v : kv.second)
+        any[v] = 1;
+    }
+    all.np = std::count(any.begin(), any.end(), 1);
+  }
+
+  const char* names[] = { "Region", "np", "nt", "ne", "MeanQuality", "MinimumQuality",
+    "MaximumQuality", "MinimumDihedralAngle", "MaximumDihedralAngle", "Volume", "InvertedTetrahedra" };
+  std::vector<vtkSmartPointer<vtkAbstractArray>> columns;
+  for (int i = 0; i < 11; ++i)
+  {
+    vtkSmartPointer<vtkDataArray> a;
+    if (i < 4 || i == 10)
+      a = vtkSmartPointer<vtkIdTypeArray>::New();
+    else
+      a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(names[i]);
+    columns.push_back(a);
+    table->AddColumn(a);
+  }
+  auto addRow = [&](int label, const Row& r) {
+    const double values[11] = { static_cast<double>(label), static_cast<double>(r.np),
+      static_cast<double>(r.nt), static_cast<double>(r.ne), r.ne ? r.sumQ / r.ne : 0.0, r.minQ,
+      r.maxQ, r.minD, r.maxD, r.volume, static_cast<double>(r.inverted) };
+    for (int i = 0; i < 11; ++i)
+      vtkDataArray::SafeDownCast(columns[i])->InsertNextTuple1(values[i]);
+  };
+  for (const auto& kv : rows)
+    addRow(kv.first, kv.second);
+  addRow(-1, all);
+
+  this->MeanQuality = all.sumQ / static_cast<double>(all.ne);
+  this->MaximumQuality = all.maxQ;
+  this->MinimumDihedralAngle = all.minD;
+  this->MaximumDihedralAngle = all.maxD;
+  this->NumberOfInvertedTetrahedra = all.inverted;
+
+  output->ShallowCopy(input);
+  for (auto* a : { q.Get(), dmin.Get(), dmax.Get(), rr.Get(), vol.Get() })
+    output->GetCellData()->AddArray(a);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void amMeshQuality::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)")
+     << "\n";
+}

@@ -1,0 +1,129 @@
+/**
+ * @class   amTetrahedralize
+ * @brief   Conforming multi-region tetrahedral mesh of a labelled multi-material surface
+ *          (TetGen constrained Delaunay refinement, the paper's "GHS3d" stage).
+ *
+ * Input: the conforming surface of amLabelSurface / amMetricRemeshing: triangles with the
+ * 2-component cell array "Labels" (regions on either side, the normal pointing from Labels[0]
+ * into Labels[1]); every interface a facet of the piecewise linear complex TetGen meshes.
+ * Before meshing, each region's boundary must be closed (an open edge is an error naming its
+ * triangles), no triangle may be degenerate or carry one label on both sides, and every region
+ * must enclose a volume. A self-intersecting surface makes TetGen stop; the error then names the
+ * crossing triangles (CGAL exact test).
+ *
+ * Sizing: each surface vertex's size is the mean length of its edges (or, when present, the
+ * point array SizeArrayName, e.g. "Size" of amCurvatureMetric). Inside, a graded size field
+ * h(x) = min(MaximumSize, min_i (h_i + (Gradation - 1)|x - p_i|)) (amGradedSizeField) drives
+ * TetGen's refinement: a tetrahedron is split when its circumradius exceeds 0.75 h at its
+ * centroid, so elements grow away from the surface at the gradation rate. Quality: TetGen's
+ * radius-edge bound (MaximumRadiusEdgeRatio) and dihedral bound (MinimumDihedralAngle), then its
+ * mesh optimisation (flips and smoothing, OptimizationLevel).
+ *
+ * Regions: no seed point can be misplaced, because none is used. The tetrahedra are grouped into
+ * the connected sets that the surface triangles separate (face adjacency), and each set takes
+ * its label from the triangles bounding it, on the side it lies: a thin or non-convex organ, or
+ * one with several components (ribs), is labelled exactly. A set bounded inconsistently is an
+ * error; sets of BackgroundLabel (outside, cavities) are dropped.
+ *
+ * With PreserveSurface (default, TetGen -Y) the boundary and interface triangles of the output
+ * are exactly the input triangles and the input points come first, in order.
+ *
+ * Output port 0: vtkUnstructuredGrid of tetrahedra (positive volume), cell data "Region",
+ * point data "SurfacePointId" (index of the input surface point, -1 inside).
+ * Output port 1: the boundary and interface triangles on the output points, cell data "Labels"
+ * (as the input, same orientation), "SourceTriangle" (input triangle), and "Tetra" (2 components:
+ * the tetrahedron on the Labels[0] side and on the Labels[1] side, -1 for background).
+ */
+#ifndef amTetrahedralize_h
+#define amTetrahedralize_h
+
+#include "AnatomeshFiltersVolumeModule.h" // export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+class ANATOMESHFILTERSVOLUME_EXPORT amTetrahedralize : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static amTetrahedralize* New();
+  vtkTypeMacro(amTetrahedralize, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Label of the outside, not meshed (default 0).
+  vtkSetMacro(BackgroundLabel, int);
+  vtkGetMacro(BackgroundLabel, int);
+  ///@}
+
+  ///@{
+  /// Keep the input triangles exactly (default on). Off lets TetGen split them.
+  vtkSetMacro(PreserveSurface, vtkTypeBool);
+  vtkGetMacro(PreserveSurface, vtkTypeBool);
+  vtkBooleanMacro(PreserveSurface, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Largest circumradius-to-shortest-edge ratio of the refinement (default 1.5; TetGen -q).
+  vtkSetClampMacro(MaximumRadiusEdgeRatio, double, 1.0, 100.0);
+  vtkGetMacro(MaximumRadiusEdgeRatio, double);
+  ///@}
+
+  ///@{
+  /// Smallest dihedral angle aimed at, degrees (default 12; TetGen -q /angle).
+  vtkSetClampMacro(MinimumDihedralAngle, double, 0.0, 30.0);
+  vtkGetMacro(MinimumDihedralAngle, double);
+  ///@}
+
+  ///@{
+  /// Size growth bound away from the surface (default 1.3: sizes grow by at most 0.3 mm per mm).
+  vtkSetClampMacro(Gradation, double, 1.0, 10.0);
+  vtkGetMacro(Gradation, double);
+  ///@}
+
+  ///@{
+  /// Largest element size, mm (default 0: bounded by the gradation only).
+  vtkSetClampMacro(MaximumSize, double, 0.0, 1e6);
+  vtkGetMacro(MaximumSize, double);
+  ///@}
+
+  ///@{
+  /// Point-data array of the input giving the size at each surface vertex, mm (default "Size";
+  /// when absent, the mean length of the vertex's edges is used).
+  vtkSetStringMacro(SizeArrayName);
+  vtkGetStringMacro(SizeArrayName);
+  ///@}
+
+  ///@{
+  /// TetGen's optimisation level 0-10 (default 3; TetGen -O).
+  vtkSetClampMacro(OptimizationLevel, int, 0, 10);
+  vtkGetMacro(OptimizationLevel, int);
+  ///@}
+
+  ///@{
+  /// Results of the last run.
+  vtkGetMacro(NumberOfTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfSteinerPoints, vtkIdType);
+  ///@}
+
+protected:
+  amTetrahedralize();
+  ~amTetrahedralize() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int BackgroundLabel;
+  vtkTypeBool PreserveSurface;
+  double MaximumRadiusEdgeRatio;
+  double MinimumDihedralAngle;
+  double Gradation;
+  double MaximumSize;
+  char* SizeArrayName;
+  int OptimizationLevel;
+  vtkIdType NumberOfTetrahedra;
+  vtkIdType NumberOfSteinerPoints;
+
+private:
+  amTetrahedralize(const amTetrahedralize&) = delete;
+  void operator=(const amTetrahedralize&) = delete;
+};
+
+#endif

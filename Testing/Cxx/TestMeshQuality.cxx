@@ -1,0 +1,129 @@
+// amMeshQuality: the paper's Q on known tetrahedra, dihedral angles, the Table 1 counts.
+#include "amMeshQuality.h"
+#include "amTestUtilities.h"
+
+#include "vtkCellData.h"
+#include "vtkExecutive.h"
+#include "vtkDataArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+vtkSmartPointer<vtkUnstructuredGrid> Grid(
+  const std::vector<std::array<double, 3>>& pts, const std::vector<std::array<vtkIdType, 4>>& tets,
+  const std::vector<int>& regions)
+{
+  auto g = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> p;
+  p->SetDataTypeToDouble();
+  for (const auto& x : pts)
+    p->InsertNextPoint(x.data());
+  g->SetPoints(p);
+  for (const auto& t : tets)
+    g->InsertNextCell(VTK_TETRA, 4, t.data());
+  vtkNew<vtkIntArray> r;
+  r->SetName("Region");
+  for (int v : regions)
+    r->InsertNextValue(v);
+  g->GetCellData()->AddArray(r);
+  return g;
+}
+
+double Cell(vtkUnstructuredGrid* g, const char* name, vtkIdType c)
+{
+  return g->GetCellData()->GetArray(name)->GetComponent(c, 0);
+}
+}
+
+TEST(MeshQuality, RegularTetrahedronScoresOne)
+{
+  const double s = 3.7;
+  auto g = Grid({ { 0, 0, 0 }, { s, 0, 0 }, { s / 2, s * std::sqrt(3.0) / 2, 0 },
+                  { s / 2, s * std::sqrt(3.0) / 6, s * std::sqrt(2.0 / 3.0) } },
+    { { 0, 1, 2, 3 } }, { 1 });
+  vtkNew<amMeshQuality> q;
+  q->SetInputData(g);
+  q->Update();
+  vtkUnstructuredGrid* out = q->GetOutput();
+  EXPECT_NEAR(Cell(out, "Quality", 0), 1.0, 1e-12);
+  EXPECT_NEAR(Cell(out, "RadiusRatio", 0), 1.0, 1e-12);
+  const double regular = std::acos(1.0 / 3.0) * 180.0 / M_PI; // 70.53 degrees
+  EXPECT_NEAR(Cell(out, "MinimumDihedralAngle", 0), regular, 1e-9);
+  EXPECT_NEAR(Cell(out, "MaximumDihedralAngle", 0), regular, 1e-9);
+  EXPECT_NEAR(Cell(out, "Volume", 0), s * s * s / (6 * std::sqrt(2.0)), 1e-9);
+}
+
+TEST(MeshQuality, CornerTetrahedronAndSliver)
+{
+  // Corner tetrahedron: h = sqrt 2, inradius 3V/A with V = 1/6, A = 3/2 + sqrt(3)/2.
+  auto g = Grid({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0.01 } },
+    { { 0, 1, 2, 3 }, { 0, 1, 2, 4 } }, { 1, 1 });
+  vtkNew<amMeshQuality> q;
+  q->SetInputData(g);
+  q->Update();
+  vtkUnstructuredGrid* out = q->GetOutput();
+  const double rho = 0.5 / (1.5 + std::sqrt(3.0) / 2);
+  EXPECT_NEAR(Cell(out, "Quality", 0), std::sqrt(6.0) / 12 * std::sqrt(2.0) / rho, 1e-12);
+  EXPECT_NEAR(Cell(out, "MinimumDihedralAngle", 0), std::acos(1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
+  EXPECT_NEAR(Cell(out, "MaximumDihedralAngle", 0), 90.0, 1e-9);
+  // The nearly flat square (0,0,0) (1,0,0) (1,1,.01) (0,1,0): a sliver.
+  EXPECT_GT(Cell(out, "Quality", 1), 50.0);
+  EXPECT_LT(Cell(out, "MinimumDihedralAngle", 1), 2.0);
+  EXPECT_GT(Cell(out, "MaximumDihedralAngle", 1), 170.0);
+  EXPECT_EQ(q->GetNumberOfInvertedTetrahedra(), 0);
+}
+
+TEST(MeshQuality, TableCountsLikeThePaper)
+{
+  // Two tetrahedra of different regions on one face, a third (inverted) one in region 1.
+  auto g = Grid({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0, 0, -1 }, { 5, 5, 5 }, { 6, 5, 5 },
+                  { 5, 6, 5 }, { 5, 5, 6 } },
+    { { 0, 1, 2, 3 }, { 0, 2, 1, 4 }, { 5, 7, 6, 8 } }, { 1, 2, 1 });
+  vtkNew<amMeshQuality> q;
+  q->SetInputData(g);
+  q->Update();
+  vtkTable* t = vtkTable::SafeDownCast(q->GetOutputDataObject(1));
+  ASSERT_EQ(t->GetNumberOfRows(), 3); // regions 1, 2, all
+  auto value = [&](int row, const char* col) { return t->GetValueByName(row, col).ToDouble(); };
+  EXPECT_EQ(value(0, "Region"), 1);
+  EXPECT_EQ(value(0, "np"), 8);
+  EXPECT_EQ(value(0, "nt"), 8);
+  EXPECT_EQ(value(0, "ne"), 2);
+  EXPECT_EQ(value(0, "InvertedTetrahedra"), 1);
+  EXPECT_EQ(value(1, "Region"), 2);
+  EXPECT_EQ(value(1, "np"), 4);
+  EXPECT_EQ(value(1, "nt"), 4);
+  EXPECT_EQ(value(2, "Region"), -1);
+  EXPECT_EQ(value(2, "np"), 9);
+  EXPECT_EQ(value(2, "nt"), 11); // 3 + 3 outer faces, the shared interface once, 4 of the far one
+  EXPECT_EQ(value(2, "ne"), 3);
+  EXPECT_NEAR(value(2, "Volume"), 1.0 / 6 + 1.0 / 6 - 1.0 / 6, 1e-12);
+  EXPECT_EQ(q->GetNumberOfInvertedTetrahedra(), 1);
+}
+
+TEST(MeshQuality, RefusesOtherCells)
+{
+  vtkNew<vtkUnstructuredGrid> g;
+  vtkNew<vtkPoints> p;
+  p->SetDataTypeToDouble();
+  for (int i = 0; i < 3; ++i)
+    p->InsertNextPoint(i, i * i, 0);
+  g->SetPoints(p);
+  const vtkIdType tri[3] = { 0, 1, 2 };
+  g->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  vtkNew<amMeshQuality> q;
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(q);
+  errors->Watch(q->GetExecutive());
+  q->SetInputData(g);
+  q->Update();
+  EXPECT_TRUE(errors->ErrorContains("is not a tetrahedron")) << errors->AllErrors();
+}
