@@ -68,11 +68,18 @@ def _describe(data):
                     continue
                 name = names.GetValue(int(label)) if names is not None and label < names.GetNumberOfValues() else ""
                 lines.append("        label %3d %-22s %12.1f cm3" % (label, name, counts[label] * voxel / 1000.0))
+    elif data.IsA("vtkTable"):
+        columns = [data.GetColumn(c) for c in range(data.GetNumberOfColumns())]
+        widths = [max(len(c.GetName()), 8) for c in columns]
+        lines.append("      " + " ".join("%*s" % (w, c.GetName()) for w, c in zip(widths, columns)))
+        for r in range(data.GetNumberOfRows()):
+            lines.append("      " + " ".join("%*.6g" % (w, c.GetTuple1(r)) if c.IsNumeric() else "%*s" % (w, c.GetValue(r))
+                                           for w, c in zip(widths, columns)))
     elif data.IsA("vtkDataSet"):
         lines.append("      %s: %d points, %d cells" % (data.GetClassName(), data.GetNumberOfPoints(),
                                                        data.GetNumberOfCells()))
         hausdorff = data.GetFieldData().GetArray("Hausdorff")
-        if hausdorff is not None:
+        if hausdorff is not None and data.IsA("vtkPolyData"):
             lines.append("      two-sided Hausdorff distance to its input surface: %.3f mm" % hausdorff.GetValue(0))
     return lines
 

@@ -370,13 +370,35 @@ def _make_parent(path, pipeline, line):
         raise pipeline._error(line, "cannot create folder %s: %s" % (folder, e.strerror))
 
 
+def _write_csv(table, path):
+    """A vtkTable as comma-separated values with a header row, written atomically."""
+    if table is None or not table.IsA("vtkTable"):
+        raise PipelineError("%s: .csv takes a table, got %s" % (path, table.GetClassName() if table else "nothing"))
+    folder, base = os.path.split(os.path.abspath(path))
+    tmp = os.path.join(folder, ".%s.tmp%d.csv" % (os.path.splitext(base)[0], os.getpid()))
+    columns = [table.GetColumn(c) for c in range(table.GetNumberOfColumns())]
+    try:
+        with open(tmp, "w") as f:
+            f.write(",".join(c.GetName() for c in columns) + "\n")
+            for r in range(table.GetNumberOfRows()):
+                f.write(",".join("%.10g" % c.GetTuple1(r) if c.IsNumeric() else str(c.GetValue(r))
+                                 for c in columns) + "\n")
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
 def write_vtk_xml(data, path):
-    """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm) atomically."""
+    """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm), or a table to .csv, atomically."""
     from vtkmodules.vtkIOXML import (vtkXMLImageDataWriter, vtkXMLPolyDataWriter,
                                      vtkXMLUnstructuredGridWriter, vtkXMLMultiBlockDataWriter)
     writers = {".vti": vtkXMLImageDataWriter, ".vtp": vtkXMLPolyDataWriter,
                ".vtu": vtkXMLUnstructuredGridWriter, ".vtm": vtkXMLMultiBlockDataWriter}
     ext = os.path.splitext(path)[1].lower()
+    if ext == ".csv":
+        _write_csv(data, path)
+        return
     if ext not in writers:
         raise PipelineError("%s: unknown output extension %r (use %s)" % (path, ext, ", ".join(sorted(writers))))
     writer = writers[ext]()
