@@ -1,10 +1,12 @@
 // Volume benchmarks: the remeshed multi-material phantom surface -> tetrahedra (amTetrahedralize,
-// TetGen) and their quality table (amMeshQuality). The surface is prepared once per size (label
+// TetGen), the phantom label map -> tetrahedra (amLabelMapTetrahedralize, CGAL Mesh_3), and the
+// quality table (amMeshQuality). The surface is prepared once per size (label
 // surface, smoothing, curvature metric, remeshing: not timed here, see BenchmarkSurface).
 // Prints seconds, tetrahedra per second, the quality figures and the peak memory of this process
 // and of the TetGen child process (TetGen runs in a forked child).
 // Run: build/bin/BenchmarkVolume [--benchmark_filter=...]
 #include "amCurvatureMetric.h"
+#include "amLabelMapTetrahedralize.h"
 #include "amLabelSurface.h"
 #include "amMeshQuality.h"
 #include "amMetricRemeshing.h"
@@ -12,6 +14,7 @@
 #include "amTetrahedralize.h"
 #include "amThoraxPhantomSource.h"
 
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkTable.h"
@@ -90,6 +93,44 @@ void Tetrahedralize(benchmark::State& state)
   state.counters["tetgen_peak_MB"] = PeakMegabytes(RUSAGE_CHILDREN);
 }
 
+/// Statistics of the whole mesh (last row of amMeshQuality's table) as counters.
+void QualityCounters(benchmark::State& state, vtkAlgorithmOutput* mesh)
+{
+  vtkNew<amMeshQuality> q;
+  q->SetInputConnection(mesh);
+  q->Update();
+  vtkTable* table = vtkTable::SafeDownCast(q->GetOutputDataObject(1));
+  const vtkIdType all = table->GetNumberOfRows() - 1;
+  state.counters["meanQ"] = table->GetValueByName(all, "MeanQuality").ToDouble();
+  state.counters["worstQ"] = table->GetValueByName(all, "MaximumQuality").ToDouble();
+  state.counters["min_dihedral"] = table->GetValueByName(all, "MinimumDihedralAngle").ToDouble();
+  state.counters["surface_triangles"] = table->GetValueByName(all, "nt").ToDouble();
+}
+
+/// CGAL Mesh_3 from the phantom label map: spacing (tenths of mm); sizes scale with it.
+void LabelMapCGAL(benchmark::State& state)
+{
+  const double h = state.range(0) / 10.0;
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(h, h, h);
+  src->Update();
+  vtkNew<amLabelMapTetrahedralize> m;
+  m->SetInputConnection(src->GetOutputPort(1));
+  m->SetFacetSize(2 * h);
+  m->SetFacetDistance(0.25 * h);
+  m->SetCellSize(3 * h);
+  for (auto _ : state)
+  {
+    m->Modified();
+    m->Update();
+  }
+  const double tets = static_cast<double>(m->GetNumberOfTetrahedra());
+  state.counters["tetrahedra"] = tets;
+  state.counters["tets_per_s"] = benchmark::Counter(tets, benchmark::Counter::kIsIterationInvariantRate);
+  QualityCounters(state, m->GetOutputPort());
+  state.counters["peak_MB"] = PeakMegabytes(RUSAGE_SELF);
+}
+
 void Quality(benchmark::State& state)
 {
   vtkNew<amTetrahedralize> t;
@@ -107,5 +148,6 @@ void Quality(benchmark::State& state)
 
 // Phantom at 2 mm (tolerance 0.5 mm) and at 1 mm (tolerance 0.2 mm, the main job's surface).
 BENCHMARK(Tetrahedralize)->Args({ 20, 50 })->Args({ 10, 20 })->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(LabelMapCGAL)->Arg(40)->Arg(20)->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK(Quality)->Args({ 20, 50 })->Args({ 10, 20 })->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK_MAIN();

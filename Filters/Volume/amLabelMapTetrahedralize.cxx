@@ -1,0 +1,346 @@
+#include "amLabelMapTetrahedralize.h"
+
+#include "amInputCheck.h"
+#include "amProvenance.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMatrix3x3.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Image_3.h>
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_3/polylines_to_protect.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_domain_with_polyline_features_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Random.h>
+#include <CGAL/exude_mesh_3.h>
+#include <CGAL/lloyd_optimize_mesh_3.h>
+#include <CGAL/make_mesh_3.h>
+#include <CGAL/odt_optimize_mesh_3.h>
+#include <CGAL/perturb_mesh_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(amLabelMapTetrahedralize);
+
+namespace
+{
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using ImageDomain = CGAL::Labeled_mesh_domain_3<K>;
+using Domain = CGAL::Mesh_domain_with_polyline_features_3<ImageDomain>;
+using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
+using Criteria = CGAL::Mesh_criteria_3<Tr>;
+using Point = K::Point_3;
+
+/// Six times the signed volume of tetrahedron p[0..3].
+double Determinant(const double p[4][3])
+{
+  double a[3], b[3], c[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    a[d] = p[1][d] - p[0][d];
+    b[d] = p[2][d] - p[0][d];
+    c[d] = p[3][d] - p[0][d];
+  }
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+}
+
+amLabelMapTetrahedralize::amLabelMapTetrahedralize()
+  : BackgroundLabel(0)
+  , FacetDistance(0.5)
+  , FacetSize(4.0)
+  , FacetAngle(30.0)
+  , CellSize(8.0)
+  , CellRadiusEdgeRatio(2.0)
+  , ProtectJunctions(1)
+  , EdgeSize(0.0)
+  , Odt(0)
+  , Lloyd(0)
+  , Perturb(1)
+  , Exude(1)
+  , SliverBound(12.0)
+  , NumberOfTetrahedra(0)
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+amLabelMapTetrahedralize::~amLabelMapTetrahedralize() = default;
+
+int amLabelMapTetrahedralize::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+int amLabelMapTetrahedralize::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkPolyData");
+  return 1;
+}
+
+int amLabelMapTetrahedralize::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkPolyData* interfaces = vtkPolyData::GetData(outputVector, 1);
+  this->NumberOfTetrahedra = 0;
+
+  std::string why;
+  vtkDataArray* scalars = amInputCheck::ScalarImage(input, why);
+  if (!scalars)
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
+  int dims[3];
+  double spacing[3], origin[3];
+  input->GetDimensions(dims);
+  input->GetSpacing(spacing);
+  input->GetOrigin(origin);
+  const double* direction = input->GetDirectionMatrix()->GetData();
+  const vtkIdType nv = scalars->GetNumberOfTuples();
+  const int bg = this->BackgroundLabel;
+  if (bg < 0 || bg > 255)
+  {
+    vtkErrorMacro("BackgroundLabel " << bg << " is outside 0-255, the labels this backend meshes.");
+    return 0;
+  }
+
+  // The label map as an 8-bit CGAL image in its own frame (origin 0, axis-aligned); points are
+  // mapped to the world (origin + direction * p) at the end. The background becomes 0.
+  _image* raw = ::_createImage(dims[0], dims[1], dims[2], 1, spacing[0], spacing[1], spacing[2], 1,
+    WK_FIXED, SGN_UNSIGNED);
+  if (!raw)
+  {
+    vtkErrorMacro("Could not allocate the CGAL image (" << nv << " voxels).");
+    return 0;
+  }
+  CGAL::Image_3 image(raw);
+  unsigned char* voxels = static_cast<unsigned char*>(raw->data);
+  std::map<int, vtkIdType> count;
+  for (vtkIdType i = 0; i < nv; ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (!(v >= 0 && v <= 255 && v == std::floor(v)))
+    {
+      vtkErrorMacro("Voxel " << i << " has the value " << v
+                             << ": this backend meshes whole-number labels 0-255 only.");
+      return 0;
+    }
+    int label = static_cast<int>(v);
+    // Swap the background with 0 so CGAL's outside value is always 0.
+    if (label == bg)
+      label = 0;
+    else if (label == 0)
+      label = bg;
+    voxels[i] = static_cast<unsigned char>(label);
+    ++count[label];
+  }
+  if (count.size() == 1 && count.begin()->first == 0)
+  {
+    vtkErrorMacro("The label map holds only the background label " << bg << ": nothing to mesh.");
+    return 0;
+  }
+  auto toLabel = [bg](int subdomain) { return subdomain == 0 ? bg : (subdomain == bg ? 0 : subdomain); };
+  this->UpdateProgress(0.05);
+
+  CGAL::Random rng(0);
+  Domain domain = Domain::create_labeled_image_mesh_domain(
+    image, CGAL::parameters::relative_error_bound = 1e-6, CGAL::parameters::value_outside = 0,
+    CGAL::parameters::p_rng = &rng);
+  const double edgeSize = this->EdgeSize > 0 ? this->EdgeSize : this->FacetSize;
+  std::size_t curves = 0;
+  if (this->ProtectJunctions)
+  {
+    std::vector<std::vector<Point>> polylines;
+    CGAL::polylines_to_protect<Point, unsigned char>(image, polylines);
+    curves = polylines.size();
+    domain.add_features(polylines.begin(), polylines.end());
+  }
+  this->UpdateProgress(0.1);
+
+  namespace p = CGAL::parameters;
+  Criteria criteria(p::edge_size = edgeSize, p::facet_angle = this->FacetAngle,
+    p::facet_size = this->FacetSize, p::facet_distance = this->FacetDistance,
+    p::cell_radius_edge_ratio = this->CellRadiusEdgeRatio, p::cell_size = this->CellSize);
+  C3t3 c3t3;
+  try
+  {
+    if (this->ProtectJunctions)
+      c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::features(domain), p::no_perturb(), p::no_exude());
+    else
+      c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::no_features(), p::no_perturb(), p::no_exude());
+    this->UpdateProgress(0.6);
+    if (this->Odt)
+      CGAL::odt_optimize_mesh_3(c3t3, domain, p::time_limit = 0, p::max_iteration_number = 20);
+    if (this->Lloyd)
+      CGAL::lloyd_optimize_mesh_3(c3t3, domain, p::time_limit = 0, p::max_iteration_number = 20);
+    this->UpdateProgress(0.75);
+    if (this->Perturb)
+      CGAL::perturb_mesh_3(c3t3, domain, p::time_limit = 0, p::sliver_bound = this->SliverBound);
+    this->UpdateProgress(0.85);
+    if (this->Exude)
+      CGAL::exude_mesh_3(c3t3, p::time_limit = 0, p::sliver_bound = this->SliverBound);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("CGAL Mesh_3 failed: " << e.what());
+    return 0;
+  }
+  this->UpdateProgress(0.9);
+  if (c3t3.number_of_cells_in_complex() == 0)
+  {
+    vtkErrorMacro("CGAL Mesh_3 produced no tetrahedra (are the regions thinner than the sizes asked for?).");
+    return 0;
+  }
+
+  // Output: the vertices of the complex's cells, in the world frame.
+  const Tr& tr = c3t3.triangulation();
+  auto world = [&](Tr::Vertex_handle v) {
+    const Point p = tr.geom_traits().construct_point_3_object()(tr.point(v));
+    const double local[3] = { p.x(), p.y(), p.z() };
+    std::array<double, 3> x;
+    for (int r = 0; r < 3; ++r)
+      x[r] = origin[r] + direction[3 * r] * local[0] + direction[3 * r + 1] * local[1] +
+        direction[3 * r + 2] * local[2];
+    return x;
+  };
+  std::map<Tr::Vertex_handle, vtkIdType> pointId;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  auto id = [&](Tr::Vertex_handle v) {
+    auto it = pointId.find(v);
+    if (it != pointId.end())
+      return it->second;
+    const auto x = world(v);
+    const vtkIdType n = points->InsertNextPoint(x.data());
+    pointId.emplace(v, n);
+    return n;
+  };
+  auto signedVolume = [&](const vtkIdType ids[4]) {
+    double p[4][3];
+    for (int k = 0; k < 4; ++k)
+      points->GetPoint(ids[k], p[k]);
+    return Determinant(p);
+  };
+
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkIntArray> region;
+  region->SetName("Region");
+  std::map<Tr::Cell_handle, vtkIdType> cellId;
+  for (auto c = c3t3.cells_in_complex_begin(); c != c3t3.cells_in_complex_end(); ++c)
+  {
+    vtkIdType ids[4];
+    for (int k = 0; k < 4; ++k)
+      ids[k] = id(c->vertex(k));
+    if (signedVolume(ids) < 0)
+      std::swap(ids[2], ids[3]);
+    cellId.emplace(c, cells->InsertNextCell(4, ids));
+    region->InsertNextValue(toLabel(c3t3.subdomain_index(c)));
+  }
+  output->SetPoints(points);
+  output->SetCells(VTK_TETRA, cells);
+  output->GetCellData()->AddArray(region);
+
+  // Port 1: every facet of the complex (interfaces and boundary) once, higher label first.
+  vtkNew<vtkCellArray> faces;
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfComponents(2);
+  vtkNew<vtkIntArray> adjacent;
+  adjacent->SetName("Tetra");
+  adjacent->SetNumberOfComponents(2);
+  for (auto f = c3t3.facets_in_complex_begin(); f != c3t3.facets_in_complex_end(); ++f)
+  {
+    Tr::Cell_handle c = f->first;
+    int i = f->second;
+    if (tr.is_infinite(c)) // look from the finite side (the apex below must be a real point)
+    {
+      const Tr::Facet mirror = tr.mirror_facet(*f);
+      c = mirror.first;
+      i = mirror.second;
+    }
+    Tr::Cell_handle m = c->neighbor(i);
+    const int li = c3t3.is_in_complex(c) ? toLabel(c3t3.subdomain_index(c)) : bg;
+    const int lm = c3t3.is_in_complex(m) ? toLabel(c3t3.subdomain_index(m)) : bg;
+    if (li == lm)
+      continue;
+    // Labels[0]: the higher label, the background always second (as amLabelSurface).
+    const bool cFirst = (li != bg && (lm == bg || li > lm));
+    vtkIdType tri[3];
+    for (int k = 0, n = 0; k < 4; ++k)
+      if (k != i)
+        tri[n++] = id(c->vertex(k));
+    // Normal from the Labels[0] side into the other: away from c's vertex i when c is first.
+    double p[4][3];
+    for (int k = 0; k < 3; ++k)
+      points->GetPoint(tri[k], p[k]);
+    const auto apex = world(c->vertex(i));
+    std::copy(apex.begin(), apex.end(), p[3]);
+    const double side = Determinant(p); // > 0: the normal (b-a)x(c-a) points towards the apex
+    if ((side > 0) == cFirst)
+      std::swap(tri[1], tri[2]);
+    faces->InsertNextCell(3, tri);
+    const int pair[2] = { cFirst ? li : lm, cFirst ? lm : li };
+    labels->InsertNextTypedTuple(pair);
+    const int cId = c3t3.is_in_complex(c) ? static_cast<int>(cellId[c]) : -1;
+    const int mId = c3t3.is_in_complex(m) ? static_cast<int>(cellId[m]) : -1;
+    const int tets[2] = { cFirst ? cId : mId, cFirst ? mId : cId };
+    adjacent->InsertNextTypedTuple(tets);
+  }
+  interfaces->SetPoints(points);
+  interfaces->SetPolys(faces);
+  interfaces->GetCellData()->AddArray(labels);
+  interfaces->GetCellData()->AddArray(adjacent);
+
+  this->NumberOfTetrahedra = cells->GetNumberOfCells();
+  std::ostringstream params;
+  params << "FacetDistance=" << this->FacetDistance << " FacetSize=" << this->FacetSize
+         << " FacetAngle=" << this->FacetAngle << " CellSize=" << this->CellSize
+         << " CellRadiusEdgeRatio=" << this->CellRadiusEdgeRatio
+         << " ProtectJunctions=" << this->ProtectJunctions << " EdgeSize=" << edgeSize
+         << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
+         << " Perturb=" << this->Perturb << " Exude=" << this->Exude
+         << " SliverBound=" << this->SliverBound << " tetrahedra=" << this->NumberOfTetrahedra;
+  amProvenance::Record(output, input, "amLabelMapTetrahedralize", params.str());
+  amProvenance::Record(interfaces, input, "amLabelMapTetrahedralize", params.str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void amLabelMapTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "BackgroundLabel: " << this->BackgroundLabel << "\n"
+     << indent << "FacetDistance: " << this->FacetDistance << "\n"
+     << indent << "FacetSize: " << this->FacetSize << "\n"
+     << indent << "FacetAngle: " << this->FacetAngle << "\n"
+     << indent << "CellSize: " << this->CellSize << "\n"
+     << indent << "CellRadiusEdgeRatio: " << this->CellRadiusEdgeRatio << "\n"
+     << indent << "ProtectJunctions: " << this->ProtectJunctions << "\n"
+     << indent << "EdgeSize: " << this->EdgeSize << "\n"
+     << indent << "Odt: " << this->Odt << " Lloyd: " << this->Lloyd << " Perturb: " << this->Perturb
+     << " Exude: " << this->Exude << "\n"
+     << indent << "SliverBound: " << this->SliverBound << "\n";
+}

@@ -1,0 +1,141 @@
+/**
+ * @class   amLabelMapTetrahedralize
+ * @brief   Multi-region tetrahedral mesh straight from a label map (CGAL Mesh_3, labeled image
+ *          domain): the second backend of the volume stage, next to amTetrahedralize (TetGen).
+ *
+ * Input: a label map (whole-number scalars 0-255, e.g. amMorphologyCleaning's output; origin,
+ * spacing and direction honoured). Every label other than BackgroundLabel becomes a subdomain.
+ * CGAL's Delaunay refinement samples the interfaces of the (trilinearly interpolated) label
+ * function and refines until the criteria hold: FacetDistance (surface approximation, mm),
+ * FacetSize and FacetAngle (surface triangles), CellSize and CellRadiusEdgeRatio (tetrahedra).
+ * With ProtectJunctions (default), the curves where three or more labels meet (and where labels
+ * meet the image border) are found in the image (CGAL's polylines_to_protect) and protected by
+ * balls of EdgeSize, so junctions come out as sharp shared edges. Then the optional optimisers:
+ * ODT, Lloyd, sliver perturbation, sliver exudation (CGAL's order). A fixed random seed makes the
+ * result reproducible.
+ *
+ * Output conventions are those of amTetrahedralize, so downstream filters do not care which
+ * backend ran: port 0, tetrahedra (positive volume) with cell data "Region" (the label);
+ * port 1, the boundary and interface triangles with cell data "Labels" (2 components: the higher
+ * label first, the normal pointing from Labels[0] into Labels[1]) and "Tetra" (the tetrahedron on
+ * either side, -1 outside).
+ *
+ * Kept in its own translation unit: CGAL Mesh_3 is heavy to compile.
+ */
+#ifndef amLabelMapTetrahedralize_h
+#define amLabelMapTetrahedralize_h
+
+#include "AnatomeshFiltersVolumeModule.h" // export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+class ANATOMESHFILTERSVOLUME_EXPORT amLabelMapTetrahedralize : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static amLabelMapTetrahedralize* New();
+  vtkTypeMacro(amLabelMapTetrahedralize, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Label of the outside, not meshed (default 0).
+  vtkSetMacro(BackgroundLabel, int);
+  vtkGetMacro(BackgroundLabel, int);
+  ///@}
+
+  ///@{
+  /// Largest distance between a surface triangle's circumcentre and the interface, mm (default 0.5).
+  vtkSetClampMacro(FacetDistance, double, 1e-6, 1e6);
+  vtkGetMacro(FacetDistance, double);
+  ///@}
+
+  ///@{
+  /// Largest surface Delaunay ball radius, mm (default 4).
+  vtkSetClampMacro(FacetSize, double, 1e-6, 1e6);
+  vtkGetMacro(FacetSize, double);
+  ///@}
+
+  ///@{
+  /// Smallest surface triangle angle, degrees (default 30; CGAL guarantees termination up to 30).
+  vtkSetClampMacro(FacetAngle, double, 0.0, 30.0);
+  vtkGetMacro(FacetAngle, double);
+  ///@}
+
+  ///@{
+  /// Largest tetrahedron circumradius, mm (default 8).
+  vtkSetClampMacro(CellSize, double, 1e-6, 1e6);
+  vtkGetMacro(CellSize, double);
+  ///@}
+
+  ///@{
+  /// Largest circumradius-to-shortest-edge ratio (default 2; CGAL needs >= 2 to terminate).
+  vtkSetClampMacro(CellRadiusEdgeRatio, double, 1.0, 100.0);
+  vtkGetMacro(CellRadiusEdgeRatio, double);
+  ///@}
+
+  ///@{
+  /// Protect the junction curves found in the image (default on).
+  vtkSetMacro(ProtectJunctions, vtkTypeBool);
+  vtkGetMacro(ProtectJunctions, vtkTypeBool);
+  vtkBooleanMacro(ProtectJunctions, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Size of the protecting balls along junction curves, mm (default 0: FacetSize).
+  vtkSetClampMacro(EdgeSize, double, 0.0, 1e6);
+  vtkGetMacro(EdgeSize, double);
+  ///@}
+
+  ///@{
+  /// Optimisers, in CGAL's order: ODT and Lloyd smoothing (default off), sliver perturbation and
+  /// exudation (default on).
+  vtkSetMacro(Odt, vtkTypeBool);
+  vtkGetMacro(Odt, vtkTypeBool);
+  vtkBooleanMacro(Odt, vtkTypeBool);
+  vtkSetMacro(Lloyd, vtkTypeBool);
+  vtkGetMacro(Lloyd, vtkTypeBool);
+  vtkBooleanMacro(Lloyd, vtkTypeBool);
+  vtkSetMacro(Perturb, vtkTypeBool);
+  vtkGetMacro(Perturb, vtkTypeBool);
+  vtkBooleanMacro(Perturb, vtkTypeBool);
+  vtkSetMacro(Exude, vtkTypeBool);
+  vtkGetMacro(Exude, vtkTypeBool);
+  vtkBooleanMacro(Exude, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Smallest dihedral angle the perturbation and exudation aim for, degrees (default 12).
+  vtkSetClampMacro(SliverBound, double, 0.0, 30.0);
+  vtkGetMacro(SliverBound, double);
+  ///@}
+
+  /// Tetrahedra of the last run.
+  vtkGetMacro(NumberOfTetrahedra, vtkIdType);
+
+protected:
+  amLabelMapTetrahedralize();
+  ~amLabelMapTetrahedralize() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int BackgroundLabel;
+  double FacetDistance;
+  double FacetSize;
+  double FacetAngle;
+  double CellSize;
+  double CellRadiusEdgeRatio;
+  vtkTypeBool ProtectJunctions;
+  double EdgeSize;
+  vtkTypeBool Odt;
+  vtkTypeBool Lloyd;
+  vtkTypeBool Perturb;
+  vtkTypeBool Exude;
+  double SliverBound;
+  vtkIdType NumberOfTetrahedra;
+
+private:
+  amLabelMapTetrahedralize(const amLabelMapTetrahedralize&) = delete;
+  void operator=(const amLabelMapTetrahedralize&) = delete;
+};
+
+#endif

@@ -1,0 +1,208 @@
+// amLabelMapTetrahedralize (CGAL Mesh_3 backend): volumes against analytic balls, interfaces that
+// bound the tetrahedra exactly, the world frame (origin, direction), every phantom organ, same
+// result twice, bad input.
+#include "amLabelMapTetrahedralize.h"
+#include "amSurfaceTestUtilities.h"
+#include "amTestUtilities.h"
+#include "amThoraxPhantomSource.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace
+{
+double Det(const double a[3], const double b[3], const double c[3], const double d[3])
+{
+  double u[3], v[3], w[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    u[k] = b[k] - a[k];
+    v[k] = c[k] - a[k];
+    w[k] = d[k] - a[k];
+  }
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+    u[2] * (v[0] * w[1] - v[1] * w[0]);
+}
+
+/// Per region: volume of its tetrahedra, and the number with non-positive volume.
+std::map<int, double> TetVolumes(vtkUnstructuredGrid* g, int* bad, double centroid[3], int which)
+{
+  std::map<int, double> v;
+  *bad = 0;
+  vtkDataArray* region = g->GetCellData()->GetArray("Region");
+  double weight = 0;
+  centroid[0] = centroid[1] = centroid[2] = 0;
+  for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
+  {
+    double p[4][3];
+    for (int k = 0; k < 4; ++k)
+      g->GetPoint(g->GetCell(c)->GetPointId(k), p[k]);
+    const double vol = Det(p[0], p[1], p[2], p[3]) / 6;
+    *bad += vol <= 0;
+    const int r = static_cast<int>(region->GetComponent(c, 0));
+    v[r] += vol;
+    if (r == which)
+    {
+      for (int d = 0; d < 3; ++d)
+        centroid[d] += vol * (p[0][d] + p[1][d] + p[2][d] + p[3][d]) / 4;
+      weight += vol;
+    }
+  }
+  for (int d = 0; d < 3; ++d)
+    centroid[d] /= weight;
+  return v;
+}
+
+/// Per region: the volume its interface triangles enclose (outward = from Labels[0] to Labels[1]).
+std::map<int, double> EnclosedVolumes(vtkPolyData* s)
+{
+  std::map<int, double> v;
+  vtkDataArray* labels = s->GetCellData()->GetArray("Labels");
+  const double o[3] = { 0, 0, 0 };
+  for (vtkIdType t = 0; t < s->GetNumberOfCells(); ++t)
+  {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      s->GetPoint(s->GetCell(t)->GetPointId(k), p[k]);
+    const double vol = Det(o, p[0], p[1], p[2]) / 6;
+    v[static_cast<int>(labels->GetComponent(t, 0))] += vol;
+    v[static_cast<int>(labels->GetComponent(t, 1))] -= vol;
+  }
+  return v;
+}
+
+struct Meshing
+{
+  vtkSmartPointer<vtkUnstructuredGrid> Mesh;
+  vtkSmartPointer<vtkPolyData> Interfaces;
+  bool Ok = false;
+  std::string Errors;
+};
+
+Meshing MeshIt(vtkImageData* labels, double facetSize, double cellSize, double distance)
+{
+  vtkNew<amLabelMapTetrahedralize> m;
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(m);
+  errors->Watch(m->GetExecutive());
+  m->SetInputData(labels);
+  m->SetFacetSize(facetSize);
+  m->SetCellSize(cellSize);
+  m->SetFacetDistance(distance);
+  Meshing r;
+  r.Ok = m->GetExecutive()->Update() != 0 && !errors->HasError();
+  r.Mesh = m->GetOutput();
+  r.Interfaces = vtkPolyData::SafeDownCast(m->GetOutputDataObject(1));
+  r.Errors = errors->AllErrors();
+  return r;
+}
+
+/// A ball of radius 10 mm (label 2) in a ball of radius 18 mm (label 1), centred at c, in a
+/// rotated frame.
+vtkSmartPointer<vtkImageData> NestedBalls(const double c[3], vtkMatrix3x3* direction)
+{
+  const double origin[3] = { 0, 0, 0 };
+  auto img = amTest::LabelMap(48, 48, 48, 1.0, origin, [](double x, double y, double z) {
+    const double r = std::sqrt((x - 23.5) * (x - 23.5) + (y - 23.5) * (y - 23.5) + (z - 23.5) * (z - 23.5));
+    return r < 10 ? 2 : (r < 18 ? 1 : 0);
+  });
+  // World = origin + D * index: put the ball centre (23.5, 23.5, 23.5) in index space at c.
+  double local[3] = { 23.5, 23.5, 23.5 }, rotated[3];
+  direction->MultiplyPoint(local, rotated);
+  img->SetOrigin(c[0] - rotated[0], c[1] - rotated[1], c[2] - rotated[2]);
+  img->SetDirectionMatrix(direction);
+  return img;
+}
+}
+
+TEST(LabelMapTetrahedralize, NestedBallsVolumesAndInterfaces)
+{
+  vtkNew<vtkMatrix3x3> direction; // a rotation of 30 degrees about z
+  const double a = M_PI / 6;
+  direction->SetElement(0, 0, std::cos(a));
+  direction->SetElement(0, 1, -std::sin(a));
+  direction->SetElement(1, 0, std::sin(a));
+  direction->SetElement(1, 1, std::cos(a));
+  const double c[3] = { -40, 15, 120 };
+  const Meshing r = MeshIt(NestedBalls(c, direction), 2.0, 3.0, 0.2);
+  ASSERT_TRUE(r.Ok) << r.Errors;
+  int bad = 0;
+  double centroid[3];
+  const auto tets = TetVolumes(r.Mesh, &bad, centroid, 2);
+  EXPECT_EQ(bad, 0);
+  ASSERT_EQ(tets.size(), 2u);
+  const double v2 = 4.0 / 3 * M_PI * 1000, v1 = 4.0 / 3 * M_PI * (18 * 18 * 18) - v2;
+  EXPECT_NEAR(tets.at(2), v2, 0.03 * v2);
+  EXPECT_NEAR(tets.at(1), v1, 0.03 * v1);
+  for (int d = 0; d < 3; ++d)
+    EXPECT_NEAR(centroid[d], c[d], 0.2) << d; // the world frame is honoured
+  // The interface triangles bound each region's tetrahedra exactly, oriented outwards.
+  const auto enclosed = EnclosedVolumes(r.Interfaces);
+  EXPECT_NEAR(enclosed.at(2), tets.at(2), 1e-9 * v2);
+  EXPECT_NEAR(enclosed.at(1), tets.at(1), 1e-9 * v1);
+  std::set<std::pair<int, int>> pairs;
+  vtkDataArray* labels = r.Interfaces->GetCellData()->GetArray("Labels");
+  for (vtkIdType t = 0; t < r.Interfaces->GetNumberOfCells(); ++t)
+    pairs.insert({ static_cast<int>(labels->GetComponent(t, 0)), static_cast<int>(labels->GetComponent(t, 1)) });
+  EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 1, 0 }, { 2, 1 } }));
+}
+
+TEST(LabelMapTetrahedralize, EveryPhantomOrganAndTheSameMeshTwice)
+{
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(4, 4, 4);
+  src->Update();
+  vtkImageData* labels = vtkImageData::SafeDownCast(src->GetOutputDataObject(1));
+  const Meshing a = MeshIt(labels, 8.0, 12.0, 1.5);
+  ASSERT_TRUE(a.Ok) << a.Errors;
+  int bad = 0;
+  double centroid[3];
+  const auto tets = TetVolumes(a.Mesh, &bad, centroid, 1);
+  EXPECT_EQ(bad, 0);
+  std::set<int> regions;
+  for (const auto& kv : tets)
+    regions.insert(kv.first);
+  EXPECT_EQ(regions, (std::set<int>{ 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 }));
+  const Meshing b = MeshIt(labels, 8.0, 12.0, 1.5);
+  ASSERT_TRUE(b.Ok) << b.Errors;
+  ASSERT_EQ(a.Mesh->GetNumberOfPoints(), b.Mesh->GetNumberOfPoints());
+  ASSERT_EQ(a.Mesh->GetNumberOfCells(), b.Mesh->GetNumberOfCells());
+  for (vtkIdType p = 0; p < a.Mesh->GetNumberOfPoints(); p += 97)
+    for (int d = 0; d < 3; ++d)
+      ASSERT_EQ(a.Mesh->GetPoint(p)[d], b.Mesh->GetPoint(p)[d]);
+}
+
+TEST(LabelMapTetrahedralize, BadInput)
+{
+  const double origin[3] = { 0, 0, 0 };
+  {
+    vtkNew<vtkImageData> empty;
+    const Meshing r = MeshIt(empty, 2, 3, 0.5);
+    EXPECT_FALSE(r.Ok);
+    EXPECT_NE(r.Errors.find("empty"), std::string::npos) << r.Errors;
+  }
+  {
+    const Meshing r = MeshIt(amTest::LabelMap(8, 8, 8, 1.0, origin, [](double, double, double) { return 0; }), 2, 3, 0.5);
+    EXPECT_FALSE(r.Ok);
+    EXPECT_NE(r.Errors.find("only the background"), std::string::npos) << r.Errors;
+  }
+  {
+    const Meshing r = MeshIt(amTest::LabelMap(8, 8, 8, 1.0, origin, [](double x, double, double) { return x > 3 ? 300 : 0; }), 2, 3, 0.5);
+    EXPECT_FALSE(r.Ok);
+    EXPECT_NE(r.Errors.find("0-255"), std::string::npos) << r.Errors;
+    EXPECT_EQ(r.Mesh->GetNumberOfCells(), 0);
+  }
+}
