@@ -226,6 +226,14 @@ public:
     };
     for (size_t n = 0; n < ids.size(); ++n)
     {
+      // A new triangle with (nearly) no area is refused like a crossing: TetGen rejects those.
+      const Vec3 e0 = pos[n][1] - pos[n][0], e1 = pos[n][2] - pos[n][0], e2 = pos[n][2] - pos[n][1];
+      const double longest2 = std::max({ e0.squaredNorm(), e1.squaredNorm(), e2.squaredNorm() });
+      if (e0.cross(e1).norm() <= 1e-6 * longest2)
+      {
+        this->LastHit = -1;
+        return true;
+      }
       for (size_t m = n + 1; m < ids.size(); ++m)
         if (pairCrosses(ids[n], pos[n], ids[m], pos[m].data()))
         {
@@ -848,8 +856,22 @@ public:
     return this->SplitEdge(t, k, Vec3(cl)) ? 1 : 0;
   }
 
+  /// Flip the edges opposite vertex v where that improves the angles.
+  void FlipAround(int v)
+  {
+    std::vector<std::pair<int, int>> link;
+    for (int t : this->VT[v])
+      for (int k = 0; k < 3; ++k)
+        if (this->T[t].V[k] == v)
+          link.emplace_back(this->T[t].V[(k + 1) % 3], this->T[t].V[(k + 2) % 3]);
+    for (const auto& e : link)
+      this->Flip(e.first, e.second);
+  }
+
   /// Insert x into triangle t (1 -> 3), then improve the neighbourhood by flips; refused when the
-  /// new triangles would cross another triangle. Returns whether it was done.
+  /// new triangles would cross another triangle. A point that falls near an edge of t (a new
+  /// triangle would get under 10 % of t's area) splits that edge instead, so no sliver triangle
+  /// appears. Returns whether it was done.
   bool Insert(int t, const Vec3& x)
   {
     if (!this->T[t].Alive)
@@ -857,6 +879,28 @@ public:
     const Tri like = this->T[t];
     const int v = static_cast<int>(this->P.size());
     const int* w = like.V;
+    {
+      const Vec3 n = (this->P[w[1]] - this->P[w[0]]).cross(this->P[w[2]] - this->P[w[0]]);
+      int k = -1;
+      double smallest = 0.1;
+      for (int e = 0; e < 3; ++e)
+      {
+        const Vec3& p = this->P[w[e]];
+        const double fraction = n.dot((this->P[w[(e + 1) % 3]] - p).cross(x - p)) / n.squaredNorm();
+        if (fraction < smallest)
+        {
+          smallest = fraction;
+          k = e;
+        }
+      }
+      if (k >= 0)
+      {
+        if (!this->SplitEdge(t, k, x))
+          return false;
+        this->FlipAround(static_cast<int>(this->P.size()) - 1);
+        return true;
+      }
+    }
     if (this->Crosses({ { w[0], w[1], v }, { w[1], w[2], v }, { w[2], w[0], v } },
           { { this->P[w[0]], this->P[w[1]], x }, { this->P[w[1]], this->P[w[2]], x },
             { this->P[w[2]], this->P[w[0]], x } },
@@ -873,8 +917,7 @@ public:
     this->AddTriangle(like.V[0], like.V[1], v, like);
     this->AddTriangle(like.V[1], like.V[2], v, like);
     this->AddTriangle(like.V[2], like.V[0], v, like);
-    for (int k = 0; k < 3; ++k)
-      this->Flip(like.V[k], like.V[(k + 1) % 3]);
+    this->FlipAround(v);
     return true;
   }
 };
