@@ -1,0 +1,189 @@
+#include "amGmshWriter.h"
+
+#include "amAtomicFile.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <vector>
+
+vtkStandardNewMacro(amGmshWriter);
+
+amGmshWriter::amGmshWriter()
+  : FileName(nullptr)
+  , RegionArrayName(nullptr)
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(0);
+  this->SetRegionArrayName("Region");
+}
+
+amGmshWriter::~amGmshWriter()
+{
+  this->SetFileName(nullptr);
+  this->SetRegionArrayName(nullptr);
+}
+
+int amGmshWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  return 1;
+}
+
+vtkTypeBool amGmshWriter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+    return this->WriteData(vtkDataObject::GetData(inputVector[0], 0));
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+int amGmshWriter::Write()
+{
+  this->LastWriteOk = false;
+  this->Modified();
+  this->Update();
+  return this->LastWriteOk ? 1 : 0;
+}
+
+int amGmshWriter::WriteData(vtkDataObject* data)
+{
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No FileName set.");
+    return 0;
+  }
+  const std::string target = this->FileName;
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid || grid->GetNumberOfCells() == 0)
+  {
+    vtkErrorMacro("Cannot write '" << target << "': the input has no tetrahedra.");
+    return 0;
+  }
+  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const double* x = grid->GetPoint(i);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      vtkErrorMacro("Cannot write '" << target << "': point " << i << " has a non-finite coordinate.");
+      return 0;
+    }
+  }
+  vtkDataArray* regionArray =
+    this->RegionArrayName ? grid->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
+  // Cells grouped by region (the entity blocks), each region's bounding box for $Entities.
+  std::map<long long, std::vector<vtkIdType>> byRegion;
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    if (grid->GetCellType(c) != VTK_TETRA)
+    {
+      vtkErrorMacro("Cannot write '" << target << "': cell " << c << " has VTK type " << grid->GetCellType(c)
+                                     << "; only tetrahedra are written.");
+      return 0;
+    }
+    const double r = regionArray ? regionArray->GetComponent(c, 0) : 1.0;
+    if (!(r >= 1 && r == std::floor(r)))
+    {
+      vtkErrorMacro("Cannot write '" << target << "': cell " << c << " has region " << r
+                                     << "; Gmsh physical tags must be positive whole numbers.");
+      return 0;
+    }
+    byRegion[static_cast<long long>(r)].push_back(c);
+  }
+
+  amAtomicFile file(target);
+  std::string why;
+  if (!file.CanWrite(why))
+  {
+    vtkErrorMacro("Cannot write '" << target << "': " << why << ".");
+    return 0;
+  }
+  {
+    std::ofstream out(file.TemporaryPath());
+    out.precision(17);
+    out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+    out << "$PhysicalNames\n" << byRegion.size() << "\n";
+    for (const auto& kv : byRegion)
+      out << "3 " << kv.first << " \"Region " << kv.first << "\"\n";
+    out << "$EndPhysicalNames\n";
+    // One volume entity per region, tagged like its physical group; no lower-dimensional entities.
+    out << "$Entities\n0 0 0 " << byRegion.size() << "\n";
+    for (const auto& kv : byRegion)
+    {
+      std::array<double, 6> box = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
+      for (vtkIdType c : kv.second)
+        for (int k = 0; k < 4; ++k)
+        {
+          const double* x = grid->GetPoint(grid->GetCell(c)->GetPointId(k));
+          for (int d = 0; d < 3; ++d)
+          {
+            box[d] = std::min(box[d], x[d]);
+            box[3 + d] = std::max(box[3 + d], x[d]);
+          }
+        }
+      out << kv.first;
+      for (double b : box)
+        out << " " << b;
+      out << " 1 " << kv.first << " 0\n";
+    }
+    out << "$EndEntities\n";
+    // All nodes in one block, classified on the first volume.
+    out << "$Nodes\n1 " << np << " 1 " << np << "\n3 " << byRegion.begin()->first << " 0 " << np << "\n";
+    for (vtkIdType i = 0; i < np; ++i)
+      out << i + 1 << "\n";
+    for (vtkIdType i = 0; i < np; ++i)
+    {
+      const double* x = grid->GetPoint(i);
+      out << x[0] << " " << x[1] << " " << x[2] << "\n";
+    }
+    out << "$EndNodes\n";
+    out << "$Elements\n" << byRegion.size() << " " << nc << " 1 " << nc << "\n";
+    vtkIdType done = 0;
+    for (const auto& kv : byRegion)
+    {
+      out << "3 " << kv.first << " 4 " << kv.second.size() << "\n";
+      for (vtkIdType c : kv.second)
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        grid->GetCellPoints(c, n, ids);
+        out << c + 1 << " " << ids[0] + 1 << " " << ids[1] + 1 << " " << ids[2] + 1 << " " << ids[3] + 1 << "\n";
+        if (++done % 65536 == 0)
+          this->UpdateProgress(static_cast<double>(done) / nc);
+      }
+    }
+    out << "$EndElements\n";
+    if (!out.flush())
+    {
+      vtkErrorMacro("Cannot write '" << target << "': output error (disk full?).");
+      return 0;
+    }
+  }
+  if (!file.Commit(why))
+  {
+    vtkErrorMacro("Cannot write '" << target << "': " << why);
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  this->LastWriteOk = true;
+  return 1;
+}
+
+void amGmshWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)") << "\n";
+}

@@ -1,0 +1,62 @@
+/**
+ * @class   amGmshWriter
+ * @brief   Writes a tetrahedral mesh as a Gmsh 4.1 ASCII file (.msh) with one physical volume
+ *          group per region.
+ *
+ * Input: a vtkUnstructuredGrid of tetrahedra (e.g. Tetrahedralize or Label Map Tetrahedralize)
+ * with the cell-data array RegionArrayName (default "Region"; one region 1 when absent). Each
+ * region becomes an elementary volume entity and a physical group whose tag is the region label
+ * (labels must be positive: Gmsh tags are) and whose name is "Region <label>"; nodes are numbered
+ * from 1 in point order, elements from 1 in cell order. Coordinates are written with 17 significant
+ * digits. Any other cell type, a non-positive label or a non-finite coordinate is an error naming
+ * it. The file appears atomically (temporary name, then rename).
+ */
+#ifndef amGmshWriter_h
+#define amGmshWriter_h
+
+#include "AnatomeshIOMeshModule.h" // export macro
+#include "vtkAlgorithm.h"
+
+class ANATOMESHIOMESH_EXPORT amGmshWriter : public vtkAlgorithm
+{
+public:
+  static amGmshWriter* New();
+  vtkTypeMacro(amGmshWriter, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Target .msh file.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /// Cell-data array holding region labels (default "Region").
+  vtkSetStringMacro(RegionArrayName);
+  vtkGetStringMacro(RegionArrayName);
+  ///@}
+
+  /// Set the mesh to write without a pipeline connection.
+  void SetInputData(vtkDataObject* input) { this->SetInputDataInternal(0, input); }
+
+  /// Write the input. Returns 1 on success, 0 on error (reported with vtkErrorMacro).
+  int Write();
+
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+protected:
+  amGmshWriter();
+  ~amGmshWriter() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int WriteData(vtkDataObject* input);
+
+  char* FileName;
+  char* RegionArrayName;
+
+private:
+  bool LastWriteOk = false;
+  amGmshWriter(const amGmshWriter&) = delete;
+  void operator=(const amGmshWriter&) = delete;
+};
+
+#endif

@@ -1,0 +1,116 @@
+// amGmshWriter: a two-region tetrahedral mesh written as Gmsh 4.1 and parsed back section by
+// section (physical groups, entities, nodes, elements); bad input leaves no file.
+#include "amGmshWriter.h"
+#include "amTestUtilities.h"
+
+#include "vtkCellData.h"
+#include "vtkExecutive.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace
+{
+vtkSmartPointer<vtkUnstructuredGrid> TwoRegions()
+{
+  auto g = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> p;
+  p->SetDataTypeToDouble();
+  const double x[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.1, 0.2, -1.0 / 3 } };
+  for (const auto& q : x)
+    p->InsertNextPoint(q);
+  g->SetPoints(p);
+  const vtkIdType a[4] = { 0, 1, 2, 3 }, b[4] = { 0, 2, 1, 4 };
+  g->InsertNextCell(VTK_TETRA, 4, a);
+  g->InsertNextCell(VTK_TETRA, 4, b);
+  vtkNew<vtkIntArray> r;
+  r->SetName("Region");
+  r->InsertNextValue(6);
+  r->InsertNextValue(3);
+  g->GetCellData()->AddArray(r);
+  return g;
+}
+
+std::map<std::string, std::vector<std::string>> Sections(const std::string& path)
+{
+  std::ifstream in(path);
+  std::map<std::string, std::vector<std::string>> s;
+  std::string line, current;
+  while (std::getline(in, line))
+  {
+    if (line.rfind("$End", 0) == 0)
+      current.clear();
+    else if (line[0] == '$')
+      current = line.substr(1);
+    else if (!current.empty())
+      s[current].push_back(line);
+  }
+  return s;
+}
+}
+
+TEST(GmshWriter, TwoRegionsAsPhysicalVolumes)
+{
+  const std::string path = amTest::TempPath("two.msh");
+  vtkNew<amGmshWriter> w;
+  w->SetInputData(TwoRegions());
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  auto s = Sections(path);
+  EXPECT_EQ(s["MeshFormat"], (std::vector<std::string>{ "4.1 0 8" }));
+  EXPECT_EQ(s["PhysicalNames"], (std::vector<std::string>{ "2", "3 3 \"Region 3\"", "3 6 \"Region 6\"" }));
+  ASSERT_EQ(s["Entities"].size(), 3u);
+  EXPECT_EQ(s["Entities"][0], "0 0 0 2");
+  EXPECT_EQ(s["Entities"][1].substr(0, 2), "3 ");
+  EXPECT_NE(s["Entities"][1].find(" 1 3 0"), std::string::npos) << s["Entities"][1]; // physical tag 3
+  // Nodes: header, block header, 5 tags, 5 coordinates that read back exactly.
+  ASSERT_EQ(s["Nodes"].size(), 12u);
+  EXPECT_EQ(s["Nodes"][0], "1 5 1 5");
+  std::istringstream last(s["Nodes"][11]);
+  double c[3];
+  last >> c[0] >> c[1] >> c[2];
+  EXPECT_EQ(c[0], 0.1);
+  EXPECT_EQ(c[1], 0.2);
+  EXPECT_EQ(c[2], -1.0 / 3);
+  // Elements: one block per region (sorted by label), 1-based node tags, cell order kept as tags.
+  EXPECT_EQ(s["Elements"], (std::vector<std::string>{ "2 2 1 2", "3 3 4 1", "2 1 3 2 5", "3 6 4 1", "1 1 2 3 4" }));
+}
+
+TEST(GmshWriter, BadInputLeavesNoFile)
+{
+  auto check = [](vtkUnstructuredGrid* g, const char* name, const char* expected) {
+    const std::string path = amTest::TempPath(name);
+    std::remove(path.c_str());
+    vtkNew<amGmshWriter> w;
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(w);
+    errors->Watch(w->GetExecutive());
+    w->SetInputData(g);
+    w->SetFileName(path.c_str());
+    EXPECT_EQ(w->Write(), 0);
+    EXPECT_NE(errors->AllErrors().find(expected), std::string::npos) << errors->AllErrors();
+    EXPECT_NE(errors->AllErrors().find(name), std::string::npos) << errors->AllErrors();
+    EXPECT_FALSE(amTest::Exists(path));
+  };
+  auto zero = TwoRegions();
+  vtkIntArray::SafeDownCast(zero->GetCellData()->GetArray("Region"))->SetValue(1, 0);
+  check(zero, "zero.msh", "positive");
+  auto mixed = TwoRegions();
+  const vtkIdType tri[3] = { 0, 1, 2 };
+  mixed->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  vtkIntArray::SafeDownCast(mixed->GetCellData()->GetArray("Region"))->InsertNextValue(1);
+  check(mixed, "mixed.msh", "only tetrahedra");
+  auto nan = TwoRegions();
+  nan->GetPoints()->SetPoint(4, 0, std::nan(""), 0);
+  check(nan, "nan.msh", "non-finite");
+  vtkNew<vtkUnstructuredGrid> empty;
+  check(empty, "empty.msh", "no tetrahedra");
+}
