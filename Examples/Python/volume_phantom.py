@@ -5,7 +5,9 @@ Chain: exact phantom labels -> one conforming surface (amLabelSurface) -> smooth
 Hausdorff-bounded remeshing -> TetGen constrained Delaunay mesh with graded sizes
 (amTetrahedralize) -> element quality and the per-region table (amMeshQuality).
 Checks every surface region is present in the tetrahedral mesh with the volume its surface
-encloses, and that no tetrahedron is inverted; prints the table; writes .vtu, .mesh and .csv.
+encloses, and that no tetrahedron is inverted; prints the table; writes .vtu, .mesh, .msh, .csv.
+Then the second backend, CGAL Mesh_3 straight from the label map (amLabelMapTetrahedralize),
+with its table beside: every organ must be there too.
 
 Usage: /usr/bin/python3 Examples/Python/volume_phantom.py [OUTPUT_DIR] [SPACING_MM] [TOLERANCE_MM]
 """
@@ -89,9 +91,36 @@ medit = anatomesh.amMeditWriter()
 medit.SetInputData(mesh)
 medit.SetFileName(os.path.join(out, "thorax_tets.mesh"))
 medit.Write()
+gmsh = anatomesh.amGmshWriter()
+gmsh.SetInputData(mesh)
+gmsh.SetFileName(os.path.join(out, "thorax_tets.msh"))
+gmsh.Write()
 with open(os.path.join(out, "thorax_quality.csv"), "w") as f:
     f.write(",".join(columns) + "\n")
     for r in range(table.GetNumberOfRows()):
         f.write(",".join("%.10g" % table.GetValue(r, c).ToDouble() for c in range(len(columns))) + "\n")
+cgal = anatomesh.amLabelMapTetrahedralize()
+cgal.SetInputConnection(phantom.GetOutputPort(1))
+cgal.SetFacetSize(2 * spacing)
+cgal.SetCellSize(3 * spacing)
+cgal.SetFacetDistance(tolerance / 2)
+cgal_quality = anatomesh.amMeshQuality()
+cgal_quality.SetInputConnection(cgal.GetOutputPort(0))
+cgal_quality.Update()
+t2 = cgal_quality.GetOutputDataObject(1)
+print("CGAL Mesh_3 from the label map: %d tetrahedra" % cgal.GetNumberOfTetrahedra())
+cgal_regions = set()
+for r in range(t2.GetNumberOfRows()):
+    row = {n: t2.GetValue(r, c).ToDouble() for c, n in enumerate(columns)}
+    region = int(row["Region"])
+    print("%6s %8d %8d %9d %7.3f %9.2f %9.2f %8d %12.1f" % (
+        "all" if region == -1 else region, row["np"], row["nt"], row["ne"], row["MeanQuality"],
+        row["MaximumQuality"], row["MinimumDihedralAngle"], row["InvertedTetrahedra"], row["Volume"]))
+    ok = ok and row["InvertedTetrahedra"] == 0
+    if region != -1:
+        cgal_regions.add(region)
+if cgal_regions != set(range(1, 11)):
+    print("organs missing from the CGAL mesh:", sorted(set(range(1, 11)) - cgal_regions))
+    ok = False
 print("wrote", out)
 sys.exit(0 if ok else 1)

@@ -47,6 +47,10 @@ struct Tri
   bool Alive;
 };
 
+/// Smallest angle (radians) an insertion or edge split may create: a refused one refines
+/// the triangle instead (longest-edge split), which makes room for the next attempt.
+const double MinimumNewAngle = 2.0 * M_PI / 180.0;
+
 double MinAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 p[3] = { a, b, c };
@@ -775,6 +779,7 @@ public:
   /// would cross another triangle. Returns whether it was done.
   bool SplitEdge(int t, int k, Vec3 x)
   {
+    this->LastHit = -1;
     if (!this->T[t].Alive)
       return false;
     const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
@@ -813,6 +818,9 @@ public:
       ids.push_back({ v, h.Q, h.C });
       pos.push_back({ x, this->P[h.Q], this->P[h.C] });
     }
+    for (const auto& q : pos)
+      if (MinAngle(q[0], q[1], q[2]) < MinimumNewAngle)
+        return false;
     if (this->Crosses(ids, pos, edge))
       return false;
     this->P.push_back(x);
@@ -874,6 +882,7 @@ public:
   /// appears. Returns whether it was done.
   bool Insert(int t, const Vec3& x)
   {
+    this->LastHit = -1;
     if (!this->T[t].Alive)
       return false;
     const Tri like = this->T[t];
@@ -895,12 +904,19 @@ public:
       }
       if (k >= 0)
       {
-        if (!this->SplitEdge(t, k, x))
+        // Only where x lies beside the edge's middle part; near a corner, neither split is good.
+        const Vec3& p = this->P[w[k]];
+        const Vec3 e = this->P[w[(k + 1) % 3]] - p;
+        const double along = e.dot(x - p) / e.squaredNorm();
+        if (along < 0.15 || along > 0.85 || !this->SplitEdge(t, k, x))
           return false;
         this->FlipAround(static_cast<int>(this->P.size()) - 1);
         return true;
       }
     }
+    for (int e = 0; e < 3; ++e)
+      if (MinAngle(this->P[w[e]], this->P[w[(e + 1) % 3]], x) < MinimumNewAngle)
+        return false;
     if (this->Crosses({ { w[0], w[1], v }, { w[1], w[2], v }, { w[2], w[0], v } },
           { { this->P[w[0]], this->P[w[1]], x }, { this->P[w[1]], this->P[w[2]], x },
             { this->P[w[2]], this->P[w[0]], x } },

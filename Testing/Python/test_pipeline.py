@@ -34,7 +34,7 @@ class ThoraxJob(unittest.TestCase):
         code, stdout, stderr = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"),
                                    "--output", out, "--set", "spacing=4", "--set", "tolerance=1")
         self.assertEqual(code, 0, stderr)
-        self.assertIn("Wrote 9 file(s)", stdout)
+        self.assertIn("Wrote 10 file(s)", stdout)
         self.assertIn("phantom", stderr)  # progress lines
         import anatomesh
         from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -63,7 +63,7 @@ class ThoraxJob(unittest.TestCase):
         self.assertTrue(set(pairs.ravel().tolist()) <= {0, 3, 4, 6, 7, 8})
         # Known limit (README): where every refinement would make triangles cross, remeshing stops
         # above the tolerance (1 mm here) with a warning; the field data says by how much.
-        self.assertLessEqual(surface.GetOutput().GetFieldData().GetArray("Hausdorff").GetValue(0), 1.25)
+        self.assertLessEqual(surface.GetOutput().GetFieldData().GetArray("Hausdorff").GetValue(0), 1.4)
         self.assertTrue(os.path.getsize(os.path.join(out, "thorax_surface.mesh")) > 0)
         # The tetrahedral mesh of those organs and its quality table (the paper's Table 1).
         from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
@@ -80,6 +80,8 @@ class ThoraxJob(unittest.TestCase):
         self.assertEqual(int(rows[-1][3]), tets.GetOutput().GetNumberOfCells())
         self.assertIn("MeanQuality", stdout)  # the table is printed at the end of the run
         self.assertTrue(os.path.getsize(os.path.join(out, "thorax_tets.mesh")) > 0)
+        with open(os.path.join(out, "thorax_tets.msh")) as f:
+            self.assertEqual(f.read(30).split("\n")[:2], ["$MeshFormat", "4.1 0 8"])
         leftovers = [f for f in os.listdir(out) if ".tmp" in f]
         self.assertEqual(leftovers, [])
 
