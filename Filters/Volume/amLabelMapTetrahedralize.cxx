@@ -2,6 +2,7 @@
 
 #include "amInputCheck.h"
 #include "amProvenance.h"
+#include "amTetraGeometry.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -50,19 +51,6 @@ using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_ta
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
 using Criteria = CGAL::Mesh_criteria_3<Tr>;
 using Point = K::Point_3;
-
-/// Six times the signed volume of tetrahedron p[0..3].
-double Determinant(const double p[4][3])
-{
-  double a[3], b[3], c[3];
-  for (int d = 0; d < 3; ++d)
-  {
-    a[d] = p[1][d] - p[0][d];
-    b[d] = p[2][d] - p[0][d];
-    c[d] = p[3][d] - p[0][d];
-  }
-  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-}
 }
 
 amLabelMapTetrahedralize::amLabelMapTetrahedralize()
@@ -242,7 +230,7 @@ int amLabelMapTetrahedralize::RequestData(
     double p[4][3];
     for (int k = 0; k < 4; ++k)
       points->GetPoint(ids[k], p[k]);
-    return Determinant(p);
+    return amTetraGeometry::SignedVolume(p[0], p[1], p[2], p[3]);
   };
 
   vtkNew<vtkCellArray> cells;
@@ -298,7 +286,7 @@ int amLabelMapTetrahedralize::RequestData(
       points->GetPoint(tri[k], p[k]);
     const auto apex = world(c->vertex(i));
     std::copy(apex.begin(), apex.end(), p[3]);
-    const double side = Determinant(p); // > 0: the normal (b-a)x(c-a) points towards the apex
+    const double side = amTetraGeometry::SignedVolume(p[0], p[1], p[2], p[3]); // > 0: the normal (b-a)x(c-a) points towards the apex
     if ((side > 0) == cFirst)
       std::swap(tri[1], tri[2]);
     faces->InsertNextCell(3, tri);

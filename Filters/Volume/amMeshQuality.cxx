@@ -1,5 +1,7 @@
 #include "amMeshQuality.h"
 
+#include "amTetraGeometry.h"
+
 #include "amThreading.h"
 
 #include "vtkCellArray.h"
@@ -29,23 +31,11 @@ vtkStandardNewMacro(amMeshQuality);
 
 namespace
 {
-using Vec = std::array<double, 3>;
-Vec Sub(const double* a, const double* b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec Cross(const Vec& a, const Vec& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-double Dot(const Vec& a, const Vec& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-double Norm(const Vec& a)
-{
-  return std::sqrt(Dot(a, a));
-}
+using Vec = amTetraGeometry::Vec;
+constexpr auto Cross = &amTetraGeometry::Cross;
+constexpr auto Dot = &amTetraGeometry::Dot;
+constexpr auto Norm = &amTetraGeometry::Norm;
+constexpr auto Sub = &amTetraGeometry::Sub;
 }
 
 void amMeshQuality::TetraQuality(const double p0[3], const double p1[3], const double p2[3],
@@ -53,8 +43,7 @@ void amMeshQuality::TetraQuality(const double p0[3], const double p1[3], const d
   double& radiusRatio, double& volume)
 {
   const double* p[4] = { p0, p1, p2, p3 };
-  const Vec a = Sub(p1, p0), b = Sub(p2, p0), c = Sub(p3, p0);
-  volume = Dot(a, Cross(b, c)) / 6.0;
+  volume = amTetraGeometry::SignedVolume(p0, p1, p2, p3);
   // Outward-facing (for positive volume) face normals, face i opposite vertex i.
   static const int faceOf[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
   Vec n[4];
@@ -89,13 +78,7 @@ void amMeshQuality::TetraQuality(const double p0[3], const double p1[3], const d
       minDihedral = std::min(minDihedral, angle);
       maxDihedral = std::max(maxDihedral, volume <= 0 ? 180.0 : angle);
     }
-  // Circumradius: |a^2 (b x c) + b^2 (c x a) + c^2 (a x b)| / (12 V).
-  const Vec bc = Cross(b, c), ca = Cross(c, a), ab = Cross(a, b);
-  const double la = Dot(a, a), lb = Dot(b, b), lc = Dot(c, c);
-  Vec r;
-  for (int d = 0; d < 3; ++d)
-    r[d] = la * bc[d] + lb * ca[d] + lc * ab[d];
-  const double circumradius = volume != 0 ? Norm(r) / (12.0 * std::fabs(volume)) : inf;
+  const double circumradius = amTetraGeometry::Circumradius(p0, p1, p2, p3);
   radiusRatio = inradius > 0 ? circumradius / (3.0 * inradius) : inf;
 }
 

@@ -5,6 +5,7 @@
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amSurfaceTopology.h"
+#include "amTetraGeometry.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -43,20 +44,10 @@ vtkStandardNewMacro(amTetrahedralize);
 
 namespace
 {
-using Vec = std::array<double, 3>;
-
-Vec Sub(const double* a, const double* b)
-{
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-Vec Cross(const Vec& a, const Vec& b)
-{
-  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-}
-double Dot(const Vec& a, const Vec& b)
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using Vec = amTetraGeometry::Vec;
+constexpr auto Cross = &amTetraGeometry::Cross;
+constexpr auto Dot = &amTetraGeometry::Dot;
+constexpr auto Sub = &amTetraGeometry::Sub;
 
 /// Sizing callback state: TetGen's callback has no user pointer, and TetGen runs on the calling
 /// thread, so a thread-local pointer keeps concurrent filters apart.
@@ -69,16 +60,9 @@ thread_local Sizing CurrentSizing;
 
 bool TetTooBig(REAL* pa, REAL* pb, REAL* pc, REAL* pd, REAL*, REAL)
 {
-  const Vec a = Sub(pb, pa), b = Sub(pc, pa), c = Sub(pd, pa);
-  const double det = 2.0 * Dot(a, Cross(b, c));
-  if (det == 0.0)
-    return false;
-  const Vec bc = Cross(b, c), ca = Cross(c, a), ab = Cross(a, b);
-  const double la = Dot(a, a), lb = Dot(b, b), lc = Dot(c, c);
-  Vec r;
-  for (int d = 0; d < 3; ++d)
-    r[d] = (la * bc[d] + lb * ca[d] + lc * ab[d]) / det;
-  const double radius = std::sqrt(Dot(r, r));
+  const double radius = amTetraGeometry::Circumradius(pa, pb, pc, pd);
+  if (!std::isfinite(radius))
+    return false; // flat: TetGen's own quality checks deal with it
   const double centroid[3] = { (pa[0] + pb[0] + pc[0] + pd[0]) / 4, (pa[1] + pb[1] + pc[1] + pd[1]) / 4,
     (pa[2] + pb[2] + pc[2] + pd[2]) / 4 };
   return radius > CurrentSizing.Factor * CurrentSizing.Field->Evaluate(centroid);
@@ -689,10 +673,8 @@ int amTetrahedralize::RequestData(
     vtkIdType ids[4];
     for (int i = 0; i < 4; ++i)
       ids[i] = newPoint[tets[4 * t + i]];
-    const double* p0 = P + 3 * tets[4 * t];
-    const Vec e1 = Sub(P + 3 * tets[4 * t + 1], p0), e2 = Sub(P + 3 * tets[4 * t + 2], p0),
-              e3 = Sub(P + 3 * tets[4 * t + 3], p0);
-    if (Dot(e1, Cross(e2, e3)) < 0)
+    if (amTetraGeometry::SignedVolume(P + 3 * tets[4 * t], P + 3 * tets[4 * t + 1], P + 3 * tets[4 * t + 2],
+          P + 3 * tets[4 * t + 3]) < 0)
       std::swap(ids[0], ids[1]);
     offsets->SetValue(o, 4 * o);
     for (int i = 0; i < 4; ++i)
