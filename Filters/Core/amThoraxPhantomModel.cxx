@@ -374,3 +374,23 @@ void amThoraxPhantomModel::GetOrganCenter(int label, double center[3]) const
   center[1] = c[1];
   center[2] = c[2];
 }
+
+void amThoraxPhantomModel::StandardElectrodes(double positions[9][3])
+{
+  // Body: superquadric with half-axes 150 (left-right), 105 (front-back), 100 mm (up-down); the
+  // heart sits at z = -25 mm, in front (-y) and to the left (+x) of the centre.
+  static const double electrodes[9][3] = {
+    { -125.0, 0.0, 80.0 },   // RA: right shoulder
+    { 125.0, 0.0, 80.0 },    // LA: left shoulder
+    { 110.0, 0.0, -85.0 },   // LL: left lower torso
+    { -15.0, -105.0, -30.0 }, // V1: right sternal border
+    { 15.0, -105.0, -30.0 },  // V2: left sternal border
+    { 37.5, -102.0, -35.0 },  // V3: half-way from V2 to V4
+    { 60.0, -96.0, -40.0 },   // V4: mid-clavicular line
+    { 100.0, -78.0, -40.0 },  // V5: anterior axillary line
+    { 150.0, 0.0, -40.0 },    // V6: mid-axillary line
+  };
+  for (int e = 0; e < 9; ++e)
+    for (int c = 0; c < 3; ++c)
+      positions[e][c] = electrodes[e][c];
+}

@@ -90,6 +90,12 @@ public:
   /// Centre points well inside each blood pool / organ (seeds for segmentation tests).
   void GetOrganCenter(int label, double center[3]) const;
 
+  /// Electrode positions of the standard 12-lead ECG on this body (mm, LPS), in the order RA, LA,
+  /// LL (limb electrodes moved onto the torso as in the Mason-Likar placement), V1..V6 (fourth and
+  /// fifth intercostal spaces around the heart). Positions lie on or near the body surface; ECG
+  /// filters snap each to the closest surface node.
+  static void StandardElectrodes(double positions[9][3]);
+
   /// A rotated ellipsoid: centre, semi-axes and a rotation (rows = ellipsoid axes in world).
   struct Ellipsoid
   {

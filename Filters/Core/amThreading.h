@@ -11,11 +11,26 @@
 #define amThreading_h
 
 #include "AnatomeshFiltersCoreModule.h" // export macro
+#include "vtkSMPTools.h"
+
+#include <algorithm>
 
 class ANATOMESHFILTERSCORE_EXPORT amThreading
 {
 public:
   static void Initialize();
+
+  /// vtkSMPTools::For for short loops run many times (solver vector work): below 'serial'
+  /// iterations the body runs on the calling thread, as waking the pool would cost more than the
+  /// loop itself. Chunks are disjoint, so the result never depends on the thread count.
+  template <typename Functor>
+  static void For(vtkIdType first, vtkIdType last, Functor&& f, vtkIdType serial = 50000)
+  {
+    if (last - first < serial)
+      f(first, last);
+    else
+      vtkSMPTools::For(first, last, std::max<vtkIdType>(8192, (last - first) / 64), f);
+  }
 };
 
 #endif

@@ -65,7 +65,7 @@ class Proxy:
         self.is_writer = element.tag == "WriterProxy"
         self.properties = {}
         for child in element:
-            if child.tag in _TYPES:
+            if child.tag in _TYPES and child.get("information_only") != "1":
                 p = Property(child)
                 self.properties[p.name] = p
         self.output_ports = {}

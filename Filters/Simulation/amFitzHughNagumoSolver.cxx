@@ -1,0 +1,531 @@
+#include "amFitzHughNagumoSolver.h"
+
+#include "amConjugateGradient.h"
+#include "amP1Assembly.h"
+#include "amProvenance.h"
+#include "amSparseMatrix.h"
+#include "amThreading.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+vtkStandardNewMacro(amFitzHughNagumoSolver);
+
+namespace
+{
+std::atomic<long long> RunCounter{ 0 };
+}
+
+// Everything one simulation produced: the heart mesh, the frames, the activation times.
+struct amFitzHughNagumoSolver::Run
+{
+  vtkMTimeType InputTime = 0;
+  vtkMTimeType FilterTime = 0;
+  long long Id = 0;
+  vtkSmartPointer<vtkUnstructuredGrid> Heart; // geometry, Region, InputPointId
+  std::vector<double> Times;                  // frame times
+  std::vector<std::vector<float>> U, V;       // per frame, per heart node
+  std::vector<double> Activation;             // per heart node, -1: never
+};
+
+amFitzHughNagumoSolver::amFitzHughNagumoSolver()
+  : HeartRegions{ 5 }
+  , RegionArrayName(nullptr)
+  , Conductivity(3.5)
+  , FibreArrayName(nullptr)
+  , TransverseConductivityRatio(0.25)
+  , C1(0.26)
+  , C2(0.1)
+  , C3(0.013)
+  , C4(1.0)
+  , A(0.13)
+  , TimeStep(0.5)
+  , EndTime(500.0)
+  , OutputInterval(5.0)
+  , StimulusCenter{ 0, 0, 0 }
+  , StimulusRadius(10.0)
+  , StimulusRegion(-1)
+  , StimulusStart(0.0)
+  , StimulusDuration(5.0)
+  , StimulusStrength(1.0)
+  , ActivationThreshold(0.5)
+  , SolverTolerance(1e-8)
+  , MaximumIterations(1000)
+  , NumberOfHeartNodes(0)
+  , NumberOfSteps(0)
+  , MeanIterations(0)
+  , WallSeconds(0)
+  , ActivatedFraction(0)
+{
+  amThreading::Initialize();
+  this->SetRegionArrayName("Region");
+  this->SetFibreArrayName("Fibres");
+}
+
+amFitzHughNagumoSolver::~amFitzHughNagumoSolver()
+{
+  this->SetRegionArrayName(nullptr);
+  this->SetFibreArrayName(nullptr);
+}
+
+void amFitzHughNagumoSolver::AddHeartRegion(int label)
+{
+  this->HeartRegions.push_back(label);
+  this->Modified();
+}
+
+void amFitzHughNagumoSolver::RemoveAllHeartRegions()
+{
+  if (!this->HeartRegions.empty())
+  {
+    this->HeartRegions.clear();
+    this->Modified();
+  }
+}
+
+void amFitzHughNagumoSolver::AddRegionConductivity(double label, double sigma)
+{
+  this->RegionConductivities.push_back(label);
+  this->RegionConductivities.push_back(sigma);
+  this->Modified();
+}
+
+void amFitzHughNagumoSolver::RemoveAllRegionConductivities()
+{
+  if (!this->RegionConductivities.empty())
+  {
+    this->RegionConductivities.clear();
+    this->Modified();
+  }
+}
+
+double amFitzHughNagumoSolver::StableTimeStep() const
+{
+  // Explicit Euler on du/dt = f(u, v) is stable while dt |df/du| <= 2. df/du = c1 (-3u^2 +
+  // 2(1+a)u - a) - c2 v; u stays in about [-0.05, 1.05] and v in [0, 1] for these dynamics.
+  double worst = 0.0;
+  for (int k = 0; k <= 110; ++k)
+  {
+    const double u = -0.05 + 0.01 * k;
+    worst = std::max(worst, std::fabs(this->C1 * (-3 * u * u + 2 * (1 + this->A) * u - this->A)));
+  }
+  worst += this->C2;
+  return worst > 0 ? 2.0 / worst : 1e300;
+}
+
+std::vector<double> amFitzHughNagumoSolver::FrameTimes() const
+{
+  const int steps = static_cast<int>(std::llround(this->EndTime / this->TimeStep));
+  const int every = std::max(1, static_cast<int>(std::llround(this->OutputInterval / this->TimeStep)));
+  std::vector<double> times;
+  for (int s = 0; s <= steps; s += every)
+    times.push_back(s * this->TimeStep);
+  if (steps % every != 0)
+    times.push_back(steps * this->TimeStep);
+  return times;
+}
+
+int amFitzHughNagumoSolver::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const std::vector<double> times = this->FrameTimes();
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  const double range[2] = { times.front(), times.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
+{
+  auto run = std::make_unique<Run>();
+  const vtkIdType nCells = input->GetNumberOfCells();
+  vtkDataArray* regions = this->RegionArrayName ? input->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
+  const std::set<int> heartSet(this->HeartRegions.begin(), this->HeartRegions.end());
+
+  // Heart cells and their nodes, numbered in input order.
+  std::vector<vtkIdType> heartCells;
+  std::set<int> present;
+  for (vtkIdType c = 0; c < nCells; ++c)
+  {
+    const int label = regions ? static_cast<int>(regions->GetComponent(c, 0)) : 0;
+    if (regions)
+      present.insert(label);
+    if (regions && !heartSet.count(label))
+      continue;
+    if (input->GetCellType(c) != VTK_TETRA)
+    {
+      vtkErrorMacro(<< "cell " << c << " of the heart is not a tetrahedron (VTK cell type "
+                    << input->GetCellType(c) << "); the solver needs a tetrahedral mesh");
+      return 0;
+    }
+    heartCells.push_back(c);
+  }
+  if (heartCells.empty())
+  {
+    std::ostringstream msg;
+    msg << "no heart: no tetrahedron has a '" << (this->RegionArrayName ? this->RegionArrayName : "")
+        << "' label among the heart regions (";
+    for (int l : this->HeartRegions)
+      msg << " " << l;
+    msg << " ); the mesh has regions (";
+    for (int l : present)
+      msg << " " << l;
+    msg << " )" << (nCells == 0 ? " and no cells at all" : "");
+    vtkErrorMacro(<< msg.str());
+    return 0;
+  }
+  const double dt = this->TimeStep;
+  if (dt > this->StableTimeStep())
+  {
+    vtkErrorMacro(<< "time step " << dt << " ms is too large for stability: the explicit reaction term "
+                  << "needs dt <= " << this->StableTimeStep() << " ms with these parameters");
+    return 0;
+  }
+  if (this->StimulusDuration < dt)
+  {
+    vtkErrorMacro(<< "the stimulus lasts " << this->StimulusDuration << " ms, less than one time step ("
+                  << dt << " ms): it would be missed");
+    return 0;
+  }
+
+  std::vector<vtkIdType> local(input->GetNumberOfPoints(), -1);
+  std::vector<vtkIdType> global;
+  amP1Assembly fem;
+  fem.Tetrahedra.resize(heartCells.size());
+  for (std::size_t k = 0; k < heartCells.size(); ++k)
+  {
+    const vtkIdType* ids;
+    vtkIdType npts;
+    input->GetCellPoints(heartCells[k], npts, ids);
+    for (int a = 0; a < 4; ++a)
+    {
+      if (local[ids[a]] < 0)
+      {
+        local[ids[a]] = static_cast<vtkIdType>(global.size());
+        global.push_back(ids[a]);
+      }
+      fem.Tetrahedra[k][a] = local[ids[a]];
+    }
+  }
+  // Keep input order for the nodes (deterministic and easy to map back).
+  {
+    std::vector<vtkIdType> order(global);
+    std::sort(order.begin(), order.end());
+    for (std::size_t i = 0; i < order.size(); ++i)
+      local[order[i]] = static_cast<vtkIdType>(i);
+    for (std::size_t k = 0; k < heartCells.size(); ++k)
+    {
+      const vtkIdType* ids;
+      vtkIdType npts;
+      input->GetCellPoints(heartCells[k], npts, ids);
+      for (int a = 0; a < 4; ++a)
+        fem.Tetrahedra[k][a] = local[ids[a]];
+    }
+    global = order;
+  }
+  const vtkIdType n = static_cast<vtkIdType>(global.size());
+  fem.Points.resize(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    input->GetPoint(global[i], fem.Points[i].data());
+  const vtkIdType bad = fem.FindDegenerate();
+  if (bad >= 0)
+  {
+    vtkErrorMacro(<< "heart tetrahedron " << heartCells[bad]
+                  << " is degenerate (flat, collapsed or with a non-finite coordinate)");
+    return 0;
+  }
+
+  // Conductivity tensor per tetrahedron.
+  std::map<int, double> sigmaOf;
+  for (std::size_t k = 0; k + 1 < this->RegionConductivities.size(); k += 2)
+    sigmaOf[static_cast<int>(this->RegionConductivities[k])] = this->RegionConductivities[k + 1];
+  vtkDataArray* fibres = this->FibreArrayName ? input->GetCellData()->GetArray(this->FibreArrayName) : nullptr;
+  if (fibres && fibres->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro(<< "fibre array '" << this->FibreArrayName << "' has " << fibres->GetNumberOfComponents()
+                  << " components; it needs 3 (a direction per cell)");
+    return 0;
+  }
+  std::vector<std::array<double, 6>> tensors(heartCells.size());
+  for (std::size_t k = 0; k < heartCells.size(); ++k)
+  {
+    double sigma = this->Conductivity;
+    if (regions)
+    {
+      const auto it = sigmaOf.find(static_cast<int>(regions->GetComponent(heartCells[k], 0)));
+      if (it != sigmaOf.end())
+        sigma = it->second;
+    }
+    double f[3] = { 0, 0, 0 };
+    if (fibres)
+      fibres->GetTuple(heartCells[k], f);
+    tensors[k] = amP1Assembly::FibreTensor(sigma, sigma * this->TransverseConductivityRatio, f);
+  }
+
+  // Stimulated nodes.
+  std::vector<unsigned char> stimulated(n, 0);
+  vtkIdType nStimulated = 0;
+  if (this->StimulusRegion >= 0)
+  {
+    for (std::size_t k = 0; k < heartCells.size(); ++k)
+      if (regions && static_cast<int>(regions->GetComponent(heartCells[k], 0)) == this->StimulusRegion)
+        for (vtkIdType v : fem.Tetrahedra[k])
+          stimulated[v] = 1;
+  }
+  else
+  {
+    const double r2 = this->StimulusRadius * this->StimulusRadius;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double d2 = 0;
+      for (int c = 0; c < 3; ++c)
+        d2 += (fem.Points[i][c] - this->StimulusCenter[c]) * (fem.Points[i][c] - this->StimulusCenter[c]);
+      stimulated[i] = d2 <= r2;
+    }
+  }
+  for (auto s : stimulated)
+    nStimulated += s;
+  if (nStimulated == 0)
+  {
+    std::ostringstream where;
+    if (this->StimulusRegion >= 0)
+      where << "region " << this->StimulusRegion << " is not a heart region with cells";
+    else
+      where << "the sphere of radius " << this->StimulusRadius << " mm around (" << this->StimulusCenter[0] << ", "
+            << this->StimulusCenter[1] << ", " << this->StimulusCenter[2] << ") holds no heart node";
+    vtkErrorMacro(<< "the stimulus is outside the heart: " << where.str());
+    return 0;
+  }
+  this->UpdateProgress(0.02);
+
+  amSparseMatrix M, K, S;
+  fem.Assemble(&tensors, M, K);
+  S.Combine(1.0, M, dt, K);
+  amConjugateGradient cg;
+  cg.SetMatrix(&S);
+  cg.RelativeTolerance = this->SolverTolerance;
+  cg.MaximumIterations = this->MaximumIterations;
+  this->UpdateProgress(0.05);
+
+  const int steps = static_cast<int>(std::llround(this->EndTime / dt));
+  const int every = std::max(1, static_cast<int>(std::llround(this->OutputInterval / dt)));
+  run->Times = this->FrameTimes();
+  std::vector<double> u(n, 0.0), v(n, 0.0), w(n), b(n), uOld(n);
+  run->Activation.assign(n, -1.0);
+  auto keepFrame = [&]() {
+    run->U.emplace_back(u.begin(), u.end());
+    run->V.emplace_back(v.begin(), v.end());
+  };
+  keepFrame();
+  const auto start = std::chrono::steady_clock::now();
+  long long iterations = 0;
+  const double c1 = this->C1, c2 = this->C2, c3 = this->C3, c4 = this->C4, a = this->A;
+  const double theta = this->ActivationThreshold;
+  for (int s = 0; s < steps; ++s)
+  {
+    const double t = s * dt;
+    const double stim =
+      (t + 1e-9 * dt >= this->StimulusStart && t < this->StimulusStart + this->StimulusDuration - 1e-9 * dt)
+      ? this->StimulusStrength
+      : 0.0;
+    const double* up = u.data();
+    const double* vp = v.data();
+    double* wp = w.data();
+    const unsigned char* sp = stimulated.data();
+    amThreading::For(0, n, [=](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double ui = up[i];
+        const double f = c1 * ui * (ui - a) * (1.0 - ui) - c2 * ui * vp[i] + (sp[i] ? stim : 0.0);
+        wp[i] = ui + dt * f;
+      }
+    });
+    M.Multiply(w.data(), b.data());
+    uOld = u;
+    const amConjugateGradient::Result result = cg.Solve(b.data(), u.data());
+    iterations += result.Iterations;
+    if (!result.Converged)
+    {
+      vtkErrorMacro(<< "conjugate gradients did not converge at t = " << t + dt << " ms (" << result.Iterations
+                    << " iterations, residual " << result.ResidualNorm << " of " << result.RightHandSideNorm
+                    << "): raise MaximumIterations or SolverTolerance");
+      return 0;
+    }
+    double* vw = v.data();
+    const double* uo = uOld.data();
+    double* act = run->Activation.data();
+    const double* un = u.data();
+    amThreading::For(0, n, [=](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        vw[i] = (vw[i] + dt * c3 * un[i]) / (1.0 + dt * c3 * c4);
+        if (act[i] < 0 && uo[i] < theta && un[i] >= theta)
+          act[i] = t + dt * (theta - uo[i]) / (un[i] - uo[i]);
+      }
+    });
+    if ((s + 1) % every == 0 || s + 1 == steps)
+    {
+      double sum = 0;
+      for (vtkIdType i = 0; i < n; ++i)
+        sum += u[i] + v[i];
+      if (!std::isfinite(sum))
+      {
+        vtkErrorMacro(<< "the state became non-finite by t = " << t + dt << " ms; nothing is written");
+        return 0;
+      }
+      keepFrame();
+      this->UpdateProgress(0.05 + 0.95 * (s + 1) / steps);
+      if (this->GetAbortExecute())
+        return 0;
+    }
+  }
+  this->WallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->NumberOfSteps = steps;
+  this->MeanIterations = steps > 0 ? static_cast<double>(iterations) / steps : 0.0;
+  this->NumberOfHeartNodes = n;
+  vtkIdType activated = 0;
+  for (double at : run->Activation)
+    activated += at >= 0;
+  this->ActivatedFraction = static_cast<double>(activated) / n;
+
+  // The heart mesh: points, tetrahedra, Region, InputPointId.
+  auto heart = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    points->SetPoint(i, fem.Points[i].data());
+  heart->SetPoints(points);
+  heart->Allocate(static_cast<vtkIdType>(heartCells.size()));
+  for (const auto& tet : fem.Tetrahedra)
+    heart->InsertNextCell(VTK_TETRA, 4, tet.data());
+  if (regions)
+  {
+    vtkSmartPointer<vtkDataArray> r = vtk::TakeSmartPointer(regions->NewInstance());
+    r->SetName(regions->GetName());
+    r->SetNumberOfComponents(1);
+    r->SetNumberOfTuples(static_cast<vtkIdType>(heartCells.size()));
+    for (std::size_t k = 0; k < heartCells.size(); ++k)
+      r->SetComponent(static_cast<vtkIdType>(k), 0, regions->GetComponent(heartCells[k], 0));
+    heart->GetCellData()->AddArray(r);
+  }
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("InputPointId");
+  ids->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    ids->SetValue(i, global[i]);
+  heart->GetPointData()->AddArray(ids);
+  run->Heart = heart;
+  run->Id = ++RunCounter;
+
+  std::ostringstream params;
+  params << "HeartRegions=";
+  for (std::size_t k = 0; k < this->HeartRegions.size(); ++k)
+    params << (k ? "," : "") << this->HeartRegions[k];
+  params << " Conductivity=" << this->Conductivity << " C1=" << c1 << " C2=" << c2 << " C3=" << c3 << " C4=" << c4
+         << " A=" << a << " TimeStep=" << dt << " EndTime=" << this->EndTime << " Stimulus=("
+         << this->StimulusCenter[0] << "," << this->StimulusCenter[1] << "," << this->StimulusCenter[2]
+         << ") r=" << this->StimulusRadius << " region=" << this->StimulusRegion << " start=" << this->StimulusStart
+         << " duration=" << this->StimulusDuration << " strength=" << this->StimulusStrength;
+  amProvenance::Record(heart, input, "amFitzHughNagumoSolver", params.str());
+  this->Cache = std::move(run);
+  return 1;
+}
+
+int amFitzHughNagumoSolver::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0]);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outInfo);
+  if (!input)
+  {
+    vtkErrorMacro(<< "no input mesh");
+    return 0;
+  }
+  const bool stale = !this->Cache || this->Cache->InputTime != input->GetMTime() ||
+    this->Cache->FilterTime != this->GetMTime();
+  if (stale)
+  {
+    this->Cache.reset();
+    if (!this->Simulate(input))
+      return 0;
+    this->Cache->InputTime = input->GetMTime();
+    this->Cache->FilterTime = this->GetMTime();
+  }
+  const Run& run = *this->Cache;
+
+  std::size_t frame = run.Times.size() - 1;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    frame = 0;
+    while (frame + 1 < run.Times.size() && run.Times[frame + 1] <= t + 1e-9 * this->TimeStep)
+      ++frame;
+  }
+  const double time = run.Times[frame];
+  output->ShallowCopy(run.Heart);
+  const vtkIdType n = run.Heart->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> u, v;
+  u->SetName("u");
+  v->SetName("v");
+  u->SetNumberOfTuples(n);
+  v->SetNumberOfTuples(n);
+  std::copy(run.U[frame].begin(), run.U[frame].end(), u->GetPointer(0));
+  std::copy(run.V[frame].begin(), run.V[frame].end(), v->GetPointer(0));
+  vtkNew<vtkDoubleArray> act;
+  act->SetName("ActivationTime");
+  act->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double at = run.Activation[i];
+    act->SetValue(i, (at >= 0 && at <= time + 1e-9) ? at : -1.0);
+  }
+  output->GetPointData()->AddArray(u);
+  output->GetPointData()->AddArray(v);
+  output->GetPointData()->AddArray(act);
+  output->GetPointData()->SetActiveScalars("u");
+  vtkNew<vtkIdTypeArray> runId;
+  runId->SetName("SimulationRun");
+  runId->InsertNextValue(static_cast<vtkIdType>(run.Id));
+  output->GetFieldData()->AddArray(runId);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+  return 1;
+}
+
+void amFitzHughNagumoSolver::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Conductivity: " << this->Conductivity << "\n";
+  os << indent << "C1, C2, C3, C4, A: " << this->C1 << ", " << this->C2 << ", " << this->C3 << ", " << this->C4
+     << ", " << this->A << "\n";
+  os << indent << "TimeStep: " << this->TimeStep << " EndTime: " << this->EndTime
+     << " OutputInterval: " << this->OutputInterval << "\n";
+  os << indent << "StimulusCenter: " << this->StimulusCenter[0] << " " << this->StimulusCenter[1] << " "
+     << this->StimulusCenter[2] << " radius " << this->StimulusRadius << " region " << this->StimulusRegion << "\n";
+}

@@ -1,0 +1,207 @@
+/**
+ * @class   amFitzHughNagumoSolver
+ * @brief   The paper's heart model: FitzHugh-Nagumo with the Rogers-McCulloch modification and
+ *          diffusion (monodomain), P1 finite elements on the heart's tetrahedra, time-dependent.
+ *
+ *   du/dt = div(Sigma grad u) + c1 u (u - a)(1 - u) - c2 u v + I_stim   on the heart regions
+ *   dv/dt = c3 (u - c4 v),        zero flux on the heart's boundary,     u = v = 0 at t = 0
+ *
+ * u is the dimensionless transmembrane potential (0 at rest, about 1 when depolarised), v the
+ * recovery variable; time in ms, lengths in mm, Sigma in mm^2/ms.
+ *
+ * Defaults: c1 = 0.26/ms, c2 = 0.1/ms, c3 = 0.013/ms, c4 = 1, a = 0.13 — Rogers & McCulloch,
+ * IEEE Trans. Biomed. Eng. 41:743-757 (1994), with their time unit taken as 1 ms as the paper's
+ * 500 ms cycle implies. Conductivity 3.5 mm^2/ms makes the plane-wave speed of the bistable
+ * front, c = sqrt(c1 Sigma / 2)(1 - 2a), 0.50 m/s, a typical ventricular conduction velocity.
+ *
+ * Discretisation: P1 elements, consistent mass M and stiffness K (amP1Assembly); first-order
+ * semi-implicit (IMEX) Euler: (M + dt K) u^{n+1} = M (u^n + dt f(u^n, v^n)), the reaction explicit,
+ * diffusion implicit, then v^{n+1} = (v^n + dt c3 u^{n+1}) / (1 + dt c3 c4). The matrix is
+ * assembled once; each step is solved by Jacobi-preconditioned conjugate gradients warm-started
+ * from the last state (amConjugateGradient). Assembly, products and vector work run on threads;
+ * results do not depend on the thread count.
+ *
+ * Input: a tetrahedral vtkUnstructuredGrid (e.g. Tetrahedralize's output) with cell data
+ * RegionArrayName ("Region"). The heart is the cells whose region is in HeartRegions (default 5,
+ * the phantom's myocardium); without a region array the whole mesh is the heart. Conductivity
+ * per region: RegionConductivities (label, Sigma) pairs, else Conductivity. With a cell vector
+ * array FibreArrayName ("Fibres") the tensor is Sigma_l f f^T + Sigma_t (I - f f^T) with
+ * Sigma_t = TransverseConductivityRatio * Sigma_l.
+ *
+ * Stimulus (the sinus-node activation): the heart nodes within StimulusRadius of StimulusCenter,
+ * or, when StimulusRegion >= 0, the nodes of that region's cells, receive I_stim =
+ * StimulusStrength (1/ms) from StimulusStart for StimulusDuration ms.
+ *
+ * Output: the heart sub-mesh (heart cells and their points) with point data "u", "v",
+ * "ActivationTime" (ms: when u first crossed ActivationThreshold upwards, linearly interpolated
+ * within the step; -1 where that has not happened by the output time) and "InputPointId" (the
+ * point's id in the input: TorsoPotential uses it). The output is time-dependent: the filter
+ * advertises the times 0, OutputInterval, ..., EndTime, so ParaView animates it and pipelines
+ * can request any of them. The whole run is computed once when a time is first requested and the
+ * frames are kept (u and v as float) until the input or a property changes; the time asked for
+ * is answered with the last frame at or before it.
+ *
+ * Errors (no output, never NaN): no tetrahedra of the heart regions, a non-tetrahedral or
+ * degenerate heart cell, a stimulus that holds no heart node or is shorter than a time step, a
+ * time step beyond the explicit reaction's stability limit (2 / max |df/du|), a solver that does
+ * not converge, and a non-finite state.
+ */
+#ifndef amFitzHughNagumoSolver_h
+#define amFitzHughNagumoSolver_h
+
+#include "AnatomeshFiltersSimulationModule.h" // export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <memory>
+#include <vector>
+
+class ANATOMESHFILTERSSIMULATION_EXPORT amFitzHughNagumoSolver : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static amFitzHughNagumoSolver* New();
+  vtkTypeMacro(amFitzHughNagumoSolver, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Regions that make up the heart (default: 5, the phantom's myocardium).
+  void AddHeartRegion(int label);
+  void RemoveAllHeartRegions();
+  int GetNumberOfHeartRegions() { return static_cast<int>(this->HeartRegions.size()); }
+  int GetHeartRegion(int i) { return this->HeartRegions.at(i); }
+  ///@}
+
+  ///@{
+  /// Cell array of region labels (default "Region").
+  vtkSetStringMacro(RegionArrayName);
+  vtkGetStringMacro(RegionArrayName);
+  ///@}
+
+  ///@{
+  /// Conductivity Sigma (mm^2/ms) where no per-region value is given (default 3.5).
+  vtkSetClampMacro(Conductivity, double, 0.0, 1e6);
+  vtkGetMacro(Conductivity, double);
+  ///@}
+
+  ///@{
+  /// Per-region conductivities as (label, Sigma) pairs (mm^2/ms); none by default.
+  void AddRegionConductivity(double label, double sigma);
+  void RemoveAllRegionConductivities();
+  ///@}
+
+  ///@{
+  /// Cell vector array of fibre directions (default "Fibres"; unused when absent) and the ratio of
+  /// cross-fibre to along-fibre conductivity (default 0.25).
+  vtkSetStringMacro(FibreArrayName);
+  vtkGetStringMacro(FibreArrayName);
+  vtkSetClampMacro(TransverseConductivityRatio, double, 0.0, 1.0);
+  vtkGetMacro(TransverseConductivityRatio, double);
+  ///@}
+
+  ///@{
+  /// Rogers-McCulloch parameters: C1, C2, C3 in 1/ms, C4 and the excitation threshold A
+  /// dimensionless (defaults 0.26, 0.1, 0.013, 1, 0.13).
+  vtkSetClampMacro(C1, double, 0.0, 1e6);
+  vtkGetMacro(C1, double);
+  vtkSetClampMacro(C2, double, 0.0, 1e6);
+  vtkGetMacro(C2, double);
+  vtkSetClampMacro(C3, double, 0.0, 1e6);
+  vtkGetMacro(C3, double);
+  vtkSetClampMacro(C4, double, 0.0, 1e6);
+  vtkGetMacro(C4, double);
+  vtkSetClampMacro(A, double, 0.0, 0.5);
+  vtkGetMacro(A, double);
+  ///@}
+
+  ///@{
+  /// Time step (ms, default 0.5), simulated time (ms, default 500), time between output frames
+  /// (ms, default 5; rounded to a whole number of steps).
+  vtkSetClampMacro(TimeStep, double, 1e-6, 1e6);
+  vtkGetMacro(TimeStep, double);
+  vtkSetClampMacro(EndTime, double, 0.0, 1e7);
+  vtkGetMacro(EndTime, double);
+  vtkSetClampMacro(OutputInterval, double, 1e-6, 1e7);
+  vtkGetMacro(OutputInterval, double);
+  ///@}
+
+  ///@{
+  /// Stimulus: a sphere (centre in mm, radius in mm, default radius 5) or, when StimulusRegion >= 0,
+  /// that region; start (ms, 0), duration (ms, 2), strength (1/ms added to du/dt, 0.5).
+  vtkSetVector3Macro(StimulusCenter, double);
+  vtkGetVector3Macro(StimulusCenter, double);
+  vtkSetClampMacro(StimulusRadius, double, 0.0, 1e6);
+  vtkGetMacro(StimulusRadius, double);
+  vtkSetMacro(StimulusRegion, int);
+  vtkGetMacro(StimulusRegion, int);
+  vtkSetMacro(StimulusStart, double);
+  vtkGetMacro(StimulusStart, double);
+  vtkSetClampMacro(StimulusDuration, double, 0.0, 1e7);
+  vtkGetMacro(StimulusDuration, double);
+  vtkSetMacro(StimulusStrength, double);
+  vtkGetMacro(StimulusStrength, double);
+  ///@}
+
+  ///@{
+  /// Threshold on u for the activation time (default 0.5).
+  vtkSetClampMacro(ActivationThreshold, double, 0.0, 1.0);
+  vtkGetMacro(ActivationThreshold, double);
+  ///@}
+
+  ///@{
+  /// Conjugate gradients: relative residual (default 1e-8) and iteration cap (default 1000).
+  vtkSetClampMacro(SolverTolerance, double, 1e-16, 0.1);
+  vtkGetMacro(SolverTolerance, double);
+  vtkSetClampMacro(MaximumIterations, int, 1, 1000000);
+  vtkGetMacro(MaximumIterations, int);
+  ///@}
+
+  ///@{
+  /// Figures of the last run: heart nodes, steps, mean CG iterations per step, wall seconds of
+  /// the time loop, fraction of heart nodes activated by the end.
+  vtkGetMacro(NumberOfHeartNodes, vtkIdType);
+  vtkGetMacro(NumberOfSteps, int);
+  vtkGetMacro(MeanIterations, double);
+  vtkGetMacro(WallSeconds, double);
+  vtkGetMacro(ActivatedFraction, double);
+  ///@}
+
+  /// The largest stable time step for the explicit reaction term with the current parameters.
+  double StableTimeStep() const;
+
+protected:
+  amFitzHughNagumoSolver();
+  ~amFitzHughNagumoSolver() override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  std::vector<int> HeartRegions;
+  char* RegionArrayName;
+  double Conductivity;
+  std::vector<double> RegionConductivities; // pairs
+  char* FibreArrayName;
+  double TransverseConductivityRatio;
+  double C1, C2, C3, C4, A;
+  double TimeStep, EndTime, OutputInterval;
+  double StimulusCenter[3];
+  double StimulusRadius;
+  int StimulusRegion;
+  double StimulusStart, StimulusDuration, StimulusStrength;
+  double ActivationThreshold;
+  double SolverTolerance;
+  int MaximumIterations;
+
+  vtkIdType NumberOfHeartNodes;
+  int NumberOfSteps;
+  double MeanIterations;
+  double WallSeconds;
+  double ActivatedFraction;
+
+private:
+  amFitzHughNagumoSolver(const amFitzHughNagumoSolver&) = delete;
+  void operator=(const amFitzHughNagumoSolver&) = delete;
+  struct Run;
+  std::unique_ptr<Run> Cache;
+  int Simulate(vtkUnstructuredGrid* input);
+  std::vector<double> FrameTimes() const;
+};
+
+#endif

@@ -1,0 +1,623 @@
+#include "amTorsoPotential.h"
+
+#include "amConjugateGradient.h"
+#include "amP1Assembly.h"
+#include "amProvenance.h"
+#include "amSparseMatrix.h"
+#include "amThoraxPhantomModel.h"
+#include "amThreading.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+vtkStandardNewMacro(amTorsoPotential);
+
+// The assembled torso problem and every solved time.
+struct amTorsoPotential::Model
+{
+  vtkMTimeType MeshTime = 0;
+  vtkMTimeType FilterTime = 0;
+  long long HeartRun = -1;
+  vtkSmartPointer<vtkUnstructuredGrid> Torso; // geometry, Region, InputPointId
+  amSparseMatrix K;
+  std::vector<unsigned char> Fixed;
+  std::vector<vtkIdType> HeartIndex; // per torso node: point of the heart input, or -1
+  amConjugateGradient CG;
+  std::vector<double> X, Zero;
+  std::vector<vtkIdType> Electrodes; // torso nodes
+  std::vector<std::array<double, 3>> ElectrodePoints;
+  std::vector<double> Times;
+  std::vector<std::vector<float>> Phi;
+  std::vector<std::vector<double>> Leads; // per time: electrode potentials
+  long long Iterations = 0;
+  double Seconds = 0;
+};
+
+namespace
+{
+long long HeartRunOf(vtkDataObject* heart)
+{
+  vtkDataArray* run = heart->GetFieldData()->GetArray("SimulationRun");
+  if (run && run->GetNumberOfTuples() > 0)
+    return static_cast<long long>(run->GetComponent(0, 0));
+  return static_cast<long long>(heart->GetMTime()) + (1LL << 40); // a static heart: its own time
+}
+
+int Find(std::vector<vtkIdType>& parent, vtkIdType i)
+{
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return static_cast<int>(i);
+}
+}
+
+amTorsoPotential::amTorsoPotential()
+  : RegionArrayName(nullptr)
+  , PotentialArrayName(nullptr)
+  , PotentialScale(100.0)
+  , Conductivity(0.2)
+  , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02 }
+  , SolverTolerance(1e-6)
+  , MaximumIterations(5000)
+  , NumberOfTorsoNodes(0)
+  , NumberOfHeartNodes(0)
+  , NumberOfSolves(0)
+  , MeanIterations(0)
+  , WallSeconds(0)
+  , LoopIndex(-1)
+{
+  amThreading::Initialize();
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+  this->SetRegionArrayName("Region");
+  this->SetPotentialArrayName("u");
+  double electrodes[9][3];
+  amThoraxPhantomModel::StandardElectrodes(electrodes);
+  for (const auto& e : electrodes)
+    this->ElectrodePositions.insert(this->ElectrodePositions.end(), e, e + 3);
+}
+
+amTorsoPotential::~amTorsoPotential()
+{
+  this->SetRegionArrayName(nullptr);
+  this->SetPotentialArrayName(nullptr);
+}
+
+void amTorsoPotential::AddRegionConductivity(double label, double sigma)
+{
+  this->RegionConductivities.push_back(label);
+  this->RegionConductivities.push_back(sigma);
+  this->Modified();
+}
+
+void amTorsoPotential::RemoveAllRegionConductivities()
+{
+  if (!this->RegionConductivities.empty())
+  {
+    this->RegionConductivities.clear();
+    this->Modified();
+  }
+}
+
+void amTorsoPotential::AddElectrode(double x, double y, double z)
+{
+  this->ElectrodePositions.insert(this->ElectrodePositions.end(), { x, y, z });
+  this->Modified();
+}
+
+void amTorsoPotential::RemoveAllElectrodes()
+{
+  if (!this->ElectrodePositions.empty())
+  {
+    this->ElectrodePositions.clear();
+    this->Modified();
+  }
+}
+
+int amTorsoPotential::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  (void)port;
+  return 1;
+}
+
+int amTorsoPotential::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkTable");
+  return 1;
+}
+
+int amTorsoPotential::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* heartInfo = inputVector[1]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (heartInfo && heartInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    outInfo->CopyEntry(heartInfo, vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    outInfo->CopyEntry(heartInfo, vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  }
+  else
+  {
+    outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  }
+  vtkInformation* tableInfo = outputVector->GetInformationObject(1);
+  tableInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  tableInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  return 1;
+}
+
+int amTorsoPotential::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* heartInfo = inputVector[1]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (!heartInfo)
+    return 1;
+  if (this->LoopIndex >= 0)
+    heartInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->LoopTimes[this->LoopIndex]);
+  else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    heartInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()));
+  else
+    heartInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  return 1;
+}
+
+bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* heart)
+{
+  auto model = std::make_unique<Model>();
+  const char* regionName = this->RegionArrayName ? this->RegionArrayName : "";
+  vtkDataArray* regions = mesh->GetCellData()->GetArray(regionName);
+  vtkDataArray* heartRegions = heart->GetCellData()->GetArray(regionName);
+  if (!regions || !heartRegions)
+  {
+    vtkErrorMacro(<< "the " << (!regions ? "mesh" : "heart") << " input has no cell array '" << regionName
+                  << "': the torso is the mesh's cells outside the heart's regions");
+    return false;
+  }
+  vtkDataArray* ids = heart->GetPointData()->GetArray("InputPointId");
+  vtkDataArray* potential = heart->GetPointData()->GetArray(this->PotentialArrayName ? this->PotentialArrayName : "");
+  if (!ids || !potential)
+  {
+    vtkErrorMacro(<< "the heart input has no point array '"
+                  << (!ids ? "InputPointId" : (this->PotentialArrayName ? this->PotentialArrayName : ""))
+                  << "' (connect the output of FitzHughNagumoSolver)");
+    return false;
+  }
+  std::set<int> heartSet;
+  for (vtkIdType c = 0; c < heartRegions->GetNumberOfTuples(); ++c)
+    heartSet.insert(static_cast<int>(heartRegions->GetComponent(c, 0)));
+
+  std::vector<vtkIdType> torsoCells;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    if (heartSet.count(static_cast<int>(regions->GetComponent(c, 0))))
+      continue;
+    if (mesh->GetCellType(c) != VTK_TETRA)
+    {
+      vtkErrorMacro(<< "torso cell " << c << " is not a tetrahedron (VTK cell type " << mesh->GetCellType(c) << ")");
+      return false;
+    }
+    torsoCells.push_back(c);
+  }
+  if (torsoCells.empty())
+  {
+    vtkErrorMacro(<< "no torso: every cell of the mesh is in the heart's regions");
+    return false;
+  }
+
+  const vtkIdType nMesh = mesh->GetNumberOfPoints();
+  std::vector<vtkIdType> local(nMesh, -1);
+  for (vtkIdType c : torsoCells)
+  {
+    const vtkIdType* pts;
+    vtkIdType npts;
+    mesh->GetCellPoints(c, npts, pts);
+    for (int a = 0; a < 4; ++a)
+      local[pts[a]] = 0;
+  }
+  std::vector<vtkIdType> global;
+  for (vtkIdType p = 0; p < nMesh; ++p)
+    if (local[p] == 0)
+    {
+      local[p] = static_cast<vtkIdType>(global.size());
+      global.push_back(p);
+    }
+  const vtkIdType n = static_cast<vtkIdType>(global.size());
+  amP1Assembly fem;
+  fem.Points.resize(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    mesh->GetPoint(global[i], fem.Points[i].data());
+  fem.Tetrahedra.resize(torsoCells.size());
+  for (std::size_t k = 0; k < torsoCells.size(); ++k)
+  {
+    const vtkIdType* pts;
+    vtkIdType npts;
+    mesh->GetCellPoints(torsoCells[k], npts, pts);
+    for (int a = 0; a < 4; ++a)
+      fem.Tetrahedra[k][a] = local[pts[a]];
+  }
+  const vtkIdType bad = fem.FindDegenerate();
+  if (bad >= 0)
+  {
+    vtkErrorMacro(<< "torso tetrahedron " << torsoCells[bad]
+                  << " is degenerate (flat, collapsed or with a non-finite coordinate)");
+    return false;
+  }
+
+  // Dirichlet nodes: torso nodes that are heart nodes.
+  model->HeartIndex.assign(n, -1);
+  model->Fixed.assign(n, 0);
+  vtkIdType nFixed = 0;
+  for (vtkIdType h = 0; h < ids->GetNumberOfTuples(); ++h)
+  {
+    const vtkIdType p = static_cast<vtkIdType>(ids->GetComponent(h, 0));
+    if (p >= 0 && p < nMesh && local[p] >= 0 && model->HeartIndex[local[p]] < 0 &&
+      (model->Fixed[local[p]] == 0))
+    {
+      model->HeartIndex[local[p]] = h;
+      model->Fixed[local[p]] = 1;
+      ++nFixed;
+    }
+  }
+  if (nFixed == 0)
+  {
+    vtkErrorMacro(<< "the torso does not touch the heart: no torso node is a heart node (are both inputs from the "
+                     "same mesh?)");
+    return false;
+  }
+  // Torso parts without a heart node have no defined potential: hold them at 0.
+  std::vector<vtkIdType> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& t : fem.Tetrahedra)
+    for (int a = 1; a < 4; ++a)
+    {
+      const int r0 = Find(parent, t[0]), ra = Find(parent, t[a]);
+      if (r0 != ra)
+        parent[std::max(r0, ra)] = std::min(r0, ra);
+    }
+  std::vector<unsigned char> grounded(n, 0);
+  for (vtkIdType i = 0; i < n; ++i)
+    if (model->Fixed[i])
+      grounded[Find(parent, i)] = 1;
+  vtkIdType floating = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+    if (!grounded[Find(parent, i)])
+    {
+      model->Fixed[i] = 1;
+      ++floating;
+    }
+  if (floating)
+    vtkWarningMacro(<< floating << " torso nodes lie in parts that touch no heart node; their potential is held at 0");
+
+  // Conductivity per tetrahedron.
+  std::map<int, double> sigmaOf;
+  for (std::size_t k = 0; k + 1 < this->RegionConductivities.size(); k += 2)
+    sigmaOf[static_cast<int>(this->RegionConductivities[k])] = this->RegionConductivities[k + 1];
+  std::vector<std::array<double, 6>> tensors(torsoCells.size());
+  for (std::size_t k = 0; k < torsoCells.size(); ++k)
+  {
+    const auto it = sigmaOf.find(static_cast<int>(regions->GetComponent(torsoCells[k], 0)));
+    const double sigma = it != sigmaOf.end() ? it->second : this->Conductivity;
+    tensors[k] = { sigma, sigma, sigma, 0, 0, 0 };
+  }
+  this->UpdateProgress(0.02);
+  amSparseMatrix mass;
+  fem.Assemble(&tensors, mass, model->K);
+  model->CG.SetMatrix(&model->K, &model->Fixed);
+  model->CG.RelativeTolerance = this->SolverTolerance;
+  model->CG.MaximumIterations = this->MaximumIterations;
+  model->X.assign(n, 0.0);
+  model->Zero.assign(n, 0.0);
+
+  // Body surface: faces of exactly one torso tetrahedron, not all of whose nodes are heart nodes.
+  std::vector<std::array<vtkIdType, 3>> faces;
+  faces.reserve(4 * fem.Tetrahedra.size());
+  static const int faceOf[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
+  for (const auto& t : fem.Tetrahedra)
+    for (const auto& f : faceOf)
+    {
+      std::array<vtkIdType, 3> face = { t[f[0]], t[f[1]], t[f[2]] };
+      std::sort(face.begin(), face.end());
+      faces.push_back(face);
+    }
+  std::sort(faces.begin(), faces.end());
+  std::vector<unsigned char> onSurface(n, 0);
+  for (std::size_t k = 0; k < faces.size();)
+  {
+    std::size_t e = k + 1;
+    while (e < faces.size() && faces[e] == faces[k])
+      ++e;
+    const auto& f = faces[k];
+    const bool heartFace = model->HeartIndex[f[0]] >= 0 && model->HeartIndex[f[1]] >= 0 && model->HeartIndex[f[2]] >= 0;
+    if (e - k == 1 && !heartFace)
+      for (vtkIdType v : f)
+        onSurface[v] = 1;
+    k = e;
+  }
+  std::vector<std::array<double, 3>>().swap(model->ElectrodePoints);
+  for (std::size_t e = 0; e + 2 < this->ElectrodePositions.size(); e += 3)
+  {
+    vtkIdType best = -1;
+    double bestD = 1e300;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (!onSurface[i])
+        continue;
+      double d2 = 0;
+      for (int c = 0; c < 3; ++c)
+        d2 += (fem.Points[i][c] - this->ElectrodePositions[e + c]) * (fem.Points[i][c] - this->ElectrodePositions[e + c]);
+      if (d2 < bestD)
+      {
+        bestD = d2;
+        best = i;
+      }
+    }
+    if (best < 0)
+    {
+      vtkErrorMacro(<< "the torso has no body surface to put electrodes on");
+      return false;
+    }
+    if (std::sqrt(bestD) > 30.0)
+      vtkWarningMacro(<< "electrode " << e / 3 << " at (" << this->ElectrodePositions[e] << ", "
+                      << this->ElectrodePositions[e + 1] << ", " << this->ElectrodePositions[e + 2] << ") is "
+                      << std::sqrt(bestD) << " mm from the closest body-surface node");
+    model->Electrodes.push_back(best);
+    model->ElectrodePoints.push_back(fem.Points[best]);
+  }
+
+  // The torso mesh of output 0.
+  auto torso = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    points->SetPoint(i, fem.Points[i].data());
+  torso->SetPoints(points);
+  torso->Allocate(static_cast<vtkIdType>(torsoCells.size()));
+  for (const auto& t : fem.Tetrahedra)
+    torso->InsertNextCell(VTK_TETRA, 4, t.data());
+  vtkSmartPointer<vtkDataArray> r = vtk::TakeSmartPointer(regions->NewInstance());
+  r->SetName(regions->GetName());
+  r->SetNumberOfTuples(static_cast<vtkIdType>(torsoCells.size()));
+  for (std::size_t k = 0; k < torsoCells.size(); ++k)
+    r->SetComponent(static_cast<vtkIdType>(k), 0, regions->GetComponent(torsoCells[k], 0));
+  torso->GetCellData()->AddArray(r);
+  vtkNew<vtkIdTypeArray> inputIds;
+  inputIds->SetName("InputPointId");
+  inputIds->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    inputIds->SetValue(i, global[i]);
+  torso->GetPointData()->AddArray(inputIds);
+  std::ostringstream params;
+  params << "Conductivity=" << this->Conductivity << " RegionConductivities=";
+  for (std::size_t k = 0; k < this->RegionConductivities.size(); ++k)
+    params << (k ? "," : "") << this->RegionConductivities[k];
+  params << " PotentialArray=" << (this->PotentialArrayName ? this->PotentialArrayName : "")
+         << " PotentialScale=" << this->PotentialScale << " Electrodes=" << model->Electrodes.size();
+  amProvenance::Record(torso, heart, "amTorsoPotential", params.str());
+  model->Torso = torso;
+  model->MeshTime = mesh->GetMTime();
+  model->FilterTime = this->GetMTime();
+  model->HeartRun = HeartRunOf(heart);
+  this->NumberOfTorsoNodes = n;
+  this->NumberOfHeartNodes = nFixed;
+  this->State = std::move(model);
+  return true;
+}
+
+bool amTorsoPotential::Solve(vtkUnstructuredGrid* heart, double time)
+{
+  Model& m = *this->State;
+  vtkDataArray* potential = heart->GetPointData()->GetArray(this->PotentialArrayName ? this->PotentialArrayName : "");
+  if (!potential || HeartRunOf(heart) != m.HeartRun)
+  {
+    vtkErrorMacro(<< "the heart input changed while the torso series was being computed");
+    return false;
+  }
+  const vtkIdType n = static_cast<vtkIdType>(m.X.size());
+  for (vtkIdType i = 0; i < n; ++i)
+    if (m.HeartIndex[i] >= 0)
+    {
+      const double value = potential->GetComponent(m.HeartIndex[i], 0);
+      if (!std::isfinite(value))
+      {
+        vtkErrorMacro(<< "the heart potential is not finite at heart point " << m.HeartIndex[i] << " (t = " << time
+                      << " ms)");
+        return false;
+      }
+      m.X[i] = this->PotentialScale * value;
+    }
+  const auto start = std::chrono::steady_clock::now();
+  const amConjugateGradient::Result result = m.CG.Solve(m.Zero.data(), m.X.data());
+  m.Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m.Iterations += result.Iterations;
+  if (!result.Converged)
+  {
+    vtkErrorMacro(<< "conjugate gradients did not converge for the torso at t = " << time << " ms ("
+                  << result.Iterations << " iterations, residual " << result.ResidualNorm << " of "
+                  << result.RightHandSideNorm << ")");
+    return false;
+  }
+  m.Times.push_back(time);
+  m.Phi.emplace_back(m.X.begin(), m.X.end());
+  std::vector<double> row;
+  for (vtkIdType e : m.Electrodes)
+    row.push_back(m.X[e]);
+  m.Leads.push_back(row);
+  return true;
+}
+
+void amTorsoPotential::Produce(vtkInformationVector* outputVector)
+{
+  const Model& m = *this->State;
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outInfo);
+  std::size_t frame = m.Times.size() - 1;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && m.Times.size() > 1)
+  {
+    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    frame = 0;
+    while (frame + 1 < m.Times.size() && m.Times[frame + 1] <= t + 1e-9 * std::max(1.0, std::fabs(t)))
+      ++frame;
+  }
+  output->ShallowCopy(m.Torso);
+  vtkNew<vtkFloatArray> phi;
+  phi->SetName("Potential");
+  phi->SetNumberOfTuples(static_cast<vtkIdType>(m.Phi[frame].size()));
+  std::copy(m.Phi[frame].begin(), m.Phi[frame].end(), phi->GetPointer(0));
+  output->GetPointData()->AddArray(phi);
+  output->GetPointData()->SetActiveScalars("Potential");
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), m.Times[frame]);
+
+  vtkTable* table = vtkTable::GetData(outputVector->GetInformationObject(1));
+  table->Initialize();
+  const std::size_t nt = m.Times.size();
+  auto column = [&](const char* name) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfTuples(static_cast<vtkIdType>(nt));
+    table->AddColumn(a);
+    return a.GetPointer();
+  };
+  vtkDoubleArray* time = column("Time");
+  for (std::size_t k = 0; k < nt; ++k)
+    time->SetValue(static_cast<vtkIdType>(k), m.Times[k]);
+  const std::size_t ne = m.Electrodes.size();
+  if (ne == 9)
+  {
+    static const char* names[12] = { "I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6" };
+    vtkDoubleArray* cols[12];
+    for (int l = 0; l < 12; ++l)
+      cols[l] = column(names[l]);
+    for (std::size_t k = 0; k < nt; ++k)
+    {
+      const auto& e = m.Leads[k];
+      const double ra = e[0], la = e[1], ll = e[2], wct = (ra + la + ll) / 3.0;
+      const double lead[12] = { la - ra, ll - ra, ll - la, ra - 0.5 * (la + ll), la - 0.5 * (ra + ll),
+        ll - 0.5 * (ra + la), e[3] - wct, e[4] - wct, e[5] - wct, e[6] - wct, e[7] - wct, e[8] - wct };
+      for (int l = 0; l < 12; ++l)
+        cols[l]->SetValue(static_cast<vtkIdType>(k), lead[l]);
+    }
+  }
+  else
+    for (std::size_t e = 0; e < ne; ++e)
+    {
+      const std::string name = "E" + std::to_string(e);
+      vtkDoubleArray* col = column(name.c_str());
+      for (std::size_t k = 0; k < nt; ++k)
+      {
+        const double mean = std::accumulate(m.Leads[k].begin(), m.Leads[k].end(), 0.0) / static_cast<double>(ne);
+        col->SetValue(static_cast<vtkIdType>(k), m.Leads[k][e] - mean);
+      }
+    }
+  vtkNew<vtkDoubleArray> electrodes;
+  electrodes->SetName("Electrodes");
+  electrodes->SetNumberOfComponents(3);
+  for (const auto& p : m.ElectrodePoints)
+    electrodes->InsertNextTuple(p.data());
+  table->GetFieldData()->AddArray(electrodes);
+  this->NumberOfSolves = static_cast<int>(nt);
+  this->MeanIterations = nt ? static_cast<double>(m.Iterations) / static_cast<double>(nt) : 0.0;
+  this->WallSeconds = m.Seconds;
+}
+
+int amTorsoPotential::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* mesh = vtkUnstructuredGrid::GetData(inputVector[0]);
+  vtkUnstructuredGrid* heart = vtkUnstructuredGrid::GetData(inputVector[1]);
+  if (!mesh || !heart)
+  {
+    vtkErrorMacro(<< "TorsoPotential needs the whole mesh (input 0) and the heart solution (input 1)");
+    return 0;
+  }
+  auto fail = [&]() {
+    this->LoopIndex = -1;
+    this->State.reset();
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    return 0;
+  };
+  if (this->LoopIndex < 0)
+  {
+    const bool valid = this->State && !this->State->Times.empty() && this->State->MeshTime == mesh->GetMTime() &&
+      this->State->FilterTime == this->GetMTime() && this->State->HeartRun == HeartRunOf(heart);
+    if (valid)
+    {
+      this->Produce(outputVector);
+      return 1;
+    }
+    if (!this->Prepare(mesh, heart))
+      return fail();
+    vtkInformation* heartInfo = inputVector[1]->GetInformationObject(0);
+    const int nt = heartInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS())
+      ? heartInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS())
+      : 0;
+    if (nt <= 1)
+    {
+      const double t = heart->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
+        ? heart->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+        : 0.0;
+      if (!this->Solve(heart, t))
+        return fail();
+      this->Produce(outputVector);
+      return 1;
+    }
+    const double* times = heartInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    this->LoopTimes.assign(times, times + nt);
+    this->LoopIndex = 0;
+    request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+    return 1;
+  }
+  // Inside the loop: the heart is at LoopTimes[LoopIndex].
+  if (!this->Solve(heart, this->LoopTimes[this->LoopIndex]))
+    return fail();
+  ++this->LoopIndex;
+  this->UpdateProgress(0.05 + 0.95 * this->LoopIndex / static_cast<double>(this->LoopTimes.size()));
+  if (this->LoopIndex < static_cast<int>(this->LoopTimes.size()))
+  {
+    request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+    return 1;
+  }
+  request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+  this->LoopIndex = -1;
+  this->Produce(outputVector);
+  return 1;
+}
+
+void amTorsoPotential::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Conductivity: " << this->Conductivity << "\n";
+  os << indent << "PotentialScale: " << this->PotentialScale << "\n";
+  os << indent << "Electrodes: " << this->ElectrodePositions.size() / 3 << "\n";
+}

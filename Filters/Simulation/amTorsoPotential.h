@@ -1,0 +1,140 @@
+/**
+ * @class   amTorsoPotential
+ * @brief   Body-surface potentials and a virtual 12-lead ECG: the quasi-static Poisson problem
+ *          div(sigma grad phi) = 0 on the torso, with the heart's potential as Dirichlet data.
+ *
+ * Input 0 ("Mesh"): the whole tetrahedral mesh (cell data RegionArrayName, default "Region").
+ * Input 1 ("Heart"): the heart solution, normally amFitzHughNagumoSolver's output: a mesh whose
+ * point data "InputPointId" names each heart node's point in input 0 and PotentialArrayName
+ * (default "u") holds its potential; the heart's regions are the region labels of its cells.
+ *
+ * The torso is every tetrahedron of input 0 outside the heart regions (lungs, blood pools, soft
+ * tissue, bone, ...), with conductivity per region: RegionConductivities (label, sigma) pairs,
+ * else Conductivity. Units cancel (only ratios matter); the defaults are in S/m for the phantom's
+ * labels: soft tissue (1) 0.2, fat (2) 0.04, lungs (3, 4) 0.05, blood (6, 7, 8) 0.7, bone (9, 10)
+ * 0.02 — values of the order used in ECG forward models (blood about 3x muscle, lung about a
+ * quarter, fat and bone lower). phi = PotentialScale * (heart potential) on the torso nodes
+ * shared with the heart (PotentialScale 100: u = 1 is a 100 mV depolarisation, so phi is in mV
+ * above rest), zero flux on the body surface (natural boundary condition). P1 elements
+ * (amP1Assembly), the matrix assembled once, Jacobi-preconditioned conjugate gradients warm-
+ * started from the previous time (amConjugateGradient). Torso parts that touch no heart node
+ * (an undetermined potential) are held at 0 with a warning.
+ *
+ * Time: when input 1 is time-dependent the filter runs the whole series once (it requests every
+ * time step of the heart in turn), keeps the potentials of every step (float), and then answers
+ * any requested time without solving again. Output 0: the torso mesh (its tetrahedra, Region,
+ * point data "Potential" in mV, "InputPointId"), time-dependent like the heart. Output 1: a
+ * vtkTable over all times: Time (ms), then the leads I, II, III, aVR, aVL, aVF, V1..V6 (mV; V1-V6
+ * against Wilson's central terminal) when 9 electrodes are given (RA, LA, LL, V1..V6), or the
+ * potential of each electrode ("E0", "E1", ...) against their mean otherwise. Electrodes:
+ * ElectrodePositions (x y z triples, mm), each snapped to the closest body-surface node (the
+ * snapped positions are in the table's field data "Electrodes"); the default is the phantom's
+ * standard placement (amThoraxPhantomModel::StandardElectrodes).
+ *
+ * Errors: missing inputs or arrays, no torso cells, a torso that does not touch the heart, a
+ * non-tetrahedral or degenerate torso cell, a solver that does not converge.
+ */
+#ifndef amTorsoPotential_h
+#define amTorsoPotential_h
+
+#include "AnatomeshFiltersSimulationModule.h" // export macro
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <memory>
+#include <vector>
+
+class ANATOMESHFILTERSSIMULATION_EXPORT amTorsoPotential : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static amTorsoPotential* New();
+  vtkTypeMacro(amTorsoPotential, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The heart solution (input 1).
+  void SetHeartConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetHeartData(vtkDataObject* heart) { this->SetInputData(1, heart); }
+
+  ///@{
+  /// Cell array of region labels (default "Region").
+  vtkSetStringMacro(RegionArrayName);
+  vtkGetStringMacro(RegionArrayName);
+  ///@}
+
+  ///@{
+  /// Heart point array used as Dirichlet data (default "u") and its scale (default 100: mV).
+  vtkSetStringMacro(PotentialArrayName);
+  vtkGetStringMacro(PotentialArrayName);
+  vtkSetMacro(PotentialScale, double);
+  vtkGetMacro(PotentialScale, double);
+  ///@}
+
+  ///@{
+  /// Conductivity where no per-region value is given (default 0.2) and (label, sigma) pairs.
+  vtkSetClampMacro(Conductivity, double, 0.0, 1e6);
+  vtkGetMacro(Conductivity, double);
+  void AddRegionConductivity(double label, double sigma);
+  void RemoveAllRegionConductivities();
+  ///@}
+
+  ///@{
+  /// Electrode positions (x y z triples, mm). Nine electrodes give the standard 12 leads.
+  void AddElectrode(double x, double y, double z);
+  void RemoveAllElectrodes();
+  int GetNumberOfElectrodes() { return static_cast<int>(this->ElectrodePositions.size() / 3); }
+  ///@}
+
+  ///@{
+  /// Conjugate gradients: relative residual (default 1e-6) and iteration cap (default 5000).
+  vtkSetClampMacro(SolverTolerance, double, 1e-16, 0.1);
+  vtkGetMacro(SolverTolerance, double);
+  vtkSetClampMacro(MaximumIterations, int, 1, 1000000);
+  vtkGetMacro(MaximumIterations, int);
+  ///@}
+
+  ///@{
+  /// Figures of the last run: torso nodes, Dirichlet (heart) nodes, time steps solved, mean CG
+  /// iterations per step, wall seconds of the solves.
+  vtkGetMacro(NumberOfTorsoNodes, vtkIdType);
+  vtkGetMacro(NumberOfHeartNodes, vtkIdType);
+  vtkGetMacro(NumberOfSolves, int);
+  vtkGetMacro(MeanIterations, double);
+  vtkGetMacro(WallSeconds, double);
+  ///@}
+
+protected:
+  amTorsoPotential();
+  ~amTorsoPotential() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* RegionArrayName;
+  char* PotentialArrayName;
+  double PotentialScale;
+  double Conductivity;
+  std::vector<double> RegionConductivities;
+  std::vector<double> ElectrodePositions;
+  double SolverTolerance;
+  int MaximumIterations;
+
+  vtkIdType NumberOfTorsoNodes;
+  vtkIdType NumberOfHeartNodes;
+  int NumberOfSolves;
+  double MeanIterations;
+  double WallSeconds;
+
+private:
+  amTorsoPotential(const amTorsoPotential&) = delete;
+  void operator=(const amTorsoPotential&) = delete;
+  struct Model;
+  std::unique_ptr<Model> State;
+  int LoopIndex;                 // -1: not looping over the heart's times
+  std::vector<double> LoopTimes; // the heart's times of the running loop
+  bool Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* heart);
+  bool Solve(vtkUnstructuredGrid* heart, double time);
+  void Produce(vtkInformationVector* outputVector);
+};
+
+#endif

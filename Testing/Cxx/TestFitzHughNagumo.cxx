@@ -1,0 +1,301 @@
+// FitzHugh-Nagumo (Rogers-McCulloch) monodomain solver: plane-wave speed against the bistable
+// equation's analytic speed, convergence orders, a Niederer-style slab, time handling, bad input.
+#include "amFitzHughNagumoSolver.h"
+#include "amSimulationTestUtilities.h"
+#include "amTestUtilities.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+// Mean activation time of the output nodes at coordinate x (axis 0).
+double ActivationAt(vtkUnstructuredGrid* out, double x, double tol = 1e-6)
+{
+  vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");
+  double sum = 0;
+  int count = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    if (std::fabs(out->GetPoint(i)[0] - x) < tol)
+    {
+      sum += act->GetComponent(i, 0);
+      ++count;
+    }
+  return count ? sum / count : -1;
+}
+
+// A cable-like slab 60 mm long, one element thick: a plane wave from x = 0 with the recovery
+// variable frozen (c3 = 0) solves the bistable equation u_t = D u_xx + k u(u-a)(1-u), whose
+// travelling front has the speed sqrt(kD/2)(1-2a). The speed is measured between x = 30 and 42 mm,
+// where the front has settled after its launch and does not yet feel the far wall.
+double PlaneWaveSpeed(double h, double dt)
+{
+  const int n[3] = { static_cast<int>(std::lround(60.0 / h)), 1, 1 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 60.0, h, h };
+  auto mesh = amTest::BoxMesh(n, origin, size);
+  vtkNew<amFitzHughNagumoSolver> solver;
+  solver->SetInputData(mesh);
+  solver->RemoveAllHeartRegions();
+  solver->AddHeartRegion(1);
+  solver->SetConductivity(1.0);
+  solver->SetC3(0.0);
+  solver->SetTimeStep(dt);
+  solver->SetEndTime(170.0);
+  solver->SetOutputInterval(170.0);
+  solver->SetStimulusCenter(0, 0, 0);
+  solver->SetStimulusRadius(3.0);
+  solver->SetStimulusStrength(2.0);
+  solver->SetStimulusDuration(std::max(4.0, dt));
+  solver->SetSolverTolerance(1e-10);
+  solver->Update();
+  vtkUnstructuredGrid* out = solver->GetOutput();
+  const double t30 = ActivationAt(out, 30.0), t42 = ActivationAt(out, 42.0);
+  EXPECT_GT(t30, 0);
+  EXPECT_GT(t42, t30);
+  return 12.0 / (t42 - t30);
+}
+
+const double Exact = std::sqrt(0.26 * 1.0 / 2.0) * (1.0 - 2.0 * 0.13); // mm/ms
+}
+
+TEST(FitzHughNagumo, PlaneWaveSpeedConvergesInSpace)
+{
+  // Orders from successive differences (the dt = 0.01 ms time error, about -0.03 %, is the same
+  // for every h and cancels).
+  const double hs[4] = { 1.0, 0.5, 0.25, 0.125 };
+  double c[4];
+  std::printf("plane wave, D = 1 mm^2/ms, k = 0.26/ms, a = 0.13: exact speed %.6f mm/ms (dt = 0.01 ms)\n", Exact);
+  for (int k = 0; k < 4; ++k)
+  {
+    c[k] = PlaneWaveSpeed(hs[k], 0.01);
+    std::printf("  h = %.3f mm: speed %.6f mm/ms, error against the exact speed %+.4f%%\n", hs[k], c[k],
+      100 * (c[k] - Exact) / Exact);
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    const double order = std::log(std::fabs(c[k] - c[k + 1]) / std::fabs(c[k + 1] - c[k + 2])) / std::log(2.0);
+    std::printf("  observed order in space (h = %.3f, %.3f, %.3f): %.2f\n", hs[k], hs[k + 1], hs[k + 2], order);
+    EXPECT_GT(order, 1.7); // second order
+    EXPECT_LT(order, 2.5);
+  }
+  EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.03); // the bar: within 3 % on the finest mesh
+  EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.001); // what it does: within 0.1 %
+}
+
+TEST(FitzHughNagumo, PlaneWaveSpeedConvergesInTime)
+{
+  const double dts[4] = { 0.4, 0.2, 0.1, 0.05 };
+  double c[4];
+  std::printf("plane wave at h = 0.25 mm:\n");
+  for (int k = 0; k < 4; ++k)
+  {
+    c[k] = PlaneWaveSpeed(0.25, dts[k]);
+    std::printf("  dt = %.3f ms: speed %.6f mm/ms, error against the exact speed %+.4f%%\n", dts[k], c[k],
+      100 * (c[k] - Exact) / Exact);
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    const double order = std::log(std::fabs(c[k] - c[k + 1]) / std::fabs(c[k + 1] - c[k + 2])) / std::log(2.0);
+    std::printf("  observed order in time (dt = %.3f, %.3f, %.3f): %.2f\n", dts[k], dts[k + 1], dts[k + 2], order);
+    EXPECT_GT(order, 0.8); // first order (semi-implicit Euler)
+    EXPECT_LT(order, 1.3);
+  }
+  EXPECT_LT(std::fabs(c[0] - Exact) / Exact, 0.03); // even the 0.4 ms step is within 3 %
+}
+
+TEST(FitzHughNagumo, NiedererSlabActivation)
+{
+  // 20 x 7 x 3 mm, fibres along x (transverse conductivity ratio 0.019/0.17 as in Niederer et al.
+  // 2011), stimulus at the corner; activation at P1 (corner), the centre and P8 (far corner).
+  double previous = -1;
+  for (double dx : { 0.5, 0.25 })
+  {
+    const int n[3] = { static_cast<int>(std::lround(20 / dx)), static_cast<int>(std::lround(7 / dx)),
+      static_cast<int>(std::lround(3 / dx)) };
+    const double origin[3] = { 0, 0, 0 }, size[3] = { 20, 7, 3 };
+    auto mesh = amTest::BoxMesh(n, origin, size);
+    vtkNew<vtkDoubleArray> fibres;
+    fibres->SetName("Fibres");
+    fibres->SetNumberOfComponents(3);
+    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+      fibres->InsertNextTuple3(1, 0, 0);
+    mesh->GetCellData()->AddArray(fibres);
+    vtkNew<amFitzHughNagumoSolver> solver;
+    solver->SetInputData(mesh);
+    solver->RemoveAllHeartRegions();
+    solver->AddHeartRegion(1);
+    solver->SetTransverseConductivityRatio(0.019 / 0.17);
+    solver->SetTimeStep(0.05);
+    solver->SetEndTime(100);
+    solver->SetOutputInterval(100);
+    solver->SetStimulusCenter(0, 0, 0);
+    solver->SetStimulusRadius(2.5);
+    solver->SetStimulusStrength(2.0);
+    solver->SetStimulusDuration(4.0);
+    solver->Update();
+    vtkUnstructuredGrid* out = solver->GetOutput();
+    vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");
+    auto at = [&](double x, double y, double z) {
+      const double p[3] = { x, y, z };
+      return act->GetComponent(out->FindPoint(p[0], p[1], p[2]), 0);
+    };
+    const double p1 = at(0, 0, 0), centre = at(10, 3.5, 1.5), p8 = at(20, 7, 3);
+    std::printf("Niederer-style slab dx = %.2f mm, dt = 0.05 ms: P1 %.2f ms, centre %.2f ms, P8 %.2f ms\n", dx, p1,
+      centre, p8);
+    EXPECT_DOUBLE_EQ(solver->GetActivatedFraction(), 1.0);
+    // The far corner is not always last: fronts run faster along the no-flux walls than through the
+    // middle, as in the benchmark's own solutions; the corner of the stimulus is first.
+    EXPECT_LT(p1, centre);
+    EXPECT_LT(p1, p8);
+    if (previous > 0)
+      EXPECT_LT(std::fabs(p8 - previous) / p8, 0.1);
+    previous = p8;
+  }
+}
+
+TEST(FitzHughNagumo, TimeDependentOutputAndFullCycle)
+{
+  const int n[3] = { 30, 6, 2 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 30, 6, 2 };
+  auto mesh = amTest::BoxMesh(n, origin, size);
+  vtkNew<amFitzHughNagumoSolver> solver;
+  solver->SetInputData(mesh);
+  solver->RemoveAllHeartRegions();
+  solver->AddHeartRegion(1);
+  solver->SetTimeStep(1.0); // the paper's step
+  solver->SetEndTime(500);
+  solver->SetOutputInterval(10);
+  solver->SetStimulusCenter(0, 3, 1);
+  solver->SetStimulusRadius(4);
+  solver->SetStimulusDuration(4);
+  solver->UpdateInformation();
+  vtkInformation* info = solver->GetOutputInformation(0);
+  ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  EXPECT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 51);
+  solver->UpdateTimeStep(23.0); // answered by the frame at 20 ms
+  vtkUnstructuredGrid* out = solver->GetOutput();
+  EXPECT_DOUBLE_EQ(out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 20.0);
+  vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");
+  vtkDataArray* u = out->GetPointData()->GetArray("u");
+  double maxU = 0;
+  int notYet = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    maxU = std::max(maxU, u->GetComponent(i, 0));
+    notYet += act->GetComponent(i, 0) < 0;
+    if (act->GetComponent(i, 0) >= 0)
+      EXPECT_LE(act->GetComponent(i, 0), 20.0);
+  }
+  EXPECT_GT(maxU, 0.5);
+  EXPECT_GT(notYet, 0); // the far end is not reached at 20 ms
+  const double wall = solver->GetWallSeconds();
+
+  // At 500 ms every node has depolarised and recovered (u back near rest).
+  solver->UpdateTimeStep(500.0);
+  out = solver->GetOutput();
+  EXPECT_DOUBLE_EQ(solver->GetWallSeconds(), wall); // answered from the kept frames, no new run
+  EXPECT_DOUBLE_EQ(solver->GetActivatedFraction(), 1.0);
+  act = out->GetPointData()->GetArray("ActivationTime");
+  u = out->GetPointData()->GetArray("u");
+  double maxU500 = 0, minAct = 1e9;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    maxU500 = std::max(maxU500, std::fabs(u->GetComponent(i, 0)));
+    minAct = std::min(minAct, act->GetComponent(i, 0));
+    // Activation time grows with the distance from the stimulus corner (x dominates here).
+  }
+  EXPECT_GE(minAct, 0.0);
+  EXPECT_LT(maxU500, 0.1);
+  const double p0[3] = { 5, 0, 0 }, p1[3] = { 15, 0, 0 }, p2[3] = { 25, 0, 0 };
+  const double a0 = act->GetComponent(out->FindPoint(p0[0], p0[1], p0[2]), 0), a1 = act->GetComponent(out->FindPoint(p1[0], p1[1], p1[2]), 0),
+               a2 = act->GetComponent(out->FindPoint(p2[0], p2[1], p2[2]), 0);
+  EXPECT_LT(a0, a1);
+  EXPECT_LT(a1, a2);
+}
+
+TEST(FitzHughNagumo, SameInputSameResult)
+{
+  const int n[3] = { 20, 4, 2 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 20, 4, 2 };
+  std::vector<double> runs[2];
+  for (auto& r : runs)
+  {
+    auto mesh = amTest::BoxMesh(n, origin, size);
+    vtkNew<amFitzHughNagumoSolver> solver;
+    solver->SetInputData(mesh);
+    solver->RemoveAllHeartRegions();
+    solver->AddHeartRegion(1);
+    solver->SetEndTime(30);
+    solver->SetStimulusCenter(0, 0, 0);
+    solver->Update();
+    vtkDataArray* u = solver->GetOutput()->GetPointData()->GetArray("u");
+    for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i)
+      r.push_back(u->GetComponent(i, 0));
+  }
+  EXPECT_EQ(runs[0], runs[1]);
+}
+
+namespace
+{
+std::string SolveExpectingError(vtkUnstructuredGrid* mesh, const std::function<void(amFitzHughNagumoSolver*)>& set)
+{
+  vtkNew<amFitzHughNagumoSolver> solver;
+  vtkNew<amTest::ErrorCatcher> catcher;
+  catcher->Watch(solver);
+  catcher->Watch(solver->GetExecutive());
+  solver->SetInputData(mesh);
+  solver->RemoveAllHeartRegions();
+  solver->AddHeartRegion(1);
+  solver->SetEndTime(5);
+  set(solver);
+  solver->Update();
+  EXPECT_TRUE(catcher->HasError());
+  EXPECT_EQ(solver->GetOutput()->GetNumberOfPoints(), 0); // nothing written
+  return catcher->AllErrors();
+}
+}
+
+TEST(FitzHughNagumo, BadInput)
+{
+  const int n[3] = { 4, 4, 4 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 4, 4, 4 };
+  auto mesh = amTest::BoxMesh(n, origin, size);
+  std::string e = SolveExpectingError(mesh, [](amFitzHughNagumoSolver* s) {
+    s->RemoveAllHeartRegions();
+    s->AddHeartRegion(5);
+  });
+  EXPECT_NE(e.find("no heart"), std::string::npos) << e;
+  e = SolveExpectingError(mesh, [](amFitzHughNagumoSolver* s) { s->SetStimulusCenter(100, 0, 0); });
+  EXPECT_NE(e.find("stimulus is outside the heart"), std::string::npos) << e;
+  e = SolveExpectingError(mesh, [](amFitzHughNagumoSolver* s) { s->SetTimeStep(10); });
+  EXPECT_NE(e.find("too large for stability"), std::string::npos) << e;
+  e = SolveExpectingError(mesh, [](amFitzHughNagumoSolver* s) {
+    s->SetTimeStep(1);
+    s->SetStimulusDuration(0.5);
+  });
+  EXPECT_NE(e.find("less than one time step"), std::string::npos) << e;
+  // A collapsed tetrahedron: move one point onto another.
+  auto bad = amTest::BoxMesh(n, origin, size);
+  double p[3];
+  bad->GetPoint(1, p);
+  bad->GetPoints()->SetPoint(0, p);
+  e = SolveExpectingError(bad, [](amFitzHughNagumoSolver*) {});
+  EXPECT_NE(e.find("degenerate"), std::string::npos) << e;
+  // A NaN coordinate.
+  auto nan = amTest::BoxMesh(n, origin, size);
+  nan->GetPoints()->SetPoint(7, std::nan(""), 0, 0);
+  e = SolveExpectingError(nan, [](amFitzHughNagumoSolver*) {});
+  EXPECT_NE(e.find("degenerate"), std::string::npos) << e;
+}

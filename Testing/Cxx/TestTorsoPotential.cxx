@@ -1,0 +1,330 @@
+// Torso potential: P1 Poisson against a manufactured solution (convergence order), refinement
+// insensitivity of a dipole-like heart source, the time series and the ECG table, bad input.
+#include "amConjugateGradient.h"
+#include "amFitzHughNagumoSolver.h"
+#include "amP1Assembly.h"
+#include "amSimulationTestUtilities.h"
+#include "amSparseMatrix.h"
+#include "amTestUtilities.h"
+#include "amTorsoPotential.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <array>
+#include <set>
+
+namespace
+{
+double Exact(const double* x)
+{
+  return std::exp(x[0]) * std::sin(x[1]); // harmonic
+}
+
+// L2 error of the P1 Dirichlet solution of the Laplace equation on the unit cube (n^3 cubes).
+double ManufacturedError(int n)
+{
+  const int dims[3] = { n, n, n };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 1, 1, 1 };
+  auto mesh = amTest::BoxMesh(dims, origin, size);
+  amP1Assembly fem;
+  fem.Points.resize(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    mesh->GetPoint(i, fem.Points[i].data());
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType* ids;
+    vtkIdType npts;
+    mesh->GetCellPoints(c, npts, ids);
+    fem.Tetrahedra.push_back({ ids[0], ids[1], ids[2], ids[3] });
+  }
+  EXPECT_EQ(fem.FindDegenerate(), -1);
+  amSparseMatrix M, K;
+  fem.Assemble(nullptr, M, K);
+  const vtkIdType np = static_cast<vtkIdType>(fem.Points.size());
+  std::vector<unsigned char> fixed(np, 0);
+  std::vector<double> x(np, 0.0), b(np, 0.0);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const auto& p = fem.Points[i];
+    const bool boundary = p[0] < 1e-12 || p[1] < 1e-12 || p[2] < 1e-12 || p[0] > 1 - 1e-12 || p[1] > 1 - 1e-12 ||
+      p[2] > 1 - 1e-12;
+    fixed[i] = boundary;
+    if (boundary)
+      x[i] = Exact(p.data());
+  }
+  amConjugateGradient cg;
+  cg.SetMatrix(&K, &fixed);
+  cg.RelativeTolerance = 1e-12;
+  const auto result = cg.Solve(b.data(), x.data());
+  EXPECT_TRUE(result.Converged);
+  // Degree-2 quadrature (4 points) of (u_h - u)^2 on every tetrahedron.
+  const double qa = 0.5854101966249685, qb = 0.1381966011250105;
+  double sum = 0;
+  for (vtkIdType t = 0; t < static_cast<vtkIdType>(fem.Tetrahedra.size()); ++t)
+  {
+    double g[4][3], volume;
+    fem.Gradients(t, g, volume);
+    const auto& tet = fem.Tetrahedra[t];
+    for (int q = 0; q < 4; ++q)
+    {
+      double lambda[4] = { qb, qb, qb, qb };
+      lambda[q] = qa;
+      double point[3] = { 0, 0, 0 }, uh = 0;
+      for (int a = 0; a < 4; ++a)
+      {
+        uh += lambda[a] * x[tet[a]];
+        for (int c = 0; c < 3; ++c)
+          point[c] += lambda[a] * fem.Points[tet[a]][c];
+      }
+      const double d = uh - Exact(point);
+      sum += 0.25 * volume * d * d;
+    }
+  }
+  return std::sqrt(sum);
+}
+
+// Nested cubes: the heart [-8, 8]^3 (region 5) in a torso [-half, half]^3 (region 1), h = 2 half / n
+// (choose n so that 8 falls on a grid plane).
+vtkSmartPointer<vtkUnstructuredGrid> NestedCubes(int n, double half = 40.0)
+{
+  const int dims[3] = { n, n, n };
+  const double origin[3] = { -half, -half, -half }, size[3] = { 2 * half, 2 * half, 2 * half };
+  return amTest::BoxMesh(dims, origin, size, [](const double* c) {
+    return (std::fabs(c[0]) < 8 && std::fabs(c[1]) < 8 && std::fabs(c[2]) < 8) ? 5 : 1;
+  });
+}
+
+// A static heart solution on the region-5 cells of mesh: u = f(point).
+vtkSmartPointer<vtkUnstructuredGrid> StaticHeart(vtkUnstructuredGrid* mesh, double (*f)(const double*))
+{
+  auto heart = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkDataArray* regions = mesh->GetCellData()->GetArray("Region");
+  std::set<vtkIdType> nodes;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+    if (regions->GetComponent(c, 0) == 5)
+    {
+      const vtkIdType* ids;
+      vtkIdType npts;
+      mesh->GetCellPoints(c, npts, ids);
+      nodes.insert(ids, ids + 4);
+    }
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("InputPointId");
+  vtkNew<vtkDoubleArray> u;
+  u->SetName("u");
+  for (vtkIdType p : nodes)
+  {
+    double x[3];
+    mesh->GetPoint(p, x);
+    points->InsertNextPoint(x);
+    ids->InsertNextValue(p);
+    u->InsertNextValue(f(x));
+  }
+  heart->SetPoints(points);
+  heart->GetPointData()->AddArray(ids);
+  heart->GetPointData()->AddArray(u);
+  vtkNew<vtkIntArray> r;
+  r->SetName("Region");
+  r->InsertNextValue(5);
+  heart->GetCellData()->AddArray(r); // the heart's regions are read from its cells' labels
+  heart->Allocate(1);
+  vtkIdType cell[4] = { 0, 1, 2, 3 };
+  heart->InsertNextCell(VTK_TETRA, 4, cell);
+  return heart;
+}
+
+double Dipole(const double* x)
+{
+  return x[0] / 8.0;
+}
+
+double PotentialAt(vtkUnstructuredGrid* torso, const double p[3])
+{
+  return torso->GetPointData()->GetArray("Potential")->GetComponent(torso->FindPoint(p[0], p[1], p[2]), 0);
+}
+}
+
+TEST(TorsoPotential, ManufacturedSolutionSecondOrder)
+{
+  double previous = 0;
+  std::printf("Laplace on the unit cube, u = exp(x) sin(y), P1:\n");
+  for (int n : { 4, 8, 16, 32 })
+  {
+    const double e = ManufacturedError(n);
+    std::printf("  h = 1/%d: L2 error %.3e", n, e);
+    if (previous > 0)
+    {
+      const double order = std::log(previous / e) / std::log(2.0);
+      std::printf(", order %.2f", order);
+      if (n >= 16)
+        EXPECT_GT(order, 1.8);
+    }
+    std::printf("\n");
+    previous = e;
+  }
+  EXPECT_LT(previous, 2e-4);
+}
+
+TEST(TorsoPotential, DipoleInsensitiveToRefinement)
+{
+  // The heart [-8, 8]^3 holds phi = 100 x / 8 (a dipole-like source); the torso [-24, 24]^3 at
+  // h = 4, 2 and 1 mm. Probes on the grid of every mesh.
+  const double probes[3][3] = { { 16, 0, 0 }, { 16, 8, 8 }, { 24, 0, 0 } };
+  double values[3][3];
+  int k = 0;
+  for (int n : { 12, 24, 48 })
+  {
+    auto mesh = NestedCubes(n, 24.0);
+    auto heart = StaticHeart(mesh, Dipole);
+    vtkNew<amTorsoPotential> torso;
+    torso->SetInputData(0, mesh);
+    torso->SetInputData(1, heart);
+    torso->RemoveAllRegionConductivities();
+    torso->RemoveAllElectrodes();
+    torso->AddElectrode(24, 0, 0);
+    torso->AddElectrode(-24, 0, 0);
+    torso->Update();
+    vtkUnstructuredGrid* out = vtkUnstructuredGrid::SafeDownCast(torso->GetOutputDataObject(0));
+    ASSERT_GT(out->GetNumberOfPoints(), 0);
+    const int heartCubes = (16 * n) / 48;
+    EXPECT_EQ(out->GetNumberOfCells(), mesh->GetNumberOfCells() - 6 * heartCubes * heartCubes * heartCubes);
+    for (int p = 0; p < 3; ++p)
+      values[k][p] = PotentialAt(out, probes[p]);
+    // Antisymmetric data give an antisymmetric potential; the maximum principle bounds it.
+    EXPECT_NEAR(PotentialAt(out, std::array<double, 3>{ -16, 0, 0 }.data()), -values[k][0], 1e-5);
+    vtkDataArray* phi = out->GetPointData()->GetArray("Potential");
+    double range[2];
+    phi->GetRange(range);
+    EXPECT_GE(range[0], -100.0 - 1e-6);
+    EXPECT_LE(range[1], 100.0 + 1e-6);
+    std::printf("dipole, h = %.0f mm: phi(16,0,0) = %.3f, phi(16,8,8) = %.3f, phi(24,0,0) = %.3f mV (%d CG iterations)\n",
+      48.0 / n, values[k][0], values[k][1], values[k][2], static_cast<int>(torso->GetMeanIterations()));
+    ++k;
+  }
+  for (int p = 0; p < 3; ++p)
+  {
+    const double coarse = std::fabs(values[1][p] - values[0][p]) / std::fabs(values[2][p]);
+    const double fine = std::fabs(values[2][p] - values[1][p]) / std::fabs(values[2][p]);
+    std::printf("  probe %d: change 4 -> 2 mm %.2f%%, 2 -> 1 mm %.2f%%\n", p, 100 * coarse, 100 * fine);
+    EXPECT_LT(fine, 0.05);
+    EXPECT_LT(fine, 0.6 * coarse); // the change shrinks under refinement
+  }
+}
+
+TEST(TorsoPotential, TimeSeriesAndLeads)
+{
+  auto mesh = NestedCubes(24, 24.0); // 2 mm elements, heart [-8, 8]^3
+  vtkNew<amFitzHughNagumoSolver> heart;
+  heart->SetInputData(mesh);
+  heart->SetTimeStep(0.5);
+  heart->SetEndTime(60);
+  heart->SetOutputInterval(10);
+  heart->SetConductivity(1.0);
+  heart->SetStimulusCenter(-8, -8, -8);
+  heart->SetStimulusRadius(8);
+  heart->SetStimulusStrength(2);
+  heart->SetStimulusDuration(5);
+  vtkNew<amTorsoPotential> torso;
+  torso->SetInputData(0, mesh);
+  torso->SetInputConnection(1, heart->GetOutputPort());
+  torso->RemoveAllElectrodes();
+  const double e[9][3] = { { -24, 0, 20 }, { 24, 0, 20 }, { 20, 0, -24 }, { -5, -24, 0 }, { 5, -24, 0 },
+    { 12, -24, 0 }, { 18, -24, 0 }, { 24, -18, 0 }, { 24, 0, 0 } };
+  for (const auto& p : e)
+    torso->AddElectrode(p[0], p[1], p[2]);
+  torso->UpdateInformation();
+  vtkInformation* info = torso->GetOutputInformation(0);
+  ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  EXPECT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 7);
+  torso->UpdateTimeStep(30.0);
+  vtkUnstructuredGrid* out = vtkUnstructuredGrid::SafeDownCast(torso->GetOutputDataObject(0));
+  ASSERT_NE(out, nullptr);
+  EXPECT_DOUBLE_EQ(out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 30.0);
+  double range[2];
+  out->GetPointData()->GetArray("Potential")->GetRange(range);
+  EXPECT_GT(range[1], 10.0); // the depolarised part of the heart shows
+  EXPECT_LE(range[1], 100.0 * 1.1);
+  vtkTable* leads = vtkTable::SafeDownCast(torso->GetOutputDataObject(1));
+  ASSERT_NE(leads, nullptr);
+  EXPECT_EQ(leads->GetNumberOfRows(), 7);
+  EXPECT_EQ(leads->GetNumberOfColumns(), 13);
+  EXPECT_STREQ(leads->GetColumnName(1), "I");
+  EXPECT_STREQ(leads->GetColumnName(12), "V6");
+  // At t = 0 nothing has happened; later the leads move.
+  double at0 = 0, later = 0;
+  for (int c = 1; c < 13; ++c)
+  {
+    at0 = std::max(at0, std::fabs(leads->GetValue(0, c).ToDouble()));
+    for (int r = 1; r < 7; ++r)
+      later = std::max(later, std::fabs(leads->GetValue(r, c).ToDouble()));
+  }
+  EXPECT_LT(at0, 1e-6);
+  EXPECT_GT(later, 0.1);
+  // Lead III = II - I (Einthoven).
+  for (int r = 0; r < 7; ++r)
+    EXPECT_NEAR(leads->GetValue(r, 3).ToDouble(), leads->GetValue(r, 2).ToDouble() - leads->GetValue(r, 1).ToDouble(), 1e-9);
+  // Another time is answered from the kept series.
+  const int solves = torso->GetNumberOfSolves();
+  torso->UpdateTimeStep(50.0);
+  out = vtkUnstructuredGrid::SafeDownCast(torso->GetOutputDataObject(0));
+  EXPECT_DOUBLE_EQ(out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 50.0);
+  EXPECT_EQ(torso->GetNumberOfSolves(), solves);
+}
+
+TEST(TorsoPotential, BadInput)
+{
+  auto mesh = NestedCubes(8);
+  {
+    // No torso: every cell is heart.
+    auto all = NestedCubes(8);
+    vtkDataArray* r = all->GetCellData()->GetArray("Region");
+    for (vtkIdType c = 0; c < r->GetNumberOfTuples(); ++c)
+      r->SetComponent(c, 0, 5);
+    vtkNew<amTorsoPotential> torso;
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(torso);
+    torso->SetInputData(0, all);
+    torso->SetInputData(1, StaticHeart(all, Dipole));
+    torso->Update();
+    EXPECT_TRUE(errors->ErrorContains("no torso")) << errors->AllErrors();
+  }
+  {
+    // A heart without InputPointId.
+    auto heart = StaticHeart(mesh, Dipole);
+    heart->GetPointData()->RemoveArray("InputPointId");
+    vtkNew<amTorsoPotential> torso;
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(torso);
+    torso->SetInputData(0, mesh);
+    torso->SetInputData(1, heart);
+    torso->Update();
+    EXPECT_TRUE(errors->ErrorContains("InputPointId")) << errors->AllErrors();
+  }
+  {
+    // A heart whose nodes are not nodes of the mesh.
+    auto heart = StaticHeart(mesh, Dipole);
+    vtkDataArray* ids = heart->GetPointData()->GetArray("InputPointId");
+    for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
+      ids->SetComponent(i, 0, -1);
+    vtkNew<amTorsoPotential> torso;
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(torso);
+    torso->SetInputData(0, mesh);
+    torso->SetInputData(1, heart);
+    torso->Update();
+    EXPECT_TRUE(errors->ErrorContains("does not touch the heart")) << errors->AllErrors();
+  }
+}
