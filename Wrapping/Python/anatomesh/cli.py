@@ -8,6 +8,7 @@ and, for pipeline files, the line), 2 for a command-line mistake.
 """
 import argparse
 import os
+import re
 import sys
 import time
 
@@ -72,9 +73,18 @@ def _describe(data):
         columns = [data.GetColumn(c) for c in range(data.GetNumberOfColumns())]
         widths = [max(len(c.GetName()), 8) for c in columns]
         lines.append("      " + " ".join("%*s" % (w, c.GetName()) for w, c in zip(widths, columns)))
-        for r in range(data.GetNumberOfRows()):
-            lines.append("      " + " ".join("%*.6g" % (w, c.GetTuple1(r)) if c.IsNumeric() else "%*s" % (w, c.GetValue(r))
-                                           for w, c in zip(widths, columns)))
+        rows = data.GetNumberOfRows()
+        def row(r):
+            return "      " + " ".join("%*.6g" % (w, c.GetTuple1(r)) if c.IsNumeric() else "%*s" % (w, c.GetValue(r))
+                                       for w, c in zip(widths, columns))
+        if rows <= 24:
+            lines.extend(row(r) for r in range(rows))
+        else:  # a time series (ECG leads): its ends and each column's range
+            lines.extend(row(r) for r in range(3))
+            lines.append("      ... (%d rows)" % rows)
+            lines.extend(row(r) for r in range(rows - 3, rows))
+            lines.append("      " + " ".join("%*s" % (w, "%.3g..%.3g" % c.GetRange() if c.IsNumeric() else "")
+                                           for w, c in zip(widths, columns)) + "   (min..max)")
     elif data.IsA("vtkDataSet"):
         lines.append("      %s: %d points, %d cells" % (data.GetClassName(), data.GetNumberOfPoints(),
                                                        data.GetNumberOfCells()))
@@ -86,7 +96,23 @@ def _describe(data):
 
 def _summary(paths, data, out):
     out.write("Wrote %d file(s):\n" % len(paths))
+    series = {}
+    for p in paths:  # frames of a time series (NAME_NNNN.vtu beside NAME.pvd) on one line
+        m = re.match(r"(.*)_(\d{4})(\.vt[upi])$", p)
+        if m and (m.group(1) + ".pvd") in paths:
+            series.setdefault(m.group(1) + ".pvd", []).append(p)
+    framed = {f for frames in series.values() for f in frames}
     for p in paths:
+        if p in framed:
+            continue
+        if p in series:
+            frames = series[p]
+            size = sum(os.path.getsize(f) for f in frames if os.path.exists(f))
+            out.write("  %-60s %10.1f kB  (time series: %d frames, %s .. %s)\n" % (
+                p, size / 1024.0, len(frames), os.path.basename(frames[0]), os.path.basename(frames[-1])))
+            for line in _describe(data.get(p)):
+                out.write(line + "\n")
+            continue
         size = os.path.getsize(p) if os.path.exists(p) else 0
         out.write("  %-60s %10.1f kB\n" % (p, size / 1024.0))
         for line in _describe(data.get(p)):

@@ -328,6 +328,11 @@ class Pipeline:
                     errors[0][0] if errors else upstream, step.proxy.name,
                     errors[0][1] if errors else "no output"))
             _make_parent(path, self, line)
+            if os.path.splitext(path)[1].lower() == ".pvd":
+                written.extend(write_time_series(algorithm, index, path,
+                                                 lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None))
+                self.written_data[path] = algorithm.GetOutputDataObject(index)
+                continue
             write_vtk_xml(algorithm.GetOutputDataObject(index), path)
             written.append(path)
             self.written_data[path] = algorithm.GetOutputDataObject(index)
@@ -387,6 +392,44 @@ def _write_csv(table, path):
     finally:
         if os.path.exists(tmp):
             os.remove(tmp)
+
+
+def write_time_series(algorithm, port, path, error=lambda: None):
+    """Write every time step an algorithm's output port advertises as NAME_NNNN.vtu (or .vtp/.vti)
+    beside a ParaView collection NAME.pvd; without time steps, one file. The .pvd is written last,
+    so a failed run never leaves a collection naming missing files. Returns the paths written."""
+    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+    algorithm.UpdateInformation()
+    info = algorithm.GetOutputInformation(port)
+    times = list(info.Get(sddp.TIME_STEPS())) if info.Has(sddp.TIME_STEPS()) else [None]
+    folder = os.path.dirname(os.path.abspath(path))
+    stem = os.path.splitext(os.path.basename(path))[0]
+    exts = {"vtkUnstructuredGrid": ".vtu", "vtkPolyData": ".vtp", "vtkImageData": ".vti"}
+    entries, written = [], []
+    for k, t in enumerate(times):
+        if t is None:
+            algorithm.Update(port)
+        else:
+            algorithm.UpdateTimeStep(t)
+        data = algorithm.GetOutputDataObject(port)
+        message = error()
+        if message or data is None:
+            raise PipelineError("%s: time step %s failed: %s" % (path, t, message or "no output"))
+        ext = exts.get(data.GetClassName())
+        if ext is None:
+            raise PipelineError("%s: cannot write a %s as a time series" % (path, data.GetClassName()))
+        name = "%s_%04d%s" % (stem, k, ext)
+        write_vtk_xml(data, os.path.join(folder, name))
+        written.append(os.path.join(folder, name))
+        entries.append('    <DataSet timestep="%r" part="0" file="%s"/>' % (0.0 if t is None else t, name))
+    text = ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n'
+            + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n")
+    tmp = os.path.join(folder, ".%s.tmp%d.pvd" % (stem, os.getpid()))
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+    written.append(path)
+    return written
 
 
 def write_vtk_xml(data, path):
