@@ -19,6 +19,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkCellArray.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -43,6 +45,8 @@ struct amTorsoPotential::Model
   vtkMTimeType FilterTime = 0;
   long long HeartRun = -1;
   vtkSmartPointer<vtkUnstructuredGrid> Torso; // geometry, Region, InputPointId
+  vtkSmartPointer<vtkPolyData> Body;          // body-surface triangles
+  std::vector<vtkIdType> BodyNodes;           // torso node of each body-surface point
   amSparseMatrix K;
   std::vector<unsigned char> Fixed;
   std::vector<vtkIdType> HeartIndex; // per torso node: point of the heart input, or -1
@@ -95,7 +99,7 @@ amTorsoPotential::amTorsoPotential()
 {
   amThreading::Initialize();
   this->SetNumberOfInputPorts(2);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(3);
   this->SetRegionArrayName("Region");
   this->SetPotentialArrayName("u");
   double electrodes[9][3];
@@ -150,7 +154,8 @@ int amTorsoPotential::FillInputPortInformation(int port, vtkInformation* info)
 
 int amTorsoPotential::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkTable");
+  info->Set(vtkDataObject::DATA_TYPE_NAME(),
+    port == 0 ? "vtkUnstructuredGrid" : (port == 1 ? "vtkTable" : "vtkPolyData"));
   return 1;
 }
 
@@ -168,6 +173,17 @@ int amTorsoPotential::RequestInformation(
   {
     outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
     outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  }
+  vtkInformation* bodyInfo = outputVector->GetInformationObject(2);
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    bodyInfo->CopyEntry(outInfo, vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    bodyInfo->CopyEntry(outInfo, vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  }
+  else
+  {
+    bodyInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    bodyInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
   }
   vtkInformation* tableInfo = outputVector->GetInformationObject(1);
   tableInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
@@ -187,6 +203,9 @@ int amTorsoPotential::RequestUpdateExtent(
   else if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
     heartInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(),
       outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()));
+  else if (outputVector->GetInformationObject(2)->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+    heartInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(),
+      outputVector->GetInformationObject(2)->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()));
   else
     heartInfo->Remove(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
   return 1;
@@ -352,6 +371,7 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     }
   std::sort(faces.begin(), faces.end());
   std::vector<unsigned char> onSurface(n, 0);
+  std::vector<std::array<vtkIdType, 3>> bodyFaces;
   for (std::size_t k = 0; k < faces.size();)
   {
     std::size_t e = k + 1;
@@ -360,9 +380,67 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     const auto& f = faces[k];
     const bool heartFace = model->HeartIndex[f[0]] >= 0 && model->HeartIndex[f[1]] >= 0 && model->HeartIndex[f[2]] >= 0;
     if (e - k == 1 && !heartFace)
+    {
       for (vtkIdType v : f)
         onSurface[v] = 1;
+      bodyFaces.push_back(f);
+    }
     k = e;
+  }
+  // Orient the body triangles outwards: the face's own tetrahedron lies behind it.
+  {
+    std::map<std::array<vtkIdType, 3>, std::array<vtkIdType, 4>> owner;
+    for (const auto& f : bodyFaces)
+      owner[f] = { -1, -1, -1, -1 };
+    for (const auto& t : fem.Tetrahedra)
+      for (const auto& fo : faceOf)
+      {
+        std::array<vtkIdType, 3> face = { t[fo[0]], t[fo[1]], t[fo[2]] };
+        std::sort(face.begin(), face.end());
+        auto it = owner.find(face);
+        if (it != owner.end())
+          it->second = { t[fo[0]], t[fo[1]], t[fo[2]], t[0] + t[1] + t[2] + t[3] - t[fo[0]] - t[fo[1]] - t[fo[2]] };
+      }
+    std::vector<vtkIdType> bodyIndex(n, -1);
+    auto body = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> bodyPoints;
+    bodyPoints->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> triangles;
+    for (const auto& f : bodyFaces)
+    {
+      const auto& o = owner[f];
+      vtkIdType tri[3] = { o[0], o[1], o[2] };
+      // Faces of faceOf are outward for a positive tetrahedron; flip when the apex is in front.
+      double e1[3], e2[3], ea[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        e1[c] = fem.Points[o[1]][c] - fem.Points[o[0]][c];
+        e2[c] = fem.Points[o[2]][c] - fem.Points[o[0]][c];
+        ea[c] = fem.Points[o[3]][c] - fem.Points[o[0]][c];
+      }
+      const double nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+      if (nrm[0] * ea[0] + nrm[1] * ea[1] + nrm[2] * ea[2] > 0)
+        std::swap(tri[1], tri[2]);
+      for (vtkIdType& v : tri)
+      {
+        if (bodyIndex[v] < 0)
+        {
+          bodyIndex[v] = static_cast<vtkIdType>(model->BodyNodes.size());
+          model->BodyNodes.push_back(v);
+          bodyPoints->InsertNextPoint(fem.Points[v].data());
+        }
+        v = bodyIndex[v];
+      }
+      triangles->InsertNextCell(3, tri);
+    }
+    body->SetPoints(bodyPoints);
+    body->SetPolys(triangles);
+    vtkNew<vtkIdTypeArray> bodyIds;
+    bodyIds->SetName("InputPointId");
+    for (vtkIdType v : model->BodyNodes)
+      bodyIds->InsertNextValue(global[v]);
+    body->GetPointData()->AddArray(bodyIds);
+    model->Body = body;
   }
   std::vector<std::array<double, 3>>().swap(model->ElectrodePoints);
   for (std::size_t e = 0; e + 2 < this->ElectrodePositions.size(); e += 3)
@@ -483,9 +561,12 @@ void amTorsoPotential::Produce(vtkInformationVector* outputVector)
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outInfo);
   std::size_t frame = m.Times.size() - 1;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && m.Times.size() > 1)
+  vtkInformation* timeInfo = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? outInfo
+    : outputVector->GetInformationObject(2);
+  if (timeInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && m.Times.size() > 1)
   {
-    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    const double t = timeInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
     frame = 0;
     while (frame + 1 < m.Times.size() && m.Times[frame + 1] <= t + 1e-9 * std::max(1.0, std::fabs(t)))
       ++frame;
@@ -498,6 +579,17 @@ void amTorsoPotential::Produce(vtkInformationVector* outputVector)
   output->GetPointData()->AddArray(phi);
   output->GetPointData()->SetActiveScalars("Potential");
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), m.Times[frame]);
+
+  vtkPolyData* body = vtkPolyData::GetData(outputVector->GetInformationObject(2));
+  body->ShallowCopy(m.Body);
+  vtkNew<vtkFloatArray> bodyPhi;
+  bodyPhi->SetName("Potential");
+  bodyPhi->SetNumberOfTuples(static_cast<vtkIdType>(m.BodyNodes.size()));
+  for (std::size_t k = 0; k < m.BodyNodes.size(); ++k)
+    bodyPhi->SetValue(static_cast<vtkIdType>(k), m.Phi[frame][m.BodyNodes[k]]);
+  body->GetPointData()->AddArray(bodyPhi);
+  body->GetPointData()->SetActiveScalars("Potential");
+  body->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), m.Times[frame]);
 
   vtkTable* table = vtkTable::GetData(outputVector->GetInformationObject(1));
   table->Initialize();

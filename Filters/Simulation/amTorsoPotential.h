@@ -29,7 +29,9 @@
  * potential of each electrode ("E0", "E1", ...) against their mean otherwise. Electrodes:
  * ElectrodePositions (x y z triples, mm), each snapped to the closest body-surface node (the
  * snapped positions are in the table's field data "Electrodes"); the default is the phantom's
- * standard placement (amThoraxPhantomModel::StandardElectrodes).
+ * standard placement (amThoraxPhantomModel::StandardElectrodes). Output 2: the body surface alone
+ * (the torso's outer triangles, vtkPolyData with "Potential" and "InputPointId"), time-dependent —
+ * the small thing to write as a time series.
  *
  * Errors: missing inputs or arrays, no torso cells, a torso that does not touch the heart, a
  * non-tetrahedral or degenerate torso cell, a solver that does not converge.

@@ -15,6 +15,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 
@@ -276,6 +277,12 @@ TEST(TorsoPotential, TimeSeriesAndLeads)
   // Lead III = II - I (Einthoven).
   for (int r = 0; r < 7; ++r)
     EXPECT_NEAR(leads->GetValue(r, 3).ToDouble(), leads->GetValue(r, 2).ToDouble() - leads->GetValue(r, 1).ToDouble(), 1e-9);
+  // The body surface: the box's outer faces (2 triangles per boundary square), potentials of the torso.
+  vtkPolyData* body = vtkPolyData::SafeDownCast(torso->GetOutputDataObject(2));
+  ASSERT_NE(body, nullptr);
+  EXPECT_EQ(body->GetNumberOfCells(), 6 * 2 * 24 * 24);
+  ASSERT_NE(body->GetPointData()->GetArray("Potential"), nullptr);
+  EXPECT_DOUBLE_EQ(body->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 30.0);
   // Another time is answered from the kept series.
   const int solves = torso->GetNumberOfSolves();
   torso->UpdateTimeStep(50.0);

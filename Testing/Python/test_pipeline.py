@@ -34,7 +34,15 @@ class ThoraxJob(unittest.TestCase):
         code, stdout, stderr = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"),
                                    "--output", out, "--set", "spacing=4", "--set", "tolerance=1")
         self.assertEqual(code, 0, stderr)
-        self.assertIn("Wrote 10 file(s)", stdout)
+        # 10 files of the meshing chain; the simulation: heart and body-surface time series (101 frames + .pvd
+        # each) and the ECG table.
+        self.assertIn("Wrote 215 file(s)", stdout)
+        for name in ("thorax_heart.pvd", "thorax_body_surface.pvd", "thorax_heart_0100.vtu", "thorax_ecg.csv"):
+            self.assertTrue(os.path.exists(os.path.join(out, name)), name)
+        with open(os.path.join(out, "thorax_ecg.csv")) as f:
+            rows = f.read().splitlines()
+        self.assertEqual(len(rows), 102)  # header + 0, 5, ..., 500 ms
+        self.assertTrue(rows[0].startswith("Time,I,II,III"), rows[0])
         self.assertIn("phantom", stderr)  # progress lines
         import anatomesh
         from vtkmodules.util.numpy_support import vtk_to_numpy
