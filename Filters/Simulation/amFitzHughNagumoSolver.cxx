@@ -4,6 +4,7 @@
 #include "amP1Assembly.h"
 #include "amProvenance.h"
 #include "amSparseMatrix.h"
+#include "amTetraSubset.h"
 #include "amThreading.h"
 
 #include "vtkCellData.h"
@@ -213,45 +214,10 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
     return 0;
   }
 
-  std::vector<vtkIdType> local(input->GetNumberOfPoints(), -1);
-  std::vector<vtkIdType> global;
-  amP1Assembly fem;
-  fem.Tetrahedra.resize(heartCells.size());
-  for (std::size_t k = 0; k < heartCells.size(); ++k)
-  {
-    const vtkIdType* ids;
-    vtkIdType npts;
-    input->GetCellPoints(heartCells[k], npts, ids);
-    for (int a = 0; a < 4; ++a)
-    {
-      if (local[ids[a]] < 0)
-      {
-        local[ids[a]] = static_cast<vtkIdType>(global.size());
-        global.push_back(ids[a]);
-      }
-      fem.Tetrahedra[k][a] = local[ids[a]];
-    }
-  }
-  // Keep input order for the nodes (deterministic and easy to map back).
-  {
-    std::vector<vtkIdType> order(global);
-    std::sort(order.begin(), order.end());
-    for (std::size_t i = 0; i < order.size(); ++i)
-      local[order[i]] = static_cast<vtkIdType>(i);
-    for (std::size_t k = 0; k < heartCells.size(); ++k)
-    {
-      const vtkIdType* ids;
-      vtkIdType npts;
-      input->GetCellPoints(heartCells[k], npts, ids);
-      for (int a = 0; a < 4; ++a)
-        fem.Tetrahedra[k][a] = local[ids[a]];
-    }
-    global = order;
-  }
-  const vtkIdType n = static_cast<vtkIdType>(global.size());
-  fem.Points.resize(n);
-  for (vtkIdType i = 0; i < n; ++i)
-    input->GetPoint(global[i], fem.Points[i].data());
+  amTetraSubset subset;
+  subset.Build(input, heartCells);
+  amP1Assembly& fem = subset.Fem;
+  const vtkIdType n = static_cast<vtkIdType>(subset.Global.size());
   const vtkIdType bad = fem.FindDegenerate();
   if (bad >= 0)
   {
@@ -413,33 +379,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
     activated += at >= 0;
   this->ActivatedFraction = static_cast<double>(activated) / n;
 
-  // The heart mesh: points, tetrahedra, Region, InputPointId.
-  auto heart = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(n);
-  for (vtkIdType i = 0; i < n; ++i)
-    points->SetPoint(i, fem.Points[i].data());
-  heart->SetPoints(points);
-  heart->Allocate(static_cast<vtkIdType>(heartCells.size()));
-  for (const auto& tet : fem.Tetrahedra)
-    heart->InsertNextCell(VTK_TETRA, 4, tet.data());
-  if (regions)
-  {
-    vtkSmartPointer<vtkDataArray> r = vtk::TakeSmartPointer(regions->NewInstance());
-    r->SetName(regions->GetName());
-    r->SetNumberOfComponents(1);
-    r->SetNumberOfTuples(static_cast<vtkIdType>(heartCells.size()));
-    for (std::size_t k = 0; k < heartCells.size(); ++k)
-      r->SetComponent(static_cast<vtkIdType>(k), 0, regions->GetComponent(heartCells[k], 0));
-    heart->GetCellData()->AddArray(r);
-  }
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("InputPointId");
-  ids->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
-    ids->SetValue(i, global[i]);
-  heart->GetPointData()->AddArray(ids);
+  auto heart = subset.MakeGrid(regions); // points, tetrahedra, Region, InputPointId
   run->Heart = heart;
   run->Id = ++RunCounter;
 

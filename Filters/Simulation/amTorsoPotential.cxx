@@ -4,6 +4,7 @@
 #include "amP1Assembly.h"
 #include "amProvenance.h"
 #include "amSparseMatrix.h"
+#include "amTetraSubset.h"
 #include "amThoraxPhantomModel.h"
 #include "amThreading.h"
 
@@ -255,36 +256,11 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   }
 
   const vtkIdType nMesh = mesh->GetNumberOfPoints();
-  std::vector<vtkIdType> local(nMesh, -1);
-  for (vtkIdType c : torsoCells)
-  {
-    const vtkIdType* pts;
-    vtkIdType npts;
-    mesh->GetCellPoints(c, npts, pts);
-    for (int a = 0; a < 4; ++a)
-      local[pts[a]] = 0;
-  }
-  std::vector<vtkIdType> global;
-  for (vtkIdType p = 0; p < nMesh; ++p)
-    if (local[p] == 0)
-    {
-      local[p] = static_cast<vtkIdType>(global.size());
-      global.push_back(p);
-    }
-  const vtkIdType n = static_cast<vtkIdType>(global.size());
-  amP1Assembly fem;
-  fem.Points.resize(n);
-  for (vtkIdType i = 0; i < n; ++i)
-    mesh->GetPoint(global[i], fem.Points[i].data());
-  fem.Tetrahedra.resize(torsoCells.size());
-  for (std::size_t k = 0; k < torsoCells.size(); ++k)
-  {
-    const vtkIdType* pts;
-    vtkIdType npts;
-    mesh->GetCellPoints(torsoCells[k], npts, pts);
-    for (int a = 0; a < 4; ++a)
-      fem.Tetrahedra[k][a] = local[pts[a]];
-  }
+  amTetraSubset subset;
+  subset.Build(mesh, torsoCells);
+  amP1Assembly& fem = subset.Fem;
+  const std::vector<vtkIdType>& local = subset.Local;
+  const vtkIdType n = static_cast<vtkIdType>(subset.Global.size());
   const vtkIdType bad = fem.FindDegenerate();
   if (bad >= 0)
   {
@@ -359,68 +335,63 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   model->Zero.assign(n, 0.0);
 
   // Body surface: faces of exactly one torso tetrahedron, not all of whose nodes are heart nodes.
-  std::vector<std::array<vtkIdType, 3>> faces;
+  // Every face of every torso tetrahedron, sorted, with its tetrahedron and its side (faceOf is
+  // outward for a positive tetrahedron).
+  struct Face
+  {
+    std::array<vtkIdType, 3> Sorted;
+    vtkIdType Tet;
+    int Side;
+    bool operator<(const Face& o) const { return this->Sorted < o.Sorted; }
+  };
+  std::vector<Face> faces;
   faces.reserve(4 * fem.Tetrahedra.size());
   static const int faceOf[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
-  for (const auto& t : fem.Tetrahedra)
-    for (const auto& f : faceOf)
+  for (std::size_t t = 0; t < fem.Tetrahedra.size(); ++t)
+    for (int f = 0; f < 4; ++f)
     {
-      std::array<vtkIdType, 3> face = { t[f[0]], t[f[1]], t[f[2]] };
-      std::sort(face.begin(), face.end());
+      const auto& tet = fem.Tetrahedra[t];
+      Face face{ { tet[faceOf[f][0]], tet[faceOf[f][1]], tet[faceOf[f][2]] }, static_cast<vtkIdType>(t), f };
+      std::sort(face.Sorted.begin(), face.Sorted.end());
       faces.push_back(face);
     }
   std::sort(faces.begin(), faces.end());
   std::vector<unsigned char> onSurface(n, 0);
-  std::vector<std::array<vtkIdType, 3>> bodyFaces;
+  std::vector<const Face*> bodyFaces;
   for (std::size_t k = 0; k < faces.size();)
   {
     std::size_t e = k + 1;
-    while (e < faces.size() && faces[e] == faces[k])
+    while (e < faces.size() && faces[e].Sorted == faces[k].Sorted)
       ++e;
-    const auto& f = faces[k];
+    const auto& f = faces[k].Sorted;
     const bool heartFace = model->HeartIndex[f[0]] >= 0 && model->HeartIndex[f[1]] >= 0 && model->HeartIndex[f[2]] >= 0;
     if (e - k == 1 && !heartFace)
     {
       for (vtkIdType v : f)
         onSurface[v] = 1;
-      bodyFaces.push_back(f);
+      bodyFaces.push_back(&faces[k]);
     }
     k = e;
   }
-  // Orient the body triangles outwards: the face's own tetrahedron lies behind it.
+  // The body surface: its triangles, oriented outwards, as output 2.
   {
-    std::map<std::array<vtkIdType, 3>, std::array<vtkIdType, 4>> owner;
-    for (const auto& f : bodyFaces)
-      owner[f] = { -1, -1, -1, -1 };
-    for (const auto& t : fem.Tetrahedra)
-      for (const auto& fo : faceOf)
-      {
-        std::array<vtkIdType, 3> face = { t[fo[0]], t[fo[1]], t[fo[2]] };
-        std::sort(face.begin(), face.end());
-        auto it = owner.find(face);
-        if (it != owner.end())
-          it->second = { t[fo[0]], t[fo[1]], t[fo[2]], t[0] + t[1] + t[2] + t[3] - t[fo[0]] - t[fo[1]] - t[fo[2]] };
-      }
     std::vector<vtkIdType> bodyIndex(n, -1);
     auto body = vtkSmartPointer<vtkPolyData>::New();
     vtkNew<vtkPoints> bodyPoints;
     bodyPoints->SetDataTypeToDouble();
     vtkNew<vtkCellArray> triangles;
-    for (const auto& f : bodyFaces)
+    for (const Face* f : bodyFaces)
     {
-      const auto& o = owner[f];
-      vtkIdType tri[3] = { o[0], o[1], o[2] };
-      // Faces of faceOf are outward for a positive tetrahedron; flip when the apex is in front.
-      double e1[3], e2[3], ea[3];
-      for (int c = 0; c < 3; ++c)
-      {
-        e1[c] = fem.Points[o[1]][c] - fem.Points[o[0]][c];
-        e2[c] = fem.Points[o[2]][c] - fem.Points[o[0]][c];
-        ea[c] = fem.Points[o[3]][c] - fem.Points[o[0]][c];
-      }
-      const double nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
-      if (nrm[0] * ea[0] + nrm[1] * ea[1] + nrm[2] * ea[2] > 0)
-        std::swap(tri[1], tri[2]);
+      const auto& tet = fem.Tetrahedra[f->Tet];
+      vtkIdType tri[3] = { tet[faceOf[f->Side][0]], tet[faceOf[f->Side][1]], tet[faceOf[f->Side][2]] };
+      double e[3][3];
+      for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 3; ++c)
+          e[k][c] = fem.Points[tet[k + 1]][c] - fem.Points[tet[0]][c];
+      const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+      if (det < 0)
+        std::swap(tri[1], tri[2]); // a negative tetrahedron: its faceOf faces point inwards
       for (vtkIdType& v : tri)
       {
         if (bodyIndex[v] < 0)
@@ -438,7 +409,7 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     vtkNew<vtkIdTypeArray> bodyIds;
     bodyIds->SetName("InputPointId");
     for (vtkIdType v : model->BodyNodes)
-      bodyIds->InsertNextValue(global[v]);
+      bodyIds->InsertNextValue(subset.Global[v]);
     body->GetPointData()->AddArray(bodyIds);
     model->Body = body;
   }
@@ -473,29 +444,7 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     model->ElectrodePoints.push_back(fem.Points[best]);
   }
 
-  // The torso mesh of output 0.
-  auto torso = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(n);
-  for (vtkIdType i = 0; i < n; ++i)
-    points->SetPoint(i, fem.Points[i].data());
-  torso->SetPoints(points);
-  torso->Allocate(static_cast<vtkIdType>(torsoCells.size()));
-  for (const auto& t : fem.Tetrahedra)
-    torso->InsertNextCell(VTK_TETRA, 4, t.data());
-  vtkSmartPointer<vtkDataArray> r = vtk::TakeSmartPointer(regions->NewInstance());
-  r->SetName(regions->GetName());
-  r->SetNumberOfTuples(static_cast<vtkIdType>(torsoCells.size()));
-  for (std::size_t k = 0; k < torsoCells.size(); ++k)
-    r->SetComponent(static_cast<vtkIdType>(k), 0, regions->GetComponent(torsoCells[k], 0));
-  torso->GetCellData()->AddArray(r);
-  vtkNew<vtkIdTypeArray> inputIds;
-  inputIds->SetName("InputPointId");
-  inputIds->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
-    inputIds->SetValue(i, global[i]);
-  torso->GetPointData()->AddArray(inputIds);
+  auto torso = subset.MakeGrid(regions); // output 0: geometry, Region, InputPointId
   std::ostringstream params;
   params << "Conductivity=" << this->Conductivity << " RegionConductivities=";
   for (std::size_t k = 0; k < this->RegionConductivities.size(); ++k)
@@ -622,16 +571,18 @@ void amTorsoPotential::Produce(vtkInformationVector* outputVector)
     }
   }
   else
+  {
+    std::vector<double> means(nt);
+    for (std::size_t k = 0; k < nt; ++k)
+      means[k] = std::accumulate(m.Leads[k].begin(), m.Leads[k].end(), 0.0) / static_cast<double>(ne);
     for (std::size_t e = 0; e < ne; ++e)
     {
       const std::string name = "E" + std::to_string(e);
       vtkDoubleArray* col = column(name.c_str());
       for (std::size_t k = 0; k < nt; ++k)
-      {
-        const double mean = std::accumulate(m.Leads[k].begin(), m.Leads[k].end(), 0.0) / static_cast<double>(ne);
-        col->SetValue(static_cast<vtkIdType>(k), m.Leads[k][e] - mean);
-      }
+        col->SetValue(static_cast<vtkIdType>(k), m.Leads[k][e] - means[k]);
     }
+  }
   vtkNew<vtkDoubleArray> electrodes;
   electrodes->SetName("Electrodes");
   electrodes->SetNumberOfComponents(3);

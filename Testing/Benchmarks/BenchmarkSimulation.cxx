@@ -81,28 +81,8 @@ void Slab()
   for (double dx : { 0.5, 0.25, 0.2 })
     for (double dt : { 0.1, 0.05, 0.01 })
     {
-      const int n[3] = { static_cast<int>(std::lround(20 / dx)), static_cast<int>(std::lround(7 / dx)),
-        static_cast<int>(std::lround(3 / dx)) };
-      const double origin[3] = { 0, 0, 0 }, size[3] = { 20, 7, 3 };
-      auto mesh = amTest::BoxMesh(n, origin, size);
-      vtkNew<vtkDoubleArray> fibres;
-      fibres->SetName("Fibres");
-      fibres->SetNumberOfComponents(3);
-      for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-        fibres->InsertNextTuple3(1, 0, 0);
-      mesh->GetCellData()->AddArray(fibres);
       vtkNew<amFitzHughNagumoSolver> solver;
-      solver->SetInputData(mesh);
-      solver->RemoveAllHeartRegions();
-      solver->AddHeartRegion(1);
-      solver->SetTransverseConductivityRatio(0.019 / 0.17);
-      solver->SetTimeStep(dt);
-      solver->SetEndTime(110);
-      solver->SetOutputInterval(110);
-      solver->SetStimulusCenter(0, 0, 0);
-      solver->SetStimulusRadius(2.5);
-      solver->SetStimulusStrength(2.0);
-      solver->SetStimulusDuration(4.0);
+      amTest::NiedererSlab(dx, solver, dt, 110);
       solver->Update();
       vtkUnstructuredGrid* out = solver->GetOutput();
       vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");

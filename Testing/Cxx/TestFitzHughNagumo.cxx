@@ -122,28 +122,8 @@ TEST(FitzHughNagumo, NiedererSlabActivation)
   double previous = -1;
   for (double dx : { 0.5, 0.25 })
   {
-    const int n[3] = { static_cast<int>(std::lround(20 / dx)), static_cast<int>(std::lround(7 / dx)),
-      static_cast<int>(std::lround(3 / dx)) };
-    const double origin[3] = { 0, 0, 0 }, size[3] = { 20, 7, 3 };
-    auto mesh = amTest::BoxMesh(n, origin, size);
-    vtkNew<vtkDoubleArray> fibres;
-    fibres->SetName("Fibres");
-    fibres->SetNumberOfComponents(3);
-    for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-      fibres->InsertNextTuple3(1, 0, 0);
-    mesh->GetCellData()->AddArray(fibres);
     vtkNew<amFitzHughNagumoSolver> solver;
-    solver->SetInputData(mesh);
-    solver->RemoveAllHeartRegions();
-    solver->AddHeartRegion(1);
-    solver->SetTransverseConductivityRatio(0.019 / 0.17);
-    solver->SetTimeStep(0.05);
-    solver->SetEndTime(100);
-    solver->SetOutputInterval(100);
-    solver->SetStimulusCenter(0, 0, 0);
-    solver->SetStimulusRadius(2.5);
-    solver->SetStimulusStrength(2.0);
-    solver->SetStimulusDuration(4.0);
+    amTest::NiedererSlab(dx, solver, 0.05, 100);
     solver->Update();
     vtkUnstructuredGrid* out = solver->GetOutput();
     vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");

@@ -8,6 +8,7 @@
 #include "amTestUtilities.h"
 #include "amTorsoPotential.h"
 
+#include "vtkCell.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -281,6 +282,16 @@ TEST(TorsoPotential, TimeSeriesAndLeads)
   vtkPolyData* body = vtkPolyData::SafeDownCast(torso->GetOutputDataObject(2));
   ASSERT_NE(body, nullptr);
   EXPECT_EQ(body->GetNumberOfCells(), 6 * 2 * 24 * 24);
+  double enclosed = 0; // divergence theorem: positive box volume only if every triangle faces out
+  for (vtkIdType t = 0; t < body->GetNumberOfCells(); ++t)
+  {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      body->GetPoint(body->GetCell(t)->GetPointId(k), p[k]);
+    enclosed += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                  p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) / 6.0;
+  }
+  EXPECT_NEAR(enclosed, 48.0 * 48.0 * 48.0, 1e-6);
   ASSERT_NE(body->GetPointData()->GetArray("Potential"), nullptr);
   EXPECT_DOUBLE_EQ(body->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 30.0);
   // Another time is answered from the kept series.

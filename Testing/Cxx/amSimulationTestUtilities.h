@@ -2,7 +2,10 @@
 #ifndef amSimulationTestUtilities_h
 #define amSimulationTestUtilities_h
 
+#include "amFitzHughNagumoSolver.h"
+
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkCellType.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -76,6 +79,37 @@ inline vtkSmartPointer<vtkUnstructuredGrid> BoxMesh(const int n[3], const double
           regions->InsertNextValue(region ? region(centroid) : 1);
         }
   mesh->GetCellData()->AddArray(regions);
+  return mesh;
+}
+
+/// The slab of the Niederer et al. 2011 N-version benchmark, 20 x 7 x 3 mm at spacing dx, fibres
+/// along x (cell data "Fibres"), on a solver set up as the tests and the benchmark run it:
+/// transverse conductivity ratio 0.019/0.17 as in the benchmark, a 2.5 mm corner stimulus (2/ms for
+/// 4 ms), the given time step, simulated up to endTime with one frame at the end.
+inline vtkSmartPointer<vtkUnstructuredGrid> NiedererSlab(double dx, amFitzHughNagumoSolver* solver, double dt,
+  double endTime)
+{
+  const int n[3] = { static_cast<int>(std::lround(20 / dx)), static_cast<int>(std::lround(7 / dx)),
+    static_cast<int>(std::lround(3 / dx)) };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 20, 7, 3 };
+  auto mesh = BoxMesh(n, origin, size);
+  vtkNew<vtkDoubleArray> fibres;
+  fibres->SetName("Fibres");
+  fibres->SetNumberOfComponents(3);
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+    fibres->InsertNextTuple3(1, 0, 0);
+  mesh->GetCellData()->AddArray(fibres);
+  solver->SetInputData(mesh);
+  solver->RemoveAllHeartRegions();
+  solver->AddHeartRegion(1);
+  solver->SetTransverseConductivityRatio(0.019 / 0.17);
+  solver->SetTimeStep(dt);
+  solver->SetEndTime(endTime);
+  solver->SetOutputInterval(endTime);
+  solver->SetStimulusCenter(0, 0, 0);
+  solver->SetStimulusRadius(2.5);
+  solver->SetStimulusStrength(2.0);
+  solver->SetStimulusDuration(4.0);
   return mesh;
 }
 }
