@@ -56,9 +56,9 @@ print("mesh: %d points, %d tetrahedra" % (mesh.GetNumberOfPoints(), mesh.GetNumb
 print("heart: %d nodes, %d steps of %.2f ms, %.1f CG iterations per step, %.2f s"
       % (heart.GetNumberOfHeartNodes(), heart.GetNumberOfSteps(), heart.GetTimeStep(), heart.GetMeanIterations(),
          heart.GetWallSeconds()))
-print("torso: %d nodes (%d on the heart), %d times solved, %.1f CG iterations each, %.2f s"
+print("torso: %d nodes (%d on the heart), %d times solved, Cholesky factor %.1f M non-zeros in %.2f s, solves %.2f s"
       % (torso.GetNumberOfTorsoNodes(), torso.GetNumberOfHeartNodes(), torso.GetNumberOfSolves(),
-         torso.GetMeanIterations(), torso.GetWallSeconds()))
+         torso.GetFactorNonZeros() / 1e6, torso.GetFactorSeconds(), torso.GetWallSeconds()))
 
 # The heart at the last time: every node activated, activation monotone away from the stimulus.
 heart.UpdateTimeStep(end_time)

@@ -3,6 +3,7 @@
 #include "amConjugateGradient.h"
 #include "amP1Assembly.h"
 #include "amProvenance.h"
+#include "amSparseCholesky.h"
 #include "amSparseMatrix.h"
 #include "amTetraSubset.h"
 #include "amThoraxPhantomModel.h"
@@ -52,6 +53,7 @@ struct amTorsoPotential::Model
   std::vector<unsigned char> Fixed;
   std::vector<vtkIdType> HeartIndex; // per torso node: point of the heart input, or -1
   amConjugateGradient CG;
+  amSparseCholesky Cholesky;
   std::vector<double> X, Zero;
   std::vector<vtkIdType> Electrodes; // torso nodes
   std::vector<std::array<double, 3>> ElectrodePoints;
@@ -60,6 +62,20 @@ struct amTorsoPotential::Model
   std::vector<std::vector<double>> Leads; // per time: electrode potentials
   long long Iterations = 0;
   double Seconds = 0;
+  // Direct solver: time steps whose Dirichlet data wait to be solved together (one pass over
+  // the factor for a batch), each a full vector (column-major), and their times.
+  std::vector<double> Pending;
+  std::vector<double> PendingTimes;
+  static constexpr int Batch = 16;
+  void Record(double time, const double* x)
+  {
+    this->Times.push_back(time);
+    this->Phi.emplace_back(x, x + this->X.size());
+    std::vector<double> row;
+    for (vtkIdType e : this->Electrodes)
+      row.push_back(x[e]);
+    this->Leads.push_back(row);
+  }
 };
 
 namespace
@@ -89,6 +105,7 @@ amTorsoPotential::amTorsoPotential()
   , PotentialScale(100.0)
   , Conductivity(0.2)
   , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02 }
+  , Solver(DIRECT)
   , SolverTolerance(1e-6)
   , MaximumIterations(5000)
   , NumberOfTorsoNodes(0)
@@ -96,6 +113,8 @@ amTorsoPotential::amTorsoPotential()
   , NumberOfSolves(0)
   , MeanIterations(0)
   , WallSeconds(0)
+  , FactorSeconds(0)
+  , FactorNonZeros(0)
   , LoopIndex(-1)
 {
   amThreading::Initialize();
@@ -328,9 +347,26 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   this->UpdateProgress(0.02);
   amSparseMatrix mass;
   fem.Assemble(&tensors, mass, model->K);
-  model->CG.SetMatrix(&model->K, &model->Fixed);
-  model->CG.RelativeTolerance = this->SolverTolerance;
-  model->CG.MaximumIterations = this->MaximumIterations;
+  this->FactorSeconds = 0;
+  this->FactorNonZeros = 0;
+  if (this->Solver == DIRECT)
+  {
+    this->UpdateProgress(0.03);
+    if (!model->Cholesky.Factor(&model->K, &model->Fixed))
+    {
+      vtkErrorMacro(<< "cannot factor the torso matrix (" << n << " nodes): " << model->Cholesky.Error()
+                    << "; the CONJUGATE_GRADIENT solver needs no factor");
+      return false;
+    }
+    this->FactorSeconds = model->Cholesky.FactorSeconds();
+    this->FactorNonZeros = model->Cholesky.FactorNonZeros();
+  }
+  else
+  {
+    model->CG.SetMatrix(&model->K, &model->Fixed);
+    model->CG.RelativeTolerance = this->SolverTolerance;
+    model->CG.MaximumIterations = this->MaximumIterations;
+  }
   model->X.assign(n, 0.0);
   model->Zero.assign(n, 0.0);
 
@@ -450,7 +486,8 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   for (std::size_t k = 0; k < this->RegionConductivities.size(); ++k)
     params << (k ? "," : "") << this->RegionConductivities[k];
   params << " PotentialArray=" << (this->PotentialArrayName ? this->PotentialArrayName : "")
-         << " PotentialScale=" << this->PotentialScale << " Electrodes=" << model->Electrodes.size();
+         << " PotentialScale=" << this->PotentialScale << " Electrodes=" << model->Electrodes.size()
+         << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG");
   amProvenance::Record(torso, heart, "amTorsoPotential", params.str());
   model->Torso = torso;
   model->MeshTime = mesh->GetMTime();
@@ -484,6 +521,12 @@ bool amTorsoPotential::Solve(vtkUnstructuredGrid* heart, double time)
       }
       m.X[i] = this->PotentialScale * value;
     }
+  if (this->Solver == DIRECT)
+  {
+    m.Pending.insert(m.Pending.end(), m.X.begin(), m.X.end());
+    m.PendingTimes.push_back(time);
+    return static_cast<int>(m.PendingTimes.size()) < Model::Batch || this->Flush();
+  }
   const auto start = std::chrono::steady_clock::now();
   const amConjugateGradient::Result result = m.CG.Solve(m.Zero.data(), m.X.data());
   m.Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -495,12 +538,28 @@ bool amTorsoPotential::Solve(vtkUnstructuredGrid* heart, double time)
                   << result.RightHandSideNorm << ")");
     return false;
   }
-  m.Times.push_back(time);
-  m.Phi.emplace_back(m.X.begin(), m.X.end());
-  std::vector<double> row;
-  for (vtkIdType e : m.Electrodes)
-    row.push_back(m.X[e]);
-  m.Leads.push_back(row);
+  m.Record(time, m.X.data());
+  return true;
+}
+
+bool amTorsoPotential::Flush()
+{
+  Model& m = *this->State;
+  const int count = static_cast<int>(m.PendingTimes.size());
+  if (count == 0)
+    return true;
+  const auto start = std::chrono::steady_clock::now();
+  const bool ok = m.Cholesky.Solve(nullptr, m.Pending.data(), count);
+  m.Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!ok)
+  {
+    vtkErrorMacro(<< "out of memory solving " << count << " torso time steps at once");
+    return false;
+  }
+  for (int k = 0; k < count; ++k)
+    m.Record(m.PendingTimes[k], m.Pending.data() + k * m.X.size());
+  m.Pending.clear();
+  m.PendingTimes.clear();
   return true;
 }
 
@@ -630,7 +689,7 @@ int amTorsoPotential::RequestData(
       const double t = heart->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
         ? heart->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
         : 0.0;
-      if (!this->Solve(heart, t))
+      if (!this->Solve(heart, t) || !this->Flush())
         return fail();
       this->Produce(outputVector);
       return 1;
@@ -651,6 +710,8 @@ int amTorsoPotential::RequestData(
     request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
     return 1;
   }
+  if (!this->Flush())
+    return fail();
   request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
   this->LoopIndex = -1;
   this->Produce(outputVector);
@@ -663,4 +724,7 @@ void amTorsoPotential::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Conductivity: " << this->Conductivity << "\n";
   os << indent << "PotentialScale: " << this->PotentialScale << "\n";
   os << indent << "Electrodes: " << this->ElectrodePositions.size() / 3 << "\n";
+  os << indent << "Solver: " << (this->Solver == DIRECT ? "DIRECT" : "CONJUGATE_GRADIENT") << "\n";
+  os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
+  os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
 }

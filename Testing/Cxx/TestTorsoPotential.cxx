@@ -4,6 +4,7 @@
 #include "amFitzHughNagumoSolver.h"
 #include "amP1Assembly.h"
 #include "amSimulationTestUtilities.h"
+#include "amSparseCholesky.h"
 #include "amSparseMatrix.h"
 #include "amTestUtilities.h"
 #include "amTorsoPotential.h"
@@ -34,8 +35,9 @@ double Exact(const double* x)
   return std::exp(x[0]) * std::sin(x[1]); // harmonic
 }
 
-// L2 error of the P1 Dirichlet solution of the Laplace equation on the unit cube (n^3 cubes).
-double ManufacturedError(int n)
+// L2 error of the P1 Dirichlet solution of the Laplace equation on the unit cube (n^3 cubes),
+// solved by conjugate gradients or by the sparse Cholesky factor.
+double ManufacturedError(int n, bool direct)
 {
   const int dims[3] = { n, n, n };
   const double origin[3] = { 0, 0, 0 }, size[3] = { 1, 1, 1 };
@@ -66,11 +68,20 @@ double ManufacturedError(int n)
     if (boundary)
       x[i] = Exact(p.data());
   }
-  amConjugateGradient cg;
-  cg.SetMatrix(&K, &fixed);
-  cg.RelativeTolerance = 1e-12;
-  const auto result = cg.Solve(b.data(), x.data());
-  EXPECT_TRUE(result.Converged);
+  if (direct)
+  {
+    amSparseCholesky cholesky;
+    EXPECT_TRUE(cholesky.Factor(&K, &fixed)) << cholesky.Error();
+    EXPECT_TRUE(cholesky.Solve(b.data(), x.data()));
+  }
+  else
+  {
+    amConjugateGradient cg;
+    cg.SetMatrix(&K, &fixed);
+    cg.RelativeTolerance = 1e-12;
+    const auto result = cg.Solve(b.data(), x.data());
+    EXPECT_TRUE(result.Converged);
+  }
   // Degree-2 quadrature (4 points) of (u_h - u)^2 on every tetrahedron.
   const double qa = 0.5854101966249685, qb = 0.1381966011250105;
   double sum = 0;
@@ -153,6 +164,16 @@ double Dipole(const double* x)
   return x[0] / 8.0;
 }
 
+// Nine electrodes on the faces of the [-24, 24]^3 box, in the roles RA, LA, LL, V1..V6.
+void BoxElectrodes(amTorsoPotential* torso)
+{
+  torso->RemoveAllElectrodes();
+  const double e[9][3] = { { -24, 0, 20 }, { 24, 0, 20 }, { 20, 0, -24 }, { -5, -24, 0 }, { 5, -24, 0 },
+    { 12, -24, 0 }, { 18, -24, 0 }, { 24, -18, 0 }, { 24, 0, 0 } };
+  for (const auto& p : e)
+    torso->AddElectrode(p[0], p[1], p[2]);
+}
+
 double PotentialAt(vtkUnstructuredGrid* torso, const double p[3])
 {
   return torso->GetPointData()->GetArray("Potential")->GetComponent(torso->FindPoint(p[0], p[1], p[2]), 0);
@@ -165,7 +186,9 @@ TEST(TorsoPotential, ManufacturedSolutionSecondOrder)
   std::printf("Laplace on the unit cube, u = exp(x) sin(y), P1:\n");
   for (int n : { 4, 8, 16, 32 })
   {
-    const double e = ManufacturedError(n);
+    const double e = ManufacturedError(n, true);
+    // Conjugate gradients to 1e-12 and the Cholesky factor give the same discrete solution.
+    EXPECT_NEAR(ManufacturedError(n, false), e, 1e-6 * e);
     std::printf("  h = 1/%d: L2 error %.3e", n, e);
     if (previous > 0)
     {
@@ -178,6 +201,72 @@ TEST(TorsoPotential, ManufacturedSolutionSecondOrder)
     previous = e;
   }
   EXPECT_LT(previous, 2e-4);
+}
+
+TEST(TorsoPotential, CholeskyManyRightHandSidesAndErrors)
+{
+  const int dims[3] = { 6, 5, 4 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 6, 5, 4 };
+  auto mesh = amTest::BoxMesh(dims, origin, size);
+  amP1Assembly fem;
+  fem.Points.resize(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    mesh->GetPoint(i, fem.Points[i].data());
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType* ids;
+    vtkIdType npts;
+    mesh->GetCellPoints(c, npts, ids);
+    fem.Tetrahedra.push_back({ ids[0], ids[1], ids[2], ids[3] });
+  }
+  amSparseMatrix M, K;
+  fem.Assemble(nullptr, M, K);
+  const vtkIdType n = K.Size();
+  // The pure Neumann Laplacian is singular: the factorisation says so instead of returning garbage.
+  amSparseCholesky singular;
+  EXPECT_FALSE(singular.Factor(&K));
+  EXPECT_NE(singular.Error().find("not positive definite"), std::string::npos) << singular.Error();
+  // Every node fixed: nothing to solve.
+  std::vector<unsigned char> all(n, 1);
+  EXPECT_FALSE(singular.Factor(&K, &all));
+  EXPECT_NE(singular.Error().find("no free node"), std::string::npos) << singular.Error();
+
+  // The x = 0 face fixed; three right-hand sides at once equal three single solves, and each
+  // solves the system (residual on the free nodes at rounding level).
+  std::vector<unsigned char> fixed(n, 0);
+  for (vtkIdType i = 0; i < n; ++i)
+    fixed[i] = fem.Points[i][0] < 1e-12;
+  amSparseCholesky cholesky;
+  ASSERT_TRUE(cholesky.Factor(&K, &fixed)) << cholesky.Error();
+  EXPECT_GT(cholesky.FactorNonZeros(), 0);
+  std::vector<double> b(3 * n), x(3 * n, 0.0);
+  for (vtkIdType k = 0; k < 3 * n; ++k)
+  {
+    b[k] = std::sin(0.37 * k);
+    if (fixed[k % n])
+      x[k] = std::cos(0.11 * k); // Dirichlet values differ per vector too
+  }
+  std::vector<double> single(x);
+  ASSERT_TRUE(cholesky.Solve(b.data(), x.data(), 3));
+  for (int col = 0; col < 3; ++col)
+  {
+    ASSERT_TRUE(cholesky.Solve(b.data() + col * n, single.data() + col * n));
+    std::vector<double> ax(n);
+    K.Multiply(x.data() + col * n, ax.data());
+    double residual = 0, norm = 0;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      EXPECT_NEAR(x[col * n + i], single[col * n + i], 1e-12);
+      if (fixed[i])
+        EXPECT_EQ(x[col * n + i], std::cos(0.11 * (col * n + i))); // Dirichlet values untouched
+      else
+      {
+        residual = std::max(residual, std::fabs(ax[i] - b[col * n + i]));
+        norm = std::max(norm, std::fabs(b[col * n + i]));
+      }
+    }
+    EXPECT_LT(residual, 1e-10 * norm);
+  }
 }
 
 TEST(TorsoPotential, DipoleInsensitiveToRefinement)
@@ -212,8 +301,9 @@ TEST(TorsoPotential, DipoleInsensitiveToRefinement)
     phi->GetRange(range);
     EXPECT_GE(range[0], -100.0 - 1e-6);
     EXPECT_LE(range[1], 100.0 + 1e-6);
-    std::printf("dipole, h = %.0f mm: phi(16,0,0) = %.3f, phi(16,8,8) = %.3f, phi(24,0,0) = %.3f mV (%d CG iterations)\n",
-      48.0 / n, values[k][0], values[k][1], values[k][2], static_cast<int>(torso->GetMeanIterations()));
+    std::printf("dipole, h = %.0f mm: phi(16,0,0) = %.3f, phi(16,8,8) = %.3f, phi(24,0,0) = %.3f mV (Cholesky factor "
+                "%.2f M non-zeros, %.2f s)\n",
+      48.0 / n, values[k][0], values[k][1], values[k][2], torso->GetFactorNonZeros() / 1e6, torso->GetFactorSeconds());
     ++k;
   }
   for (int p = 0; p < 3; ++p)
@@ -242,11 +332,7 @@ TEST(TorsoPotential, TimeSeriesAndLeads)
   vtkNew<amTorsoPotential> torso;
   torso->SetInputData(0, mesh);
   torso->SetInputConnection(1, heart->GetOutputPort());
-  torso->RemoveAllElectrodes();
-  const double e[9][3] = { { -24, 0, 20 }, { 24, 0, 20 }, { 20, 0, -24 }, { -5, -24, 0 }, { 5, -24, 0 },
-    { 12, -24, 0 }, { 18, -24, 0 }, { 24, -18, 0 }, { 24, 0, 0 } };
-  for (const auto& p : e)
-    torso->AddElectrode(p[0], p[1], p[2]);
+  BoxElectrodes(torso);
   torso->UpdateInformation();
   vtkInformation* info = torso->GetOutputInformation(0);
   ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
@@ -300,6 +386,60 @@ TEST(TorsoPotential, TimeSeriesAndLeads)
   out = vtkUnstructuredGrid::SafeDownCast(torso->GetOutputDataObject(0));
   EXPECT_DOUBLE_EQ(out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), 50.0);
   EXPECT_EQ(torso->GetNumberOfSolves(), solves);
+}
+
+TEST(TorsoPotential, DirectSolverMatchesConjugateGradients)
+{
+  auto mesh = NestedCubes(16, 24.0); // 3 mm elements
+  vtkNew<amFitzHughNagumoSolver> heart;
+  heart->SetInputData(mesh);
+  heart->SetTimeStep(0.5);
+  heart->SetEndTime(40);
+  heart->SetOutputInterval(1); // 41 frames: two full batches of the direct solver and a rest
+  heart->SetConductivity(1.0);
+  heart->SetStimulusCenter(-8, -8, -8);
+  heart->SetStimulusRadius(8);
+  heart->SetStimulusStrength(2);
+  vtkNew<amTorsoPotential> direct, cg;
+  cg->SetSolverToConjugateGradient();
+  cg->SetSolverTolerance(1e-10);
+  for (amTorsoPotential* torso : { direct.GetPointer(), cg.GetPointer() })
+  {
+    torso->SetInputData(0, mesh);
+    torso->SetInputConnection(1, heart->GetOutputPort());
+    BoxElectrodes(torso);
+    torso->Update();
+    EXPECT_EQ(torso->GetNumberOfSolves(), 41);
+  }
+  EXPECT_EQ(direct->GetSolver(), amTorsoPotential::DIRECT);
+  EXPECT_GT(direct->GetFactorNonZeros(), 0);
+  vtkTable* a = vtkTable::SafeDownCast(direct->GetOutputDataObject(1));
+  vtkTable* b = vtkTable::SafeDownCast(cg->GetOutputDataObject(1));
+  ASSERT_EQ(a->GetNumberOfRows(), 41);
+  ASSERT_EQ(b->GetNumberOfRows(), 41);
+  double largest = 0, difference = 0;
+  for (vtkIdType r = 0; r < 41; ++r)
+  {
+    EXPECT_EQ(a->GetValue(r, 0).ToDouble(), b->GetValue(r, 0).ToDouble());
+    for (int c = 1; c < a->GetNumberOfColumns(); ++c)
+    {
+      largest = std::max(largest, std::fabs(a->GetValue(r, c).ToDouble()));
+      difference = std::max(difference, std::fabs(a->GetValue(r, c).ToDouble() - b->GetValue(r, c).ToDouble()));
+    }
+  }
+  EXPECT_GT(largest, 0.1);
+  EXPECT_LT(difference, 1e-6 * largest);
+  // The whole body surface at the last time too.
+  for (amTorsoPotential* torso : { direct.GetPointer(), cg.GetPointer() })
+    torso->UpdateTimeStep(40.0);
+  vtkDataArray* pa = vtkPolyData::SafeDownCast(direct->GetOutputDataObject(2))->GetPointData()->GetArray("Potential");
+  vtkDataArray* pb = vtkPolyData::SafeDownCast(cg->GetOutputDataObject(2))->GetPointData()->GetArray("Potential");
+  ASSERT_EQ(pa->GetNumberOfTuples(), pb->GetNumberOfTuples());
+  double range[2];
+  pa->GetRange(range);
+  EXPECT_GT(range[1] - range[0], 1.0);
+  for (vtkIdType i = 0; i < pa->GetNumberOfTuples(); ++i)
+    EXPECT_NEAR(pa->GetComponent(i, 0), pb->GetComponent(i, 0), 1e-5 * (range[1] - range[0]));
 }
 
 TEST(TorsoPotential, BadInput)

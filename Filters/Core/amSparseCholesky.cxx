@@ -1,0 +1,229 @@
+#include "amSparseCholesky.h"
+
+#include "amSparseMatrix.h"
+
+#include <cholmod.h>
+#include <dlfcn.h>
+
+#include <chrono>
+
+namespace
+{
+// The supernodal factor calls BLAS; a threaded OpenBLAS splits its sums differently for each
+// thread count, which changes the last bits of the result. For results that do not depend on
+// the machine's core count, OpenBLAS (when it is the BLAS in use) runs on one thread while
+// CHOLMOD works, and gets its setting back afterwards.
+class SerialBlas
+{
+public:
+  SerialBlas()
+  {
+    void* blas = dlopen("libopenblas.so.0", RTLD_LAZY | RTLD_NOLOAD);
+    if (!blas)
+      return;
+    this->Set = reinterpret_cast<void (*)(int)>(dlsym(blas, "openblas_set_num_threads"));
+    auto get = reinterpret_cast<int (*)()>(dlsym(blas, "openblas_get_num_threads"));
+    dlclose(blas); // NOLOAD: only drops the reference taken above
+    if (this->Set && get)
+    {
+      this->Saved = get();
+      this->Set(1);
+    }
+  }
+  ~SerialBlas()
+  {
+    if (this->Set && this->Saved > 0)
+      this->Set(this->Saved);
+  }
+  SerialBlas(const SerialBlas&) = delete;
+  SerialBlas& operator=(const SerialBlas&) = delete;
+
+private:
+  void (*Set)(int) = nullptr;
+  int Saved = 0;
+};
+}
+
+struct amSparseCholesky::Internal
+{
+  cholmod_common Common;
+  cholmod_factor* L = nullptr;
+  cholmod_dense* B = nullptr; // right-hand side on the free nodes
+  cholmod_dense* X = nullptr; // solution and CHOLMOD's workspaces, kept between solves
+  cholmod_dense* Y = nullptr;
+  cholmod_dense* E = nullptr;
+
+  Internal()
+  {
+    cholmod_l_start(&this->Common);
+    this->Common.print = 0;      // no messages on stdout
+    this->Common.error_handler = nullptr;
+    this->Common.final_ll = 0;   // LDL' stays LDL'
+  }
+  ~Internal()
+  {
+    this->Clear();
+    cholmod_l_finish(&this->Common);
+  }
+  void Clear()
+  {
+    cholmod_l_free_factor(&this->L, &this->Common);
+    for (cholmod_dense** d : { &this->B, &this->X, &this->Y, &this->E })
+      cholmod_l_free_dense(d, &this->Common);
+  }
+};
+
+amSparseCholesky::amSparseCholesky()
+  : Impl(new Internal)
+{
+}
+
+amSparseCholesky::~amSparseCholesky() = default;
+
+bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigned char>* fixed)
+{
+  const auto start = std::chrono::steady_clock::now();
+  Internal& in = *this->Impl;
+  in.Clear();
+  this->A = A;
+  this->Fixed = fixed;
+  this->Message.clear();
+  const vtkIdType n = A->Size();
+  this->FreeIndex.assign(n, -1);
+  this->FreeNodes.clear();
+  for (vtkIdType i = 0; i < n; ++i)
+    if (!fixed || !(*fixed)[i])
+    {
+      this->FreeIndex[i] = static_cast<vtkIdType>(this->FreeNodes.size());
+      this->FreeNodes.push_back(i);
+    }
+  const vtkIdType m = static_cast<vtkIdType>(this->FreeNodes.size());
+  if (m == 0)
+  {
+    this->Message = "no free node to solve for";
+    return false;
+  }
+
+  // Lower triangle of the free block in compressed columns: row i of the symmetric CSR matrix
+  // is column i, and its entries with column index >= i are that column's lower part.
+  vtkIdType nnz = 0;
+  for (vtkIdType r = 0; r < m; ++r)
+  {
+    const vtkIdType i = this->FreeNodes[r];
+    for (vtkIdType k = A->RowStart[i]; k < A->RowStart[i + 1]; ++k)
+      if (this->FreeIndex[A->Columns[k]] >= r)
+        ++nnz;
+  }
+  cholmod_common* c = &in.Common;
+  cholmod_sparse* S = cholmod_l_allocate_sparse(m, m, nnz, 1, 1, -1, CHOLMOD_REAL, c);
+  if (!S)
+  {
+    this->Message = "out of memory for the matrix";
+    return false;
+  }
+  auto* colStart = static_cast<SuiteSparse_long*>(S->p);
+  auto* rows = static_cast<SuiteSparse_long*>(S->i);
+  auto* values = static_cast<double*>(S->x);
+  vtkIdType fill = 0;
+  for (vtkIdType r = 0; r < m; ++r)
+  {
+    colStart[r] = fill;
+    const vtkIdType i = this->FreeNodes[r];
+    for (vtkIdType k = A->RowStart[i]; k < A->RowStart[i + 1]; ++k)
+    {
+      // Free indices follow node order, so sorted columns stay sorted.
+      const vtkIdType f = this->FreeIndex[A->Columns[k]];
+      if (f >= r)
+      {
+        rows[fill] = f;
+        values[fill++] = A->Values[k];
+      }
+    }
+  }
+  colStart[m] = fill;
+
+  SerialBlas serial;
+  in.L = cholmod_l_analyze(S, c);
+  bool ok = in.L && c->status >= CHOLMOD_OK;
+  if (ok)
+    ok = cholmod_l_factorize(S, in.L, c) && c->status == CHOLMOD_OK;
+  if (!ok)
+  {
+    if (c->status == CHOLMOD_NOT_POSDEF)
+      this->Message = "the matrix is not positive definite (column " +
+        std::to_string(in.L ? static_cast<long long>(this->FreeNodes[in.L->minor]) : -1) +
+        "): a node without a path to a fixed node, or a non-positive conductivity";
+    else if (c->status == CHOLMOD_OUT_OF_MEMORY || c->status == CHOLMOD_TOO_LARGE)
+      this->Message = "out of memory for the Cholesky factor";
+    else
+      this->Message = "CHOLMOD failed (status " + std::to_string(c->status) + ")";
+    cholmod_l_free_sparse(&S, c);
+    in.Clear();
+    return false;
+  }
+  cholmod_l_free_sparse(&S, c);
+  // A singular matrix (e.g. a part with no fixed node: potential defined up to a constant) can
+  // factor "successfully" with a pivot at rounding level; the pivot ratio shows it.
+  const double rcond = cholmod_l_rcond(in.L, c);
+  if (!(rcond > 1e-13))
+  {
+    this->Message = "the matrix is not positive definite (numerically singular, pivot ratio " + std::to_string(rcond) +
+      "): a part without a fixed node, or a zero conductivity";
+    in.Clear();
+    return false;
+  }
+  in.B = cholmod_l_zeros(m, 1, CHOLMOD_REAL, c);
+  if (!in.B)
+  {
+    this->Message = "out of memory for the right-hand side";
+    in.Clear();
+    return false;
+  }
+  this->NonZeros = c->lnz;
+  this->Flops = c->fl;
+  this->Supernodal = in.L->is_super != 0;
+  static const char* names[] = { "natural", "given", "AMD", "METIS", "NESDIS", "COLAMD", "postordered" };
+  const int ordering = in.L->ordering;
+  this->OrderingName = ordering >= 0 && ordering <= 6 ? names[ordering] : "unknown";
+  this->Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
+bool amSparseCholesky::Solve(const double* b, double* x, int count)
+{
+  Internal& in = *this->Impl;
+  const amSparseMatrix& A = *this->A;
+  const vtkIdType n = A.Size();
+  const vtkIdType m = static_cast<vtkIdType>(this->FreeNodes.size());
+  if (static_cast<int>(in.B->ncol) != count)
+  {
+    cholmod_l_free_dense(&in.B, &in.Common);
+    in.B = cholmod_l_zeros(m, count, CHOLMOD_REAL, &in.Common);
+    if (!in.B)
+      return false;
+  }
+  auto* rhs = static_cast<double*>(in.B->x);
+  for (int col = 0; col < count; ++col)
+  {
+    const double* bc = b ? b + col * n : nullptr;
+    const double* xc = x + col * n;
+    double* rc = rhs + col * m;
+    for (vtkIdType r = 0; r < m; ++r)
+    {
+      const vtkIdType i = this->FreeNodes[r];
+      double s = bc ? bc[i] : 0.0;
+      for (vtkIdType k = A.RowStart[i]; k < A.RowStart[i + 1]; ++k)
+        if (this->FreeIndex[A.Columns[k]] < 0)
+          s -= A.Values[k] * xc[A.Columns[k]];
+      rc[r] = s;
+    }
+  }
+  SerialBlas serial;
+  if (!cholmod_l_solve2(CHOLMOD_A, in.L, in.B, nullptr, &in.X, nullptr, &in.Y, &in.E, &in.Common))
+    return false;
+  const auto* solution = static_cast<const double*>(in.X->x);
+  for (int col = 0; col < count; ++col)
+    for (vtkIdType r = 0; r < m; ++r)
+      x[col * n + this->FreeNodes[r]] = solution[col * m + r];
+  return true;
+}
