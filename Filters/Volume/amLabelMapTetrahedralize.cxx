@@ -23,6 +23,7 @@
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_3/polylines_to_protect.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_constant_domain_field_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_domain_with_polyline_features_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
@@ -51,6 +52,7 @@ using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_ta
 using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr, Domain::Corner_index, Domain::Curve_index>;
 using Criteria = CGAL::Mesh_criteria_3<Tr>;
 using Point = K::Point_3;
+using SizeField = CGAL::Mesh_constant_domain_field_3<Tr::Geom_traits, Domain::Index>;
 }
 
 amLabelMapTetrahedralize::amLabelMapTetrahedralize()
@@ -73,6 +75,22 @@ amLabelMapTetrahedralize::amLabelMapTetrahedralize()
 }
 
 amLabelMapTetrahedralize::~amLabelMapTetrahedralize() = default;
+
+void amLabelMapTetrahedralize::AddRegionCellSize(double label, double size)
+{
+  this->RegionCellSizes.push_back(label);
+  this->RegionCellSizes.push_back(size);
+  this->Modified();
+}
+
+void amLabelMapTetrahedralize::RemoveAllRegionCellSizes()
+{
+  if (!this->RegionCellSizes.empty())
+  {
+    this->RegionCellSizes.clear();
+    this->Modified();
+  }
+}
 
 int amLabelMapTetrahedralize::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -168,10 +186,49 @@ int amLabelMapTetrahedralize::RequestData(
   }
   this->UpdateProgress(0.1);
 
+  // Per-region sizes: cells by subdomain, facets by the pair of subdomains they separate.
+  std::map<int, double> regionSize; // CGAL subdomain index -> cell size
+  for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)
+  {
+    const double value = this->RegionCellSizes[k], size = this->RegionCellSizes[k + 1];
+    if (!(value >= 0 && value <= 255 && value == std::floor(value)) || static_cast<int>(value) == bg)
+    {
+      vtkErrorMacro("RegionCellSizes names the label " << value << ", which is not a meshed label (0-255, not the "
+                                                        << "background " << bg << ").");
+      return 0;
+    }
+    if (!(size > 0) || !std::isfinite(size))
+    {
+      vtkErrorMacro("RegionCellSizes gives label " << value << " the size " << size << ": sizes must be > 0 mm.");
+      return 0;
+    }
+    const int label = static_cast<int>(value);
+    const int subdomain = label == 0 ? bg : label;
+    if (!count.count(subdomain))
+      vtkWarningMacro("RegionCellSizes names label " << label << ", which is not in the label map.");
+    regionSize[subdomain] = size;
+  }
+  SizeField cellSize(this->CellSize), facetSize(this->FacetSize);
+  for (const auto& rs : regionSize)
+    cellSize.set_size(rs.second, 3, domain.index_from_subdomain_index(rs.first));
+  for (const auto& a : count)
+    for (const auto& b : count)
+    {
+      if (a.first >= b.first)
+        continue;
+      double size = this->FacetSize;
+      for (int s : { a.first, b.first })
+        if (regionSize.count(s))
+          size = std::min(size, regionSize[s] * this->FacetSize / this->CellSize);
+      if (size < this->FacetSize)
+        for (const auto& patch : { std::make_pair(a.first, b.first), std::make_pair(b.first, a.first) })
+          facetSize.set_size(size, 2, domain.index_from_surface_patch_index(patch));
+    }
+
   namespace p = CGAL::parameters;
-  Criteria criteria(p::edge_size = edgeSize, p::facet_angle = this->FacetAngle,
-    p::facet_size = this->FacetSize, p::facet_distance = this->FacetDistance,
-    p::cell_radius_edge_ratio = this->CellRadiusEdgeRatio, p::cell_size = this->CellSize);
+  Criteria criteria(p::edge_size = edgeSize, p::facet_angle = this->FacetAngle, p::facet_size = facetSize,
+    p::facet_distance = this->FacetDistance, p::cell_radius_edge_ratio = this->CellRadiusEdgeRatio,
+    p::cell_size = cellSize);
   C3t3 c3t3;
   try
   {
@@ -311,6 +368,8 @@ int amLabelMapTetrahedralize::RequestData(
          << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
          << " Perturb=" << this->Perturb << " Exude=" << this->Exude
          << " SliverBound=" << this->SliverBound << " tetrahedra=" << this->NumberOfTetrahedra;
+  for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)
+    params << (k ? "," : " RegionCellSizes=") << this->RegionCellSizes[k] << "," << this->RegionCellSizes[k + 1];
   amProvenance::Record(output, input, "amLabelMapTetrahedralize", params.str());
   amProvenance::Record(interfaces, input, "amLabelMapTetrahedralize", params.str());
   this->UpdateProgress(1.0);
@@ -326,6 +385,7 @@ void amLabelMapTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
      << indent << "FacetAngle: " << this->FacetAngle << "\n"
      << indent << "CellSize: " << this->CellSize << "\n"
      << indent << "CellRadiusEdgeRatio: " << this->CellRadiusEdgeRatio << "\n"
+     << indent << "RegionCellSizes: " << this->RegionCellSizes.size() / 2 << " region(s)\n"
      << indent << "ProtectJunctions: " << this->ProtectJunctions << "\n"
      << indent << "EdgeSize: " << this->EdgeSize << "\n"
      << indent << "Odt: " << this->Odt << " Lloyd: " << this->Lloyd << " Perturb: " << this->Perturb

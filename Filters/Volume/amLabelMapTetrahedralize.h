@@ -28,6 +28,8 @@
 #include "AnatomeshFiltersVolumeModule.h" // export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
+#include <vector> // for RegionCellSizes
+
 class ANATOMESHFILTERSVOLUME_EXPORT amLabelMapTetrahedralize : public vtkUnstructuredGridAlgorithm
 {
 public:
@@ -63,6 +65,17 @@ public:
   /// Largest tetrahedron circumradius, mm (default 8).
   vtkSetClampMacro(CellSize, double, 1e-6, 1e6);
   vtkGetMacro(CellSize, double);
+  ///@}
+
+  ///@{
+  /// Finer (or coarser) tetrahedra in chosen regions: (label, cell size in mm) pairs. In such a
+  /// region the largest circumradius is that size instead of CellSize, and the surface triangles
+  /// bounding it get the facet size scaled alike (size * FacetSize / CellSize, at most FacetSize;
+  /// an interface takes the smaller of its two regions'). E.g. a 2 mm myocardium in a 6 mm torso
+  /// for the electrophysiology. Default: none (CellSize everywhere).
+  void AddRegionCellSize(double label, double size);
+  void RemoveAllRegionCellSizes();
+  const std::vector<double>& GetRegionCellSizes() const { return this->RegionCellSizes; }
   ///@}
 
   ///@{
@@ -124,6 +137,7 @@ protected:
   double FacetAngle;
   double CellSize;
   double CellRadiusEdgeRatio;
+  std::vector<double> RegionCellSizes;
   vtkTypeBool ProtectJunctions;
   double EdgeSize;
   vtkTypeBool Odt;

@@ -6,10 +6,12 @@
 #include "amTestUtilities.h"
 #include "amThoraxPhantomSource.h"
 
+#include "vtkCell.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -92,7 +94,8 @@ struct Meshing
   std::string Errors;
 };
 
-Meshing MeshIt(vtkImageData* labels, double facetSize, double cellSize, double distance)
+Meshing MeshIt(vtkImageData* labels, double facetSize, double cellSize, double distance,
+  const std::vector<double>& regionCellSizes = {})
 {
   vtkNew<amLabelMapTetrahedralize> m;
   vtkNew<amTest::ErrorCatcher> errors;
@@ -102,6 +105,8 @@ Meshing MeshIt(vtkImageData* labels, double facetSize, double cellSize, double d
   m->SetFacetSize(facetSize);
   m->SetCellSize(cellSize);
   m->SetFacetDistance(distance);
+  for (std::size_t k = 0; k + 1 < regionCellSizes.size(); k += 2)
+    m->AddRegionCellSize(regionCellSizes[k], regionCellSizes[k + 1]);
   Meshing r;
   r.Ok = m->GetExecutive()->Update() != 0 && !errors->HasError();
   r.Mesh = m->GetOutput();
@@ -158,6 +163,105 @@ TEST(LabelMapTetrahedralize, NestedBallsVolumesAndInterfaces)
   for (vtkIdType t = 0; t < r.Interfaces->GetNumberOfCells(); ++t)
     pairs.insert({ static_cast<int>(labels->GetComponent(t, 0)), static_cast<int>(labels->GetComponent(t, 1)) });
   EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 1, 0 }, { 2, 1 } }));
+}
+
+namespace
+{
+// Mean edge length of the tetrahedra of one region.
+double MeanEdge(vtkUnstructuredGrid* g, int region, vtkIdType* count)
+{
+  vtkDataArray* regions = g->GetCellData()->GetArray("Region");
+  double sum = 0;
+  vtkIdType n = 0;
+  *count = 0;
+  for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c)
+  {
+    if (regions->GetComponent(c, 0) != region)
+      continue;
+    ++*count;
+    const vtkIdType* ids;
+    vtkIdType npts;
+    g->GetCellPoints(c, npts, ids);
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+      {
+        double p[3], q[3];
+        g->GetPoint(ids[a], p);
+        g->GetPoint(ids[b], q);
+        sum += std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
+        ++n;
+      }
+  }
+  return n ? sum / n : 0.0;
+}
+
+// Mean triangle area per label pair of an interface output.
+std::map<std::pair<int, int>, double> MeanArea(vtkPolyData* s)
+{
+  vtkDataArray* labels = s->GetCellData()->GetArray("Labels");
+  std::map<std::pair<int, int>, std::pair<double, int>> sums;
+  for (vtkIdType t = 0; t < s->GetNumberOfCells(); ++t)
+  {
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      s->GetPoint(s->GetCell(t)->GetPointId(k), p[k]);
+    double u[3], v[3], n[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      u[d] = p[1][d] - p[0][d];
+      v[d] = p[2][d] - p[0][d];
+    }
+    vtkMath::Cross(u, v, n);
+    auto& sum = sums[{ static_cast<int>(labels->GetComponent(t, 0)), static_cast<int>(labels->GetComponent(t, 1)) }];
+    sum.first += 0.5 * vtkMath::Norm(n);
+    ++sum.second;
+  }
+  std::map<std::pair<int, int>, double> mean;
+  for (const auto& kv : sums)
+    mean[kv.first] = kv.second.first / kv.second.second;
+  return mean;
+}
+}
+
+TEST(LabelMapTetrahedralize, RegionCellSizes)
+{
+  vtkNew<vtkMatrix3x3> identity;
+  const double c[3] = { 0, 0, 0 };
+  auto labels = NestedBalls(c, identity);
+  const Meshing uniform = MeshIt(labels, 4.0, 6.0, 0.5);
+  const Meshing fine = MeshIt(labels, 4.0, 6.0, 0.5, { 2, 1.5 }); // the inner ball at 1.5 mm
+  ASSERT_TRUE(uniform.Ok) << uniform.Errors;
+  ASSERT_TRUE(fine.Ok) << fine.Errors;
+  vtkIdType n2u, n2f, n1u, n1f;
+  const double e2u = MeanEdge(uniform.Mesh, 2, &n2u), e2f = MeanEdge(fine.Mesh, 2, &n2f);
+  const double e1u = MeanEdge(uniform.Mesh, 1, &n1u), e1f = MeanEdge(fine.Mesh, 1, &n1f);
+  std::printf("inner ball: %lld tets, mean edge %.2f mm -> %lld tets, %.2f mm with a 1.5 mm cell size; "
+              "outer shell: %lld tets, %.2f mm -> %lld tets, %.2f mm\n",
+    static_cast<long long>(n2u), e2u, static_cast<long long>(n2f), e2f, static_cast<long long>(n1u), e1u,
+    static_cast<long long>(n1f), e1f);
+  EXPECT_LT(e2f, 0.6 * e2u); // the chosen region is finer
+  EXPECT_GT(n2f, 4 * n2u);
+  EXPECT_LT(e1f, e1u); // the thin outer shell gets finer near the fine interface, but
+  // its outer surface (labels 1 | 0) keeps the coarse facets, the inner one (2 | 1) is finer.
+  const auto ua = MeanArea(uniform.Interfaces), fa = MeanArea(fine.Interfaces);
+  std::printf("interface triangles, mean area: 2|1 %.2f -> %.2f mm^2, 1|0 %.2f -> %.2f mm^2\n", ua.at({ 2, 1 }),
+    fa.at({ 2, 1 }), ua.at({ 1, 0 }), fa.at({ 1, 0 }));
+  EXPECT_LT(fa.at({ 2, 1 }), 0.3 * ua.at({ 2, 1 }));
+  EXPECT_NEAR(fa.at({ 1, 0 }), ua.at({ 1, 0 }), 0.25 * ua.at({ 1, 0 }));
+  int bad = 0;
+  double centroid[3];
+  const auto tets = TetVolumes(fine.Mesh, &bad, centroid, 2);
+  EXPECT_EQ(bad, 0);
+  const double v2 = 4.0 / 3 * M_PI * 1000;
+  EXPECT_NEAR(tets.at(2), v2, 0.03 * v2);
+
+  // Sizes for the background or non-positive sizes are errors.
+  const Meshing background = MeshIt(labels, 4.0, 6.0, 0.5, { 0, 2 });
+  EXPECT_FALSE(background.Ok);
+  EXPECT_NE(background.Errors.find("not a meshed label"), std::string::npos) << background.Errors;
+  const Meshing zero = MeshIt(labels, 4.0, 6.0, 0.5, { 2, 0 });
+  EXPECT_FALSE(zero.Ok);
+  EXPECT_NE(zero.Errors.find("must be > 0"), std::string::npos) << zero.Errors;
 }
 
 TEST(LabelMapTetrahedralize, EveryPhantomOrganAndTheSameMeshTwice)
