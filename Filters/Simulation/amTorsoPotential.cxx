@@ -5,6 +5,7 @@
 #include "amProvenance.h"
 #include "amSparseCholesky.h"
 #include "amSparseMatrix.h"
+#include "amTetraFaces.h"
 #include "amTetraSubset.h"
 #include "amThoraxPhantomModel.h"
 #include "amThreading.h"
@@ -370,44 +371,18 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   model->X.assign(n, 0.0);
   model->Zero.assign(n, 0.0);
 
-  // Body surface: faces of exactly one torso tetrahedron, not all of whose nodes are heart nodes.
-  // Every face of every torso tetrahedron, sorted, with its tetrahedron and its side (faceOf is
-  // outward for a positive tetrahedron).
-  struct Face
-  {
-    std::array<vtkIdType, 3> Sorted;
-    vtkIdType Tet;
-    int Side;
-    bool operator<(const Face& o) const { return this->Sorted < o.Sorted; }
-  };
-  std::vector<Face> faces;
-  faces.reserve(4 * fem.Tetrahedra.size());
-  static const int faceOf[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
-  for (std::size_t t = 0; t < fem.Tetrahedra.size(); ++t)
-    for (int f = 0; f < 4; ++f)
-    {
-      const auto& tet = fem.Tetrahedra[t];
-      Face face{ { tet[faceOf[f][0]], tet[faceOf[f][1]], tet[faceOf[f][2]] }, static_cast<vtkIdType>(t), f };
-      std::sort(face.Sorted.begin(), face.Sorted.end());
-      faces.push_back(face);
-    }
-  std::sort(faces.begin(), faces.end());
+  // Body surface: faces of exactly one torso tetrahedron (oriented outwards), not all of whose
+  // nodes are heart nodes.
   std::vector<unsigned char> onSurface(n, 0);
-  std::vector<const Face*> bodyFaces;
-  for (std::size_t k = 0; k < faces.size();)
+  std::vector<amTetraFaces::Face> bodyFaces;
+  for (const auto& f : amTetraFaces::Find(fem.Points[0].data(), fem.Tetrahedra, nullptr))
   {
-    std::size_t e = k + 1;
-    while (e < faces.size() && faces[e].Sorted == faces[k].Sorted)
-      ++e;
-    const auto& f = faces[k].Sorted;
-    const bool heartFace = model->HeartIndex[f[0]] >= 0 && model->HeartIndex[f[1]] >= 0 && model->HeartIndex[f[2]] >= 0;
-    if (e - k == 1 && !heartFace)
-    {
-      for (vtkIdType v : f)
-        onSurface[v] = 1;
-      bodyFaces.push_back(&faces[k]);
-    }
-    k = e;
+    const auto& v = f.Points;
+    if (model->HeartIndex[v[0]] >= 0 && model->HeartIndex[v[1]] >= 0 && model->HeartIndex[v[2]] >= 0)
+      continue;
+    for (vtkIdType p : v)
+      onSurface[p] = 1;
+    bodyFaces.push_back(f);
   }
   // The body surface: its triangles, oriented outwards, as output 2.
   {
@@ -416,18 +391,9 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     vtkNew<vtkPoints> bodyPoints;
     bodyPoints->SetDataTypeToDouble();
     vtkNew<vtkCellArray> triangles;
-    for (const Face* f : bodyFaces)
+    for (const auto& f : bodyFaces)
     {
-      const auto& tet = fem.Tetrahedra[f->Tet];
-      vtkIdType tri[3] = { tet[faceOf[f->Side][0]], tet[faceOf[f->Side][1]], tet[faceOf[f->Side][2]] };
-      double e[3][3];
-      for (int k = 0; k < 3; ++k)
-        for (int c = 0; c < 3; ++c)
-          e[k][c] = fem.Points[tet[k + 1]][c] - fem.Points[tet[0]][c];
-      const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-        e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-      if (det < 0)
-        std::swap(tri[1], tri[2]); // a negative tetrahedron: its faceOf faces point inwards
+      vtkIdType tri[3] = { f.Points[0], f.Points[1], f.Points[2] };
       for (vtkIdType& v : tri)
       {
         if (bodyIndex[v] < 0)

@@ -1,6 +1,7 @@
 #include "amMeditWriter.h"
 
 #include "amAtomicFile.h"
+#include "amTetraFaces.h"
 #include "amMeditFormat.h"
 
 #include "vtkCellData.h"
@@ -16,6 +17,7 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -27,6 +29,7 @@ amMeditWriter::amMeditWriter()
   , RegionArrayName(nullptr)
   , PointRefArrayName(nullptr)
   , SolutionArrayName(nullptr)
+  , WriteInterfaces(1)
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(0);
@@ -132,6 +135,33 @@ int amMeditWriter::WriteData(vtkDataObject* data)
       b.Connectivity.push_back(ids->GetId(k));
     b.Refs.push_back(regions ? static_cast<int>(regions->GetComponent(c, 0)) : 0);
   }
+  if (this->WriteInterfaces && blocks.count(VTK_TETRA) && !blocks.count(VTK_TRIANGLE))
+  {
+    const auto& tetBlock = blocks[VTK_TETRA];
+    std::vector<std::array<vtkIdType, 4>> tets(tetBlock.Refs.size());
+    bool inRange = true;
+    for (std::size_t t = 0; t < tets.size(); ++t)
+    {
+      for (int k = 0; k < 4; ++k)
+        tets[t][k] = static_cast<vtkIdType>(tetBlock.Connectivity[4 * t + k]);
+      inRange = inRange && tetBlock.Refs[t] >= 0 && tetBlock.Refs[t] <= 999;
+    }
+    if (!inRange)
+      vtkWarningMacro("'" << target << "': the tetrahedra's regions are not all within 0-999, which the interface "
+                          << "references (1000 * higher + lower) need; no interface triangles are written.");
+    else
+    {
+      amMeditFormat::Block b;
+      b.Keyword = "Triangles";
+      b.NodesPerCell = 3;
+      for (const auto& f : amTetraFaces::Find(mesh.Points.data(), tets, tetBlock.Refs.data()))
+      {
+        b.Connectivity.insert(b.Connectivity.end(), f.Points.begin(), f.Points.end());
+        b.Refs.push_back(1000 * f.First + (f.Second == amTetraFaces::Outside() ? 0 : f.Second));
+      }
+      blocks[VTK_TRIANGLE] = std::move(b);
+    }
+  }
   for (int type : { VTK_LINE, VTK_TRIANGLE, VTK_QUAD, VTK_TETRA, VTK_HEXAHEDRON })
     if (blocks.count(type))
       mesh.Blocks.push_back(std::move(blocks[type]));
@@ -223,6 +253,7 @@ void amMeditWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "WriteInterfaces: " << this->WriteInterfaces << "\n";
   os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)") << "\n";
   os << indent << "PointRefArrayName: " << (this->PointRefArrayName ? this->PointRefArrayName : "(none)") << "\n";
   os << indent << "SolutionArrayName: " << (this->SolutionArrayName ? this->SolutionArrayName : "(none)") << "\n";

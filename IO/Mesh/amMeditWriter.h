@@ -11,6 +11,13 @@
  * writes that point-data array to "<name>.sol": 1 component as a scalar, 3 as a vector, 6 (VTK
  * symmetric tensor order XX YY ZZ XY YZ XZ) as a symmetric tensor in Medit order.
  * Files appear atomically (temporary name, then rename); NaN coordinates are refused.
+ *
+ * WriteInterfaces (default on): a tetrahedral mesh without triangles also gets its interface and
+ * boundary triangles (amTetraFaces: each face where the region changes, once, the normal from the
+ * higher region into the lower one, outwards on the boundary), so a solver can put boundary
+ * conditions on organ surfaces. Their reference names the two regions: 1000 * higher + lower,
+ * with 0 for the outside (e.g. 5006 is not possible, 6005 separates regions 6 and 5, 1000 is
+ * region 1's outer boundary); region labels must then lie in 1..999.
  */
 #ifndef amMeditWriter_h
 #define amMeditWriter_h
@@ -44,6 +51,12 @@ public:
   ///@}
 
   ///@{
+  /// Also write the interface and boundary triangles of a tetrahedral mesh (default on).
+  vtkSetMacro(WriteInterfaces, vtkTypeBool);
+  vtkGetMacro(WriteInterfaces, vtkTypeBool);
+  vtkBooleanMacro(WriteInterfaces, vtkTypeBool);
+  ///@}
+  ///@{
   /// Point-data array to write as "<name>.sol" (default empty: no .sol).
   vtkSetStringMacro(SolutionArrayName);
   vtkGetStringMacro(SolutionArrayName);
@@ -67,6 +80,7 @@ protected:
   char* RegionArrayName;
   char* PointRefArrayName;
   char* SolutionArrayName;
+  vtkTypeBool WriteInterfaces;
 
 private:
   bool LastWriteOk = false;

@@ -1,6 +1,7 @@
 // Medit .mesh/.sol: a round trip keeps every number; malformed files give the line of the problem.
 #include "amMeditReader.h"
 #include "amMeditWriter.h"
+#include "amBoxMesh.h"
 #include "amTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -12,6 +13,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <fstream>
 
@@ -111,6 +113,75 @@ TEST(Medit, RoundTripKeepsEveryNumber)
   for (vtkIdType i = 0; i < 5; ++i)
     for (int c = 0; c < 6; ++c)
       EXPECT_EQ(metric->GetComponent(i, c), grid->GetPointData()->GetArray("Metric")->GetComponent(i, c));
+}
+
+TEST(Medit, TetrahedraComeWithTheirInterfaceTriangles)
+{
+  // A 3 x 2 x 2 box of cubes, region 2 in the cubes with x > 1, region 1 elsewhere; a negative
+  // tetrahedron among them (the faces must still face the right way).
+  const int n[3] = { 3, 2, 2 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 3, 2, 2 };
+  auto grid = amTest::BoxMesh(n, origin, size, [](const double* c) { return c[0] > 1 ? 2 : 1; });
+  vtkIdType npts;
+  const vtkIdType* ids;
+  grid->GetCellPoints(0, npts, ids);
+  const vtkIdType flipped[4] = { ids[0], ids[2], ids[1], ids[3] };
+  grid->ReplaceCell(0, 4, flipped);
+  const std::string path = amTest::TempPath("box.mesh");
+  vtkNew<amMeditWriter> writer;
+  writer->SetInputData(grid);
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  vtkNew<amMeditReader> reader;
+  vtkNew<amTest::ErrorCatcher> errors;
+  vtkUnstructuredGrid* back = ReadBack(reader, path, errors);
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  // Boundary: 2 triangles per outer square (2 * (3*2 + 3*2 + 2*2) squares); interface x = 1: 2 * 4.
+  std::map<int, int> count;
+  std::map<int, double> flux; // divergence theorem: sum of x * n_x * area per reference
+  vtkDataArray* region = back->GetCellData()->GetArray("Region");
+  for (vtkIdType c = 0; c < back->GetNumberOfCells(); ++c)
+  {
+    if (back->GetCellType(c) != VTK_TRIANGLE)
+      continue;
+    const int ref = static_cast<int>(region->GetComponent(c, 0));
+    ++count[ref];
+    back->GetCellPoints(c, npts, ids);
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+      back->GetPoint(ids[k], p[k]);
+    const double nx = (p[1][1] - p[0][1]) * (p[2][2] - p[0][2]) - (p[1][2] - p[0][2]) * (p[2][1] - p[0][1]);
+    flux[ref] += 0.5 * nx * (p[0][0] + p[1][0] + p[2][0]) / 3.0;
+  }
+  EXPECT_EQ(count[2001], 2 * 4); // the interface, once
+  EXPECT_EQ(count[1000] + count[2000], 2 * 2 * (6 + 6 + 4));
+  EXPECT_EQ(count.size(), 3u);
+  // Region 2 (x in [1, 3], volume 8) is bounded by 2000 (outwards) and 2001 (from 2 into 1):
+  // the integral of div(x e_x) = 1 over it is its volume.
+  EXPECT_NEAR(flux[2000] + flux[2001], 8.0, 1e-12);
+  EXPECT_NEAR(flux[1000] - flux[2001], 4.0, 1e-12); // region 1: 2001's normal points into it
+
+  // Regions beyond 999 cannot be named: the tetrahedra are written, without triangles, and a warning.
+  vtkDataArray* r = grid->GetCellData()->GetArray("Region");
+  r->SetComponent(5, 0, 1234);
+  r->Modified();
+  vtkNew<amTest::ErrorCatcher> warnings;
+  warnings->Watch(writer);
+  writer->SetInputData(grid);
+  ASSERT_EQ(writer->Write(), 1);
+  EXPECT_FALSE(warnings->Warnings.empty());
+  reader->Modified();
+  back = ReadBack(reader, path, errors);
+  EXPECT_EQ(back->GetNumberOfCells(), grid->GetNumberOfCells());
+  // And none when asked for none.
+  r->SetComponent(5, 0, 2);
+  r->Modified();
+  writer->WriteInterfacesOff();
+  writer->SetInputData(grid);
+  ASSERT_EQ(writer->Write(), 1);
+  reader->Modified();
+  back = ReadBack(reader, path, errors);
+  EXPECT_EQ(back->GetNumberOfCells(), grid->GetNumberOfCells());
 }
 
 TEST(Medit, MalformedFilesNameTheLine)
