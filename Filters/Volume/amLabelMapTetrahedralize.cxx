@@ -256,7 +256,12 @@ int amLabelMapTetrahedralize::RequestData(
   this->UpdateProgress(0.9);
   if (c3t3.number_of_cells_in_complex() == 0)
   {
-    vtkErrorMacro("CGAL Mesh_3 produced no tetrahedra (are the regions thinner than the sizes asked for?).");
+    vtkErrorMacro("CGAL Mesh_3 produced no tetrahedra (are the regions thinner than the sizes asked for?"
+      << (this->ProtectJunctions ? " With ProtectJunctions, specks of a few stray voxels can also stop it: remove "
+                                   "small components first, e.g. MorphologyCleaning's MinimumComponentVolume, or "
+                                   "turn ProtectJunctions off."
+                                 : "")
+      << ")");
     return 0;
   }
 

@@ -32,6 +32,7 @@
 #include <mutex>
 #include <numeric>
 #include <sstream>
+#include <filesystem>
 #include <fstream>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -210,7 +211,8 @@ std::string CheckMetaImageData(const std::string& path, std::string& repairedHea
           l = "CompressedDataSize = " + std::to_string(consumed);
         else if (key == "ElementDataFile")
         {
-          text += "ElementDataFile = " + where + "\n";
+          // The repaired header lives in the temporary folder: name the data by its absolute path.
+          text += "ElementDataFile = " + std::filesystem::absolute(where).string() + "\n";
           break;
         }
         text += l + "\n";

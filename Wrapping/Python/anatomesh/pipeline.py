@@ -296,6 +296,13 @@ class Pipeline:
                 step.algorithm.SetInputConnection(prop.port_index, by_name[upstream].algorithm.GetOutputPort(index))
         return algorithms
 
+    def _failure(self, by_name, step, errors, fallback):
+        """The error for a failed update of step: named after the filter that reported the first
+        error (an upstream one, often), with that filter's line and type."""
+        culprit = by_name.get(errors[0][0], step) if errors else step
+        return self._error(culprit.line, "filter %r (%s) failed: %s" % (
+            culprit.name, culprit.proxy.name, errors[0][1] if errors else fallback))
+
     def run(self, progress=None, log=None):
         """Build and execute; write every writer and <Output>. Returns a list of written files."""
         algorithms = self.build()
@@ -312,9 +319,7 @@ class Pipeline:
             _make_parent(step.algorithm.GetFileName(), self, step.line)
             ok = step.algorithm.Write()
             if errors or not ok:
-                raise self._error(step.line, "filter %r (%s) failed: %s" % (
-                    errors[0][0] if errors else step.name, step.proxy.name,
-                    errors[0][1] if errors else "the writer reported no success"))
+                raise self._failure(by_name, step, errors, "the writer reported no success")
             written.append(step.algorithm.GetFileName())
             self.written_data[written[-1]] = step.algorithm.GetInputDataObject(0, 0)
         for upstream, port, path, line in self.outputs:
@@ -324,9 +329,7 @@ class Pipeline:
             algorithm.UpdateInformation()
             algorithm.Update(index)  # returns nothing in VTK 9.2: errors come through the watcher
             if errors or algorithm.GetOutputDataObject(index) is None:
-                raise self._error(line, "filter %r (%s) failed: %s" % (
-                    errors[0][0] if errors else upstream, step.proxy.name,
-                    errors[0][1] if errors else "no output"))
+                raise self._failure(by_name, step, errors, "no output")
             _make_parent(path, self, line)
             if os.path.splitext(path)[1].lower() == ".pvd":
                 written.extend(write_time_series(algorithm, index, path,
