@@ -153,22 +153,36 @@ int amSurfaceSmoothing::RequestData(
       this->UpdateProgress(static_cast<double>(it + 1) / (2 * this->NumberOfIterations));
   }
 
-  // Untangle: wherever triangles of a region's boundary cross (possible near junctions, where
-  // the ring averages of several interfaces pull at each other), their vertices go back to the
-  // input, which has no crossing, until none is left (each check is a CGAL pass over every
-  // region, so vertices are restored at once rather than bisected).
+  // Untangle: wherever triangles cross — of one region's boundary near junctions, where the ring
+  // averages of several interfaces pull at each other, or of two interfaces a voxel apart, which
+  // smoothing moves into each other — their vertices go back to the input, which has no
+  // crossing, until none is left (each check is one CGAL box-intersection pass over the whole
+  // surface, so vertices are restored at once rather than bisected).
+  // The crossing test must see the coordinates that will be written: round to the input's point
+  // type first (float, from amLabelSurface: rounding can fold a nearly flat pair of triangles).
+  if (input->GetPoints()->GetDataType() == VTK_FLOAT)
+    for (auto& p : x)
+      for (double& c : p)
+        c = static_cast<float>(c);
   this->UntangledVertices = 0;
-  if (this->PreventSelfIntersections && !mesh.Labels.empty())
+  if (this->PreventSelfIntersections)
   {
-    for (int round = 0; round < 10; ++round)
+    bool clean = false;
+    for (int round = 0; round < 20 && !clean; ++round)
     {
-      const std::vector<vtkIdType> tangled = amSelfIntersection::Vertices(mesh, x);
-      if (tangled.empty())
-        break;
-      for (vtkIdType v : tangled)
-        x[v] = x0[v];
-      this->UntangledVertices += static_cast<vtkIdType>(tangled.size());
+      const std::vector<vtkIdType> crossing = amSelfIntersection::AllTriangles(mesh, x);
+      clean = crossing.empty();
+      for (vtkIdType t : crossing)
+        for (vtkIdType v : mesh.Triangles[t])
+          if (x[v] != x0[v])
+          {
+            x[v] = x0[v];
+            ++this->UntangledVertices;
+          }
     }
+    if (!clean)
+      vtkWarningMacro(<< "triangles still cross after restoring " << this->UntangledVertices
+                      << " vertices to their input positions (does the input surface cross itself?)");
   }
 
   output->CopyStructure(input);

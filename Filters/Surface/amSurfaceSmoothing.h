@@ -24,9 +24,11 @@
  * On a voxelised sphere of radius 20 voxels the defaults bring the largest distance to the true
  * sphere from 0.84 to 0.41 voxel and the mean from 0.38 to 0.08 voxel.
  *
- * A step that would flip a triangle is refused. Finally, with PreventSelfIntersections, the
- * vertices of triangles that cross other triangles of the same region are put back at their input
- * positions until nothing crosses (the input, a voxel surface, has no crossing).
+ * A step that would flip a triangle is refused. Finally, with PreventSelfIntersections (default
+ * on), the vertices of triangles that cross any other triangle of the surface (of the same region
+ * or of another: two interfaces a voxel apart can be smoothed into each other) are put back at
+ * their input positions until nothing crosses (the input, a voxel surface, has no crossing), so
+ * TetGen accepts the result.
  *
  * Output: the same triangles and cell data, new point positions, point data "Displacement" (mm)
  * and "FeatureVertex" (0 surface, 1 on a feature curve, 2 fixed corner).

@@ -6,6 +6,8 @@
 // near junctions. See README, Known limits.
 #include "amImageReader.h"
 #include "amLabelSurface.h"
+#include "amSelfIntersection.h"
+#include "amSurfaceMesh.h"
 #include "amSurfaceSmoothing.h"
 #include "amTestUtilities.h"
 #include "amMetricRemeshing.h"
@@ -164,3 +166,28 @@ TEST(SelfIntersection, Frog)
   ls->Update();
   ExpectNone(ls->GetOutput(), "extracted");
 }
+
+TEST(SelfIntersection, FrogSmoothedAcrossInterfaces)
+{
+  // The frog's voxel-thin structures put two interfaces a voxel apart; smoothing moves them into
+  // each other unless the untangling looks at the whole surface, not region by region.
+  const std::string path = amTest::SharedData("vtk_frog_tissue_labels/frogtissue.mhd");
+  if (path.empty())
+    GTEST_SKIP() << "../shared/data/vtk_frog_tissue_labels is absent";
+  vtkNew<amImageReader> reader;
+  reader->SetFileName(path.c_str());
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputConnection(reader->GetOutputPort());
+  ls->SetComputeTopology(false);
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputConnection(ls->GetOutputPort(0));
+  sm->Update();
+  EXPECT_GT(sm->GetUntangledVertices(), 0);
+  vtkPolyData* out = sm->GetOutput();
+  amSurfaceMesh mesh;
+  std::string why;
+  ASSERT_TRUE(mesh.Build(out, why)) << why;
+  EXPECT_TRUE(amSelfIntersection::AllTriangles(mesh, mesh.Points).empty());
+  ExpectNone(out, "smoothed frog");
+}
+

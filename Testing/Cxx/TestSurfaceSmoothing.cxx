@@ -80,7 +80,7 @@ TEST(SurfaceSmoothing, RemovesTheStaircaseWithinTheBound)
   EXPECT_LT(meanErr, rawMean / 3);
   vtkDataArray* disp = sm->GetOutput()->GetPointData()->GetArray("Displacement");
   ASSERT_NE(disp, nullptr);
-  EXPECT_LE(disp->GetRange()[1], sm->GetUsedMaximumDisplacement() + 1e-9);
+  EXPECT_LE(disp->GetRange()[1], sm->GetUsedMaximumDisplacement() + 1e-5); // the points are float: one rounding
 
   // Junctions: the interface between 2 and 3 is the voxel-face plane x = -0.25 and its rim a
   // junction curve; they stay exactly in that plane (1-D smoothing along the curve, 2-D inside the interface).
