@@ -10,6 +10,7 @@
 #include "amSurfaceDistance.h"
 #include "amSurfaceSmoothing.h"
 #include "amThoraxPhantomSource.h"
+#include "../Cxx/amAnalyticDistance.h"
 
 #include "vtkCellArray.h"
 #include "vtkDiscreteFlyingEdges3D.h"
@@ -200,6 +201,18 @@ void Remesh(benchmark::State& state)
   state.counters["mean_mm"] = 0.5 * (d->GetMeanAToB() + d->GetMeanBToA());
   state.counters["angles_ge_20"] = static_cast<double>(good) / result->GetNumberOfCells();
   state.counters["metric_s"] = secondsMetric;
+  // Against the phantom's analytic interfaces (the bar: within one voxel, 1 mm).
+  const amTest::AnalyticDistance truth = amTest::DistanceToPhantom(result, 1.0);
+  state.counters["analytic_truth_to_surface_mm"] = truth.TruthToSurface;
+  state.counters["analytic_surface_mean_mm"] = truth.MeanSurfaceToTruth;
+  state.counters["analytic_surface_within_1mm"] = truth.FractionWithin(1.0);
+  if (!quadric)
+  {
+    const amTest::AnalyticDistance smoothTruth = amTest::DistanceToPhantom(smooth, 1.0);
+    state.counters["smoothed_truth_to_surface_mm"] = smoothTruth.TruthToSurface;
+    state.counters["smoothed_surface_mean_mm"] = smoothTruth.MeanSurfaceToTruth;
+    state.counters["smoothed_surface_within_1mm"] = smoothTruth.FractionWithin(1.0);
+  }
   state.counters["peak_MB"] = PeakMegabytes();
 }
 // 0 = amCurvatureMetric + amMetricRemeshing, 1 = vtkQuadricDecimation to the same count.
