@@ -1,7 +1,7 @@
 """Segmentation on the real contrast cardiac CT of ../shared/data (skipped when it is absent).
 
 The aorta pipeline (Examples/Pipelines/cardiac_aorta.xml) is compared with the provided
-TotalSegmentator mask. The issue's target is Dice >= 0.85; what the snake reaches today is 0.535,
+TotalSegmentator mask, and its tetrahedral mesh with the segmentation's volume. The issue's target is Dice >= 0.85; what the snake reaches today is 0.535,
 so this test guards that level (>= 0.5) until edge/vesselness terms raise it.
 """
 import os
@@ -40,6 +40,22 @@ class AortaOfRealCT(unittest.TestCase):
         dice = overlap.GetDice(1)
         print("aorta Dice against the TotalSegmentator mask: %.3f" % dice)
         self.assertGreaterEqual(dice, 0.5)
+
+        # ... and on to tetrahedra: the segmented vessel's volume, none inverted.
+        import numpy as np
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+        r = vtkXMLUnstructuredGridReader()
+        r.SetFileName(os.path.join(out, "aorta_tets.vtu"))
+        r.Update()
+        volume = vtk_to_numpy(r.GetOutput().GetCellData().GetArray("Volume"))
+        self.assertGreater(len(volume), 10000)
+        self.assertTrue(np.all(volume > 0))
+        seg.Update()
+        voxels = np.count_nonzero(vtk_to_numpy(seg.GetOutput().GetPointData().GetScalars()))
+        voxel_volume = voxels * np.prod(seg.GetOutput().GetSpacing())
+        print("aorta: %d tetrahedra, %.1f cm3 (voxels %.1f cm3)" % (len(volume), volume.sum() / 1e3, voxel_volume / 1e3))
+        self.assertLess(abs(volume.sum() - voxel_volume), 0.05 * voxel_volume)
 
 
 if __name__ == "__main__":
