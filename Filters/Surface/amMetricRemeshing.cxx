@@ -1110,7 +1110,9 @@ int amMetricRemeshing::RequestData(
   this->InsertedPoints = inserted;
   if (h > this->Tolerance)
     vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance "
-                                                              << this->Tolerance << " mm: refining further would make triangles cross (near junction curves).");
+                                                              << this->Tolerance
+                                                              << " mm: refining further would make triangles cross "
+                                                                 "(near junction curves or thin parts of the input).");
   this->UpdateProgress(0.95);
 
   // Output: live vertices and triangles, labels and orientation kept.
