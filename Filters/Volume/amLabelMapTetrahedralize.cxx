@@ -3,6 +3,7 @@
 #include "amInputCheck.h"
 #include "amProvenance.h"
 #include "amTetraGeometry.h"
+#include "amTetraMeshOptimizer.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -69,6 +70,8 @@ amLabelMapTetrahedralize::amLabelMapTetrahedralize()
   , Perturb(1)
   , Exude(1)
   , SliverBound(12.0)
+  , ImproveQuality(0)
+  , ImprovementPasses(4)
   , NumberOfTetrahedra(0)
 {
   this->SetNumberOfOutputPorts(2);
@@ -364,7 +367,24 @@ int amLabelMapTetrahedralize::RequestData(
   interfaces->GetCellData()->AddArray(labels);
   interfaces->GetCellData()->AddArray(adjacent);
 
-  this->NumberOfTetrahedra = cells->GetNumberOfCells();
+  std::ostringstream improvement;
+  if (this->ImproveQuality && this->ImprovementPasses > 0)
+  {
+    amTetraMeshOptimizer::Options options;
+    options.Passes = this->ImprovementPasses;
+    amTetraMeshOptimizer::Report report;
+    std::string why;
+    if (!amTetraMeshOptimizer::ImproveGrid(output, interfaces, options, report, why,
+          [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
+    {
+      vtkErrorMacro("Quality improvement: " << why);
+      return 0;
+    }
+    improvement << " improvement: worst Q " << report.WorstBefore << " -> " << report.WorstAfter << ", mean "
+                << report.MeanBefore << " -> " << report.MeanAfter;
+  }
+
+  this->NumberOfTetrahedra = output->GetNumberOfCells();
   std::ostringstream params;
   params << "FacetDistance=" << this->FacetDistance << " FacetSize=" << this->FacetSize
          << " FacetAngle=" << this->FacetAngle << " CellSize=" << this->CellSize
@@ -372,7 +392,9 @@ int amLabelMapTetrahedralize::RequestData(
          << " ProtectJunctions=" << this->ProtectJunctions << " EdgeSize=" << edgeSize
          << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
          << " Perturb=" << this->Perturb << " Exude=" << this->Exude
-         << " SliverBound=" << this->SliverBound << " tetrahedra=" << this->NumberOfTetrahedra;
+         << " SliverBound=" << this->SliverBound << " ImproveQuality=" << this->ImproveQuality
+         << " ImprovementPasses=" << this->ImprovementPasses << " tetrahedra=" << this->NumberOfTetrahedra
+         << improvement.str();
   for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)
     params << (k ? "," : " RegionCellSizes=") << this->RegionCellSizes[k] << "," << this->RegionCellSizes[k + 1];
   amProvenance::Record(output, input, "amLabelMapTetrahedralize", params.str());
@@ -395,5 +417,7 @@ void amLabelMapTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
      << indent << "EdgeSize: " << this->EdgeSize << "\n"
      << indent << "Odt: " << this->Odt << " Lloyd: " << this->Lloyd << " Perturb: " << this->Perturb
      << " Exude: " << this->Exude << "\n"
-     << indent << "SliverBound: " << this->SliverBound << "\n";
+     << indent << "SliverBound: " << this->SliverBound << "\n"
+     << indent << "ImproveQuality: " << this->ImproveQuality << " ImprovementPasses: " << this->ImprovementPasses
+     << "\n";
 }

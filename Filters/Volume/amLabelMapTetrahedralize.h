@@ -120,6 +120,19 @@ public:
   vtkGetMacro(SliverBound, double);
   ///@}
 
+  ///@{
+  /// After CGAL, improve the elements as amTetrahedralize does (default off, as CGAL's own
+  /// optimisers run): edge removals and 2-3 flips that make the worst element they touch better,
+  /// smoothing and local search on the vertices off the surface (amTetraMeshOptimizer). The
+  /// surface and interface triangles stay exactly as CGAL made them. ImprovementPasses: rounds
+  /// (default 4).
+  vtkSetMacro(ImproveQuality, vtkTypeBool);
+  vtkGetMacro(ImproveQuality, vtkTypeBool);
+  vtkBooleanMacro(ImproveQuality, vtkTypeBool);
+  vtkSetClampMacro(ImprovementPasses, int, 0, 100);
+  vtkGetMacro(ImprovementPasses, int);
+  ///@}
+
   /// Tetrahedra of the last run.
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
 
@@ -145,6 +158,8 @@ protected:
   vtkTypeBool Perturb;
   vtkTypeBool Exude;
   double SliverBound;
+  vtkTypeBool ImproveQuality;
+  int ImprovementPasses;
   vtkIdType NumberOfTetrahedra;
 
 private:

@@ -98,9 +98,29 @@ public:
   ///@}
 
   ///@{
-  /// Results of the last run.
+  /// Improve the elements after TetGen (default on): 2-3 flips and edge removals that make the
+  /// worst element they touch better, smoothing and local search on the vertices that are not on
+  /// the surface (amTetraMeshOptimizer). The surface and interface triangles stay exactly as
+  /// they are, and every tetrahedron keeps its region.
+  vtkSetMacro(ImproveQuality, vtkTypeBool);
+  vtkGetMacro(ImproveQuality, vtkTypeBool);
+  vtkBooleanMacro(ImproveQuality, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Rounds of flips and smoothing of the improvement (default 4; it stops earlier when a round
+  /// changes nothing).
+  vtkSetClampMacro(ImprovementPasses, int, 0, 100);
+  vtkGetMacro(ImprovementPasses, int);
+  ///@}
+
+  ///@{
+  /// Results of the last run; the quality figures are TetGen's, before the improvement (Q as in
+  /// amMeshQuality; 0 when no improvement ran).
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfSteinerPoints, vtkIdType);
+  vtkGetMacro(WorstQualityBeforeImprovement, double);
+  vtkGetMacro(MeanQualityBeforeImprovement, double);
   ///@}
 
 protected:
@@ -118,8 +138,12 @@ protected:
   double MaximumSize;
   char* SizeArrayName;
   int OptimizationLevel;
+  vtkTypeBool ImproveQuality;
+  int ImprovementPasses;
   vtkIdType NumberOfTetrahedra;
   vtkIdType NumberOfSteinerPoints;
+  double WorstQualityBeforeImprovement;
+  double MeanQualityBeforeImprovement;
 
 private:
   amTetrahedralize(const amTetrahedralize&) = delete;

@@ -2,6 +2,7 @@
 // bound the tetrahedra exactly, the world frame (origin, direction), every phantom organ, same
 // result twice, bad input.
 #include "amLabelMapTetrahedralize.h"
+#include "amMeshQuality.h"
 #include "amSurfaceTestUtilities.h"
 #include "amTestUtilities.h"
 #include "amThoraxPhantomSource.h"
@@ -95,9 +96,10 @@ struct Meshing
 };
 
 Meshing MeshIt(vtkImageData* labels, double facetSize, double cellSize, double distance,
-  const std::vector<double>& regionCellSizes = {})
+  const std::vector<double>& regionCellSizes = {}, bool improve = false)
 {
   vtkNew<amLabelMapTetrahedralize> m;
+  m->SetImproveQuality(improve);
   vtkNew<amTest::ErrorCatcher> errors;
   errors->Watch(m);
   errors->Watch(m->GetExecutive());
@@ -163,6 +165,67 @@ TEST(LabelMapTetrahedralize, NestedBallsVolumesAndInterfaces)
   for (vtkIdType t = 0; t < r.Interfaces->GetNumberOfCells(); ++t)
     pairs.insert({ static_cast<int>(labels->GetComponent(t, 0)), static_cast<int>(labels->GetComponent(t, 1)) });
   EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 1, 0 }, { 2, 1 } }));
+}
+
+TEST(LabelMapTetrahedralize, ImproveQualityKeepsTheInterfaces)
+{
+  vtkNew<vtkMatrix3x3> identity;
+  const double c[3] = { 0, 0, 0 };
+  auto labels = NestedBalls(c, identity);
+  const Meshing plain = MeshIt(labels, 4.0, 6.0, 0.5);
+  const Meshing improved = MeshIt(labels, 4.0, 6.0, 0.5, {}, true);
+  ASSERT_TRUE(plain.Ok) << plain.Errors;
+  ASSERT_TRUE(improved.Ok) << improved.Errors;
+  // CGAL's surface stays: the same triangles at the same places.
+  ASSERT_EQ(plain.Interfaces->GetNumberOfCells(), improved.Interfaces->GetNumberOfCells());
+  for (vtkIdType t = 0; t < plain.Interfaces->GetNumberOfCells(); ++t)
+    for (int k = 0; k < 3; ++k)
+    {
+      double p[3], q[3];
+      plain.Interfaces->GetPoint(plain.Interfaces->GetCell(t)->GetPointId(k), p);
+      improved.Interfaces->GetPoint(improved.Interfaces->GetCell(t)->GetPointId(k), q);
+      ASSERT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "triangle " << t;
+    }
+  // Each region is still filled exactly, and "Tetra" names a tetrahedron of the right region
+  // holding the triangle on each side.
+  int bad = 0;
+  double centroid[3];
+  const auto tets = TetVolumes(improved.Mesh, &bad, centroid, 2);
+  EXPECT_EQ(bad, 0);
+  const auto enclosed = EnclosedVolumes(improved.Interfaces);
+  for (int r : { 1, 2 })
+    EXPECT_NEAR(enclosed.at(r), tets.at(r), 1e-9 * tets.at(r)) << r;
+  vtkDataArray* lab = improved.Interfaces->GetCellData()->GetArray("Labels");
+  vtkDataArray* tetra = improved.Interfaces->GetCellData()->GetArray("Tetra");
+  vtkDataArray* region = improved.Mesh->GetCellData()->GetArray("Region");
+  ASSERT_TRUE(lab && tetra && region);
+  for (vtkIdType t = 0; t < improved.Interfaces->GetNumberOfCells(); ++t)
+    for (int side = 0; side < 2; ++side)
+    {
+      const int label = static_cast<int>(lab->GetComponent(t, side));
+      const vtkIdType cell = static_cast<vtkIdType>(tetra->GetComponent(t, side));
+      if (label == 0)
+      {
+        EXPECT_EQ(cell, -1);
+        continue;
+      }
+      ASSERT_GE(cell, 0) << "triangle " << t << " side " << side;
+      EXPECT_EQ(static_cast<int>(region->GetComponent(cell, 0)), label);
+      std::set<vtkIdType> corners;
+      for (int k = 0; k < 4; ++k)
+        corners.insert(improved.Mesh->GetCell(cell)->GetPointId(k));
+      for (int k = 0; k < 3; ++k)
+        EXPECT_TRUE(corners.count(improved.Interfaces->GetCell(t)->GetPointId(k)));
+    }
+  vtkNew<amMeshQuality> q0, q1;
+  q0->SetInputData(plain.Mesh);
+  q0->Update();
+  q1->SetInputData(improved.Mesh);
+  q1->Update();
+  std::printf("CGAL: mean Q %.3f, worst %.2f; improved: mean Q %.3f, worst %.2f\n", q0->GetMeanQuality(),
+    q0->GetMaximumQuality(), q1->GetMeanQuality(), q1->GetMaximumQuality());
+  EXPECT_LT(q1->GetMeanQuality(), q0->GetMeanQuality() - 0.1);
+  EXPECT_LE(q1->GetMaximumQuality(), q0->GetMaximumQuality());
 }
 
 namespace

@@ -1,0 +1,69 @@
+/**
+ * @class   amTetraMeshOptimizer
+ * @brief   Quality improvement of a tetrahedral mesh that keeps its surface (not wrapped).
+ *
+ * Improves the worst elements and the mean of the paper's quality Q = alpha h_max / rho by
+ * local operations, each accepted only when it makes the worst element it touches better:
+ * - topological: 2-3 face flips and edge removal (3-2 flip and its generalisation: the tetrahedra
+ *   around an edge replaced by the best triangulation of their ring, Klincsek's dynamic program
+ *   as in Shewchuk, "Two discrete optimization algorithms for the topological improvement of
+ *   tetrahedral meshes", 2002), for rings of up to MaxRing vertices;
+ * - geometric: smoothing of free vertices (candidate positions: the centroid of the star's
+ *   centroids, weighted by volume, and the neighbours' mean), kept when the star's worst element
+ *   is not worse and its mean Q better; then a local search that moves each vertex of a bad
+ *   element along the numerical gradient of its star's worst quality.
+ *
+ * The fixed faces (the surface and interface triangles) and fixed vertices (those on them) never
+ * change, so the boundary and every interface stay exactly as they were; an operation never
+ * crosses a fixed face, so every tetrahedron keeps its region. Deterministic: one thread, fixed
+ * order.
+ */
+#ifndef amTetraMeshOptimizer_h
+#define amTetraMeshOptimizer_h
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+class amTetraMeshOptimizer
+{
+public:
+  struct Options
+  {
+    int Passes = 4;                 // rounds of flips + smoothing
+    double FlipQuality = 1.6;       // elements with Q above this get flips
+    double SearchQuality = 2.5;     // the vertices of elements with Q above this get the local search
+    int MaxRing = 7;                // largest edge ring the edge removal triangulates
+  };
+  struct Report
+  {
+    double WorstBefore = 0, WorstAfter = 0, MeanBefore = 0, MeanAfter = 0;
+    long Flips23 = 0, EdgeRemovals = 0, Moves = 0;
+  };
+
+  /// points: 3 doubles per vertex (free vertices move); tets: 4 vertex ids per tetrahedron,
+  /// positively oriented (rewritten); regions: one label per tetrahedron (rewritten alike);
+  /// fixedFaces: triangles that must remain faces (the surface); the vertices of those faces and
+  /// of the mesh's boundary are fixed. progress(fraction) is called between passes.
+  static Report Optimize(std::vector<double>& points, std::vector<std::array<int, 4>>& tets,
+    std::vector<int>& regions, const std::vector<std::array<int, 3>>& fixedFaces, const Options& options,
+    const std::function<void(double)>& progress = nullptr);
+
+  /// The same on a mesh as amTetrahedralize and amLabelMapTetrahedralize make it: 'grid' holds
+  /// the tetrahedra with cell array "Region", 'surface' every boundary and interface triangle on
+  /// the same vtkPoints with cell array "Labels" (the normal pointing into the Labels[1] side).
+  /// Points move in place, the cells are replaced (cell data other than Region is dropped), and
+  /// the surface's "Tetra" array (the tetrahedron on each side, -1 for none) is recomputed.
+  /// False, with why, when the data is not of that form.
+  static bool ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* surface, const Options& options,
+    Report& report, std::string& why, const std::function<void(double)>& progress = nullptr);
+
+  /// 1/Q in (0, 1] for a positively oriented tetrahedron (1: regular), <= 0 when inverted or flat.
+  static double InverseQuality(const double* a, const double* b, const double* c, const double* d);
+};
+
+#endif
