@@ -864,6 +864,63 @@ public:
     return this->SplitEdge(t, k, Vec3(cl)) ? 1 : 0;
   }
 
+  /// Removes triangles with an angle under SmallAngle where an operation that keeps the other
+  /// guarantees allows it: the flip of a cap's longest edge, else the collapse of the cap's apex
+  /// (or of the needle's short edge) into a neighbour. Caps arise where the Hausdorff insertions
+  /// refine along a crease of the input (the cut end of a vessel), which flips cannot cross.
+  /// Returns the number of operations done.
+  /// Live triangles with an angle under 10 degrees, and the shortest live edge.
+  void AngleSummary(long long& small, double& shortest) const
+  {
+    small = 0;
+    shortest = std::numeric_limits<double>::infinity();
+    for (const Tri& t : this->T)
+      if (t.Alive)
+      {
+        const Vec3 &a = this->P[t.V[0]], &b = this->P[t.V[1]], &c = this->P[t.V[2]];
+        small += MinAngle(a, b, c) < 10.0 * M_PI / 180.0;
+        shortest = std::min({ shortest, (b - a).norm(), (c - b).norm(), (a - c).norm() });
+      }
+  }
+
+  int SmallAngleCleanup()
+  {
+    const double SmallAngle = 10.0 * M_PI / 180.0;
+    int done = 0;
+    for (size_t t = 0; t < this->T.size(); ++t)
+    {
+      if (!this->T[t].Alive)
+        continue;
+      const int* w = this->T[t].V;
+      double angle[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const Vec3 u = this->P[w[(k + 1) % 3]] - this->P[w[k]], v = this->P[w[(k + 2) % 3]] - this->P[w[k]];
+        angle[k] = std::acos(std::max(-1.0, std::min(1.0, u.dot(v) / (u.norm() * v.norm()))));
+      }
+      const int small = static_cast<int>(std::min_element(angle, angle + 3) - angle);
+      if (!(angle[small] < SmallAngle))
+        continue;
+      const int large = static_cast<int>(std::max_element(angle, angle + 3) - angle);
+      const int apex = w[large], a = w[(large + 1) % 3], b = w[(large + 2) % 3];
+      bool ok = false;
+      if (angle[large] > 0.5 * M_PI)
+        // A cap: its longest edge (a, b) faces the obtuse apex.
+        ok = this->Flip(std::min(a, b), std::max(a, b)) ||
+          this->Collapse(apex, (this->P[apex] - this->P[a]).norm() < (this->P[apex] - this->P[b]).norm() ? a : b) ||
+          this->Collapse(apex, (this->P[apex] - this->P[a]).norm() < (this->P[apex] - this->P[b]).norm() ? b : a);
+      else
+      {
+        // A needle: its short edge is opposite the small angle.
+        const int p = w[(small + 1) % 3], q = w[(small + 2) % 3];
+        ok = this->Kind[p] <= this->Kind[q] ? (this->Collapse(p, q) || this->Collapse(q, p))
+                                            : (this->Collapse(q, p) || this->Collapse(p, q));
+      }
+      done += ok;
+    }
+    return done;
+  }
+
   /// Flip the edges opposite vertex v where that improves the angles.
   void FlipAround(int v)
   {
@@ -1075,35 +1132,74 @@ int amMetricRemeshing::RequestData(
   }
   r.FlipPass();
   // The guarantee: measure, insert where the bound is exceeded, measure again.
-  std::vector<std::pair<int, Vec3>> insert;
-  std::vector<int> edgeOf;
   double upper = 0;
-  double h = r.Measure(upper, insert, edgeOf);
   vtkIdType inserted = 0;
-  r.RebuildBins();
-  for (int round = 0; round < 30 && !insert.empty(); ++round)
-  {
-    vtkIdType done = 0;
-    std::vector<int> blocked;
-    for (size_t i = 0; i < insert.size(); ++i)
+  auto enforce = [&r, &upper, &inserted]() {
+    std::vector<std::pair<int, Vec3>> insert;
+    std::vector<int> edgeOf;
+    double h = r.Measure(upper, insert, edgeOf);
+    r.RebuildBins();
+    for (int round = 0; round < 30 && !insert.empty(); ++round)
     {
-      const int t = insert[i].first;
-      const bool ok = edgeOf[i] >= 0 ? r.SplitEdge(t, edgeOf[i], insert[i].second) : r.Insert(t, insert[i].second);
-      done += ok;
-      if (!ok)
+      vtkIdType done = 0;
+      std::vector<int> blocked;
+      for (size_t i = 0; i < insert.size(); ++i)
       {
-        blocked.push_back(insert[i].first);
-        blocked.push_back(r.LastHit);
+        const int t = insert[i].first;
+        const bool ok = edgeOf[i] >= 0 ? r.SplitEdge(t, edgeOf[i], insert[i].second) : r.Insert(t, insert[i].second);
+        done += ok;
+        if (!ok)
+        {
+          blocked.push_back(insert[i].first);
+          blocked.push_back(r.LastHit);
+        }
       }
+      // Refused where a triangle is in the way (or the new ones would fold): refine both,
+      // towards the input where nothing crosses.
+      for (int t : blocked)
+        done += r.Refine(t);
+      inserted += done;
+      h = r.Measure(upper, insert, edgeOf);
+      if (done == 0)
+        break;
     }
-    // Refused where a triangle is in the way (or the new ones would fold): refine both, towards
-    // the input where nothing crosses.
-    for (int t : blocked)
-      done += r.Refine(t);
-    inserted += done;
-    h = r.Measure(upper, insert, edgeOf);
-    if (done == 0)
+    return h;
+  };
+  double h = enforce();
+  this->UpdateProgress(0.85);
+  // Triangles with small angles that the insertions left (no tetrahedron on them can be good):
+  // removed where a flip or collapse allows it, then the bound enforced again. Kept only if the
+  // distance ends no worse than before (or within the tolerance), fewer triangles have small
+  // angles and no edge got much shorter (where the bound cannot be met, more insertion rounds
+  // would only refine towards a point).
+  for (int attempt = 0; attempt < 3; ++attempt)
+  {
+    Remesher before = r;
+    const double hBefore = h, upperBefore = upper;
+    const vtkIdType insertedBefore = inserted;
+    long long smallBefore, smallAfter;
+    double shortestBefore, shortestAfter;
+    r.AngleSummary(smallBefore, shortestBefore);
+    int cleaned = 0;
+    for (int round = 0; round < 3; ++round)
+    {
+      const int n = r.SmallAngleCleanup();
+      cleaned += n;
+      if (n == 0)
+        break;
+    }
+    if (cleaned == 0)
       break;
+    h = enforce();
+    r.AngleSummary(smallAfter, shortestAfter);
+    if (h > std::max(hBefore, this->Tolerance) || smallAfter >= smallBefore || shortestAfter < 0.5 * shortestBefore)
+    {
+      r = std::move(before);
+      h = hBefore;
+      upper = upperBefore;
+      inserted = insertedBefore;
+      break;
+    }
   }
   this->Hausdorff = h;
   this->HausdorffUpperBound = upper;

@@ -71,7 +71,7 @@ public:
   const double* X(int v) const { return &this->P[3 * static_cast<size_t>(v)]; }
   double Quality(int a, int b, int c, int d) const
   {
-    return amTetraMeshOptimizer::InverseQuality(this->X(a), this->X(b), this->X(c), this->X(d));
+    return amTetraMeshOptimizer::Objective(this->X(a), this->X(b), this->X(c), this->X(d));
   }
   int Add(const Tet& t, int region)
   {
@@ -274,7 +274,7 @@ void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& s
     const double* p[4];
     for (int k = 0; k < 4; ++k)
       p[k] = m.T[t][k] == v ? x : m.X(m.T[t][k]);
-    const double q = amTetraMeshOptimizer::InverseQuality(p[0], p[1], p[2], p[3]);
+    const double q = amTetraMeshOptimizer::Objective(p[0], p[1], p[2], p[3]);
     worst = std::min(worst, q);
     if (q <= 0)
     {
@@ -394,7 +394,7 @@ bool Climb(Mesh& m, int v)
         y[d] = x[d] + (s ? h : -h);
         for (int k = 0; k < 4; ++k)
           p[k] = m.T[active][k] == v ? y : m.X(m.T[active][k]);
-        f[s] = amTetraMeshOptimizer::InverseQuality(p[0], p[1], p[2], p[3]);
+        f[s] = amTetraMeshOptimizer::Objective(p[0], p[1], p[2], p[3]);
       }
       g[d] = (f[1] - f[0]) / (2 * h);
     }
@@ -427,11 +427,10 @@ double amTetraMeshOptimizer::InverseQuality(const double* a, const double* b, co
 {
   const double volume = amTetraGeometry::SignedVolume(a, b, c, d);
   if (!(volume > 0))
-    return volume > 0 ? 0.0 : -1.0;
-  const Vec ab = amTetraGeometry::Sub(b, a), ac = amTetraGeometry::Sub(c, a), ad = amTetraGeometry::Sub(d, a);
-  const Vec bc = amTetraGeometry::Sub(c, b), bd = amTetraGeometry::Sub(d, b);
-  const Vec cd = amTetraGeometry::Sub(d, c);
+    return -1.0;
   using G = amTetraGeometry;
+  const Vec ab = G::Sub(b, a), ac = G::Sub(c, a), ad = G::Sub(d, a), bc = G::Sub(c, b), bd = G::Sub(d, b),
+            cd = G::Sub(d, c);
   const double area = 0.5 *
     (G::Norm(G::Cross(ab, ac)) + G::Norm(G::Cross(ab, ad)) + G::Norm(G::Cross(ac, ad)) +
       G::Norm(G::Cross(bc, bd)));
@@ -440,6 +439,30 @@ double amTetraMeshOptimizer::InverseQuality(const double* a, const double* b, co
   const double inradius = 3.0 * volume / area;
   // 1/Q = rho / (alpha h_max) with alpha = sqrt(6)/12.
   return 2.0 * std::sqrt(6.0) * inradius / std::sqrt(longest2);
+}
+
+double amTetraMeshOptimizer::Objective(const double* a, const double* b, const double* c, const double* d)
+{
+  const double volume = amTetraGeometry::SignedVolume(a, b, c, d);
+  if (!(volume > 0))
+    return -1.0;
+  using G = amTetraGeometry;
+  const Vec ab = G::Sub(b, a), ac = G::Sub(c, a), ad = G::Sub(d, a), bc = G::Sub(c, b), bd = G::Sub(d, b),
+            cd = G::Sub(d, c);
+  // Twice the area of the face opposite each vertex.
+  const double fa = G::Norm(G::Cross(bc, bd)), fb = G::Norm(G::Cross(ac, ad)), fc = G::Norm(G::Cross(ab, ad)),
+               fd = G::Norm(G::Cross(ab, ac));
+  const double lab = G::Norm(ab), lac = G::Norm(ac), lad = G::Norm(ad), lbc = G::Norm(bc), lbd = G::Norm(bd),
+               lcd = G::Norm(cd);
+  const double longest = std::max({ lab, lac, lad, lbc, lbd, lcd });
+  const double inradius = 6.0 * volume / (fa + fb + fc + fd);
+  const double inverseQ = 2.0 * std::sqrt(6.0) * inradius / longest;
+  // sin of the dihedral angle at edge ij = 3 V l_ij / (2 A_k A_l) (faces k, l opposite the
+  // other two vertices); the regular tetrahedron's is sqrt(8)/3.
+  const double minSine = 6.0 * volume *
+    std::min({ lab / (fc * fd), lac / (fb * fd), lad / (fb * fc), lbc / (fa * fd), lbd / (fa * fc),
+      lcd / (fa * fb) });
+  return std::min(inverseQ, minSine * 3.0 / std::sqrt(8.0));
 }
 
 amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>& points,
@@ -463,7 +486,9 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     for (size_t t = 0; t < m.T.size(); ++t)
       if (m.Alive[t])
       {
-        const double q = m.Q[t] > 0 ? 1.0 / m.Q[t] : std::numeric_limits<double>::infinity();
+        const double inverse = amTetraMeshOptimizer::InverseQuality(
+          m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]));
+        const double q = inverse > 0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
         worst = std::max(worst, q);
         sum += q;
         ++n;

@@ -2,8 +2,9 @@
  * @class   amTetraMeshOptimizer
  * @brief   Quality improvement of a tetrahedral mesh that keeps its surface (not wrapped).
  *
- * Improves the worst elements and the mean of the paper's quality Q = alpha h_max / rho by
- * local operations, each accepted only when it makes the worst element it touches better:
+ * Improves the worst elements and the mean of the paper's quality Q = alpha h_max / rho, and the
+ * dihedral angles, by local operations, each accepted only when it makes the worst element it
+ * touches better (measured by Objective: 1/Q, or the dihedral sines where those are worse):
  * - topological: 2-3 face flips and edge removal (3-2 flip and its generalisation: the tetrahedra
  *   around an edge replaced by the best triangulation of their ring, Klincsek's dynamic program
  *   as in Shewchuk, "Two discrete optimization algorithms for the topological improvement of
@@ -62,8 +63,12 @@ public:
   static bool ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* surface, const Options& options,
     Report& report, std::string& why, const std::function<void(double)>& progress = nullptr);
 
-  /// 1/Q in (0, 1] for a positively oriented tetrahedron (1: regular), <= 0 when inverted or flat.
+  /// 1/Q in (0, 1] for a positively oriented tetrahedron (1: regular), -1 when inverted or flat.
   static double InverseQuality(const double* a, const double* b, const double* c, const double* d);
+  /// What the operations maximise, in (0, 1] (1: regular), -1 when inverted or flat: the smaller
+  /// of 1/Q and the smallest sine of the dihedral angles over that of the regular tetrahedron, so
+  /// that no operation trades a dihedral angle for Q (slivers have both small).
+  static double Objective(const double* a, const double* b, const double* c, const double* d);
 };
 
 #endif

@@ -73,6 +73,7 @@ void Tetrahedralize(benchmark::State& state)
   {
     vtkNew<amTetrahedralize> t;
     t->SetInputData(surface);
+    t->SetImproveQuality(state.range(2) != 0);
     t->Update();
     tets = t->GetNumberOfTetrahedra();
     state.PauseTiming();
@@ -107,7 +108,8 @@ void QualityCounters(benchmark::State& state, vtkAlgorithmOutput* mesh)
   state.counters["surface_triangles"] = table->GetValueByName(all, "nt").ToDouble();
 }
 
-/// CGAL Mesh_3 from the phantom label map: spacing (tenths of mm); sizes scale with it.
+/// CGAL Mesh_3 from the phantom label map: spacing (tenths of mm), improvement (0/1); sizes
+/// scale with the spacing.
 void LabelMapCGAL(benchmark::State& state)
 {
   const double h = state.range(0) / 10.0;
@@ -119,6 +121,7 @@ void LabelMapCGAL(benchmark::State& state)
   m->SetFacetSize(2 * h);
   m->SetFacetDistance(0.25 * h);
   m->SetCellSize(3 * h);
+  m->SetImproveQuality(state.range(1) != 0);
   for (auto _ : state)
   {
     m->Modified();
@@ -146,8 +149,21 @@ void Quality(benchmark::State& state)
 }
 }
 
-// Phantom at 2 mm (tolerance 0.5 mm) and at 1 mm (tolerance 0.2 mm, the main job's surface).
-BENCHMARK(Tetrahedralize)->Args({ 20, 50 })->Args({ 10, 20 })->Unit(benchmark::kSecond)->Iterations(1);
-BENCHMARK(LabelMapCGAL)->Arg(40)->Arg(20)->Unit(benchmark::kSecond)->Iterations(1);
+// Phantom at 2 mm (tolerance 0.5 mm) and at 1 mm (tolerance 0.2 mm), TetGen alone and with the
+// quality improvement (third argument).
+BENCHMARK(Tetrahedralize)
+  ->Args({ 20, 50, 0 })
+  ->Args({ 20, 50, 1 })
+  ->Args({ 10, 20, 0 })
+  ->Args({ 10, 20, 1 })
+  ->Unit(benchmark::kSecond)
+  ->Iterations(1);
+BENCHMARK(LabelMapCGAL)
+  ->Args({ 40, 0 })
+  ->Args({ 40, 1 })
+  ->Args({ 20, 0 })
+  ->Args({ 20, 1 })
+  ->Unit(benchmark::kSecond)
+  ->Iterations(1);
 BENCHMARK(Quality)->Args({ 20, 50 })->Args({ 10, 20 })->Unit(benchmark::kSecond)->Iterations(1);
 BENCHMARK_MAIN();

@@ -1,4 +1,5 @@
 // amTetrahedralize: regions present and exact, surface kept, interfaces conforming, bad input.
+#include "amCurvatureMetric.h"
 #include "amLabelSurface.h"
 #include "amMeshQuality.h"
 #include "amMetricRemeshing.h"
@@ -11,6 +12,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkExecutive.h"
+#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -378,8 +380,8 @@ TEST(Tetrahedralize, PhantomThroughTheChain)
             << before.MinimumDihedral << "; improved: mean Q " << after.Mean << ", worst " << after.Worst
             << " (off the surface " << after.WorstInside << "), " << after.Above10
             << " above 10, smallest dihedral " << after.MinimumDihedral << "\n";
-  // Measured: mean 1.585 -> 1.395, 151 -> 106 elements above Q = 10, worst off the surface
-  // 155 -> 106. The worst elements stand on surface triangles with angles of a few degrees or
+  // Measured: mean 1.585 -> 1.396, 151 -> 104 elements above Q = 10, worst off the surface
+  // 155 -> 16. The worst elements stand on surface triangles with angles of a few degrees or
   // span two surface sheets a voxel apart (all four vertices fixed): no flip or move inside can
   // mend those (see README), so the worst Q stays.
   EXPECT_LT(after.Mean, 1.42);
@@ -387,6 +389,52 @@ TEST(Tetrahedralize, PhantomThroughTheChain)
   EXPECT_LE(after.Worst, before.Worst);
   EXPECT_LT(after.Above10, 0.8 * before.Above10);
   EXPECT_LT(after.WorstInside, 0.7 * before.WorstInside);
+}
+
+TEST(Tetrahedralize, MainJobOrgansQuality)
+{
+  // The organs the main job segments (lungs, blood pools, aorta), here their exact labels, at the
+  // paper's 1 mm through the main job's chain: surface, smoothing, curvature metric and remeshing
+  // at 0.2 mm, tetrahedra. The targets: worst Q <= 10, mean Q <= 1.4, smallest dihedral
+  // >= 10 degrees; the main job itself (segmented organs) meets all three (README).
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(1, 1, 1);
+  src->Update();
+  vtkNew<vtkImageData> organs;
+  organs->DeepCopy(src->GetOutputDataObject(1));
+  vtkDataArray* labels = organs->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < labels->GetNumberOfTuples(); ++i)
+  {
+    const int l = static_cast<int>(labels->GetComponent(i, 0));
+    if (l != 3 && l != 4 && l != 6 && l != 7 && l != 8)
+      labels->SetComponent(i, 0, 0);
+  }
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputData(organs);
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputConnection(ls->GetOutputPort(0));
+  vtkNew<amCurvatureMetric> metric;
+  metric->SetInputConnection(sm->GetOutputPort());
+  metric->SetTolerance(0.2);
+  metric->SetMinimumSize(1.0);
+  metric->SetAnisotropic(0);
+  vtkNew<amMetricRemeshing> rm;
+  rm->SetInputConnection(metric->GetOutputPort());
+  rm->SetTolerance(0.2);
+  rm->Update();
+  vtkPolyData* surface = rm->GetOutput();
+  const Meshed m = MeshIt(surface);
+  ExpectConformingMesh(surface, m);
+  const QualityFigures f = Quality(m);
+  std::cout << m.Mesh->GetNumberOfCells() << " tetrahedra: mean Q " << f.Mean << ", worst " << f.Worst
+            << ", smallest dihedral " << f.MinimumDihedral << "\n";
+  // Measured: 273 k tetrahedra, mean 1.387, worst 5.64, smallest dihedral 9.6 (TetGen alone:
+  // 1.587, 10.04). The smallest dihedral sits on the one remeshed triangle left with an angle
+  // under 8 degrees, a cap on the crease where the aorta is cut by the field of view.
+  EXPECT_LE(f.Mean, 1.4);
+  EXPECT_LE(f.Worst, 10.0);
+  EXPECT_GE(f.MinimumDihedral, 9.0);
+  EXPECT_LE(rm->GetHausdorff(), 0.2);
 }
 
 TEST(Tetrahedralize, OpenSurfaceNamesTheTriangles)
