@@ -8,6 +8,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
@@ -72,6 +73,14 @@ public:
   double Quality(int a, int b, int c, int d) const
   {
     return amTetraMeshOptimizer::Objective(this->X(a), this->X(b), this->X(c), this->X(d));
+  }
+  int AddPoint(const double* x)
+  {
+    this->P.insert(this->P.end(), x, x + 3);
+    this->Inc.emplace_back();
+    this->FixedVertex.push_back(0);
+    this->Dirty.push_back(1);
+    return static_cast<int>(this->Inc.size()) - 1;
   }
   int Add(const Tet& t, int region)
   {
@@ -421,6 +430,49 @@ bool Climb(Mesh& m, int v)
   return moved;
 }
 
+
+/// Splits the free edge (u, v) at its midpoint, then moves the new vertex where its star is best:
+/// the one remedy for a sliver whose vertices all lie on the surface (no flip helps there).
+/// Undone unless every element around the new vertex reaches 'goal' (a split that only spreads a
+/// surface-bound sliver over several bad elements is worse than the sliver).
+bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::vector<int>& ring)
+{
+  if (m.FixedEdges.count(EdgeKey(u, v)) || !m.Ring(u, v, tets, ring))
+    return false;
+  double old = std::numeric_limits<double>::infinity();
+  for (int t : tets)
+    old = std::min(old, m.Q[t]);
+  const double mid[3] = { 0.5 * (m.X(u)[0] + m.X(v)[0]), 0.5 * (m.X(u)[1] + m.X(v)[1]),
+    0.5 * (m.X(u)[2] + m.X(v)[2]) };
+  const int w = m.AddPoint(mid);
+  const int region = m.R[tets[0]];
+  std::vector<Tet> before;
+  for (int t : tets)
+  {
+    before.push_back(m.T[t]);
+    m.Kill(t);
+  }
+  const int n = static_cast<int>(ring.size());
+  for (int i = 0; i < n; ++i)
+  {
+    m.Add({ u, w, ring[i], ring[(i + 1) % n] }, region);
+    m.Add({ w, v, ring[i], ring[(i + 1) % n] }, region);
+  }
+  Climb(m, w);
+  Smooth(m, w);
+  double now = std::numeric_limits<double>::infinity();
+  for (int t : m.Inc[w])
+    now = std::min(now, m.Q[t]);
+  if (now > old + 1e-12 && now >= goal)
+    return true;
+  const std::vector<int> made = m.Inc[w];
+  for (int t : made)
+    m.Kill(t);
+  for (const Tet& t : before)
+    m.Add(t, region);
+  m.FixedVertex[w] = 1; // unused from now on
+  return false;
+}
 }
 
 double amTetraMeshOptimizer::InverseQuality(const double* a, const double* b, const double* c, const double* d)
@@ -472,10 +524,9 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
 {
   Report report;
   Mesh m(points);
-  const size_t nv = points.size() / 3;
-  m.Inc.resize(nv);
-  m.FixedVertex.assign(nv, 0);
-  m.Dirty.assign(nv, 1);
+  m.Inc.resize(points.size() / 3);
+  m.FixedVertex.assign(points.size() / 3, 0);
+  m.Dirty.assign(points.size() / 3, 1);
   m.T.reserve(tets.size() * 2);
   for (size_t t = 0; t < tets.size(); ++t)
     m.Add(tets[t], regions[t]);
@@ -517,7 +568,8 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
       m.FixedEdges.insert(EdgeKey(f[k], f[(k + 1) % 3]));
     }
 
-  const double bad = 1.0 / options.FlipQuality, poor = 1.0 / options.SearchQuality;
+  const double bad = 1.0 / options.FlipQuality, poor = 1.0 / options.SearchQuality,
+               split = 1.0 / options.SplitQuality;
   const int maxRing = std::min(options.MaxRing, 15);
   std::vector<int> ringTets, ring;
   for (int pass = 0; pass < options.Passes; ++pass)
@@ -547,9 +599,30 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
         ++changes;
         continue;
       }
+      // The last resort for the worst elements: split a free edge (the longest first).
+      if (m.Q[t] < split)
+      {
+        std::array<std::pair<double, int>, 6> order;
+        for (int e = 0; e < 6; ++e)
+        {
+          const Vec d = amTetraGeometry::Sub(m.X(m.T[t][edges[e][0]]), m.X(m.T[t][edges[e][1]]));
+          order[e] = { -amTetraGeometry::Dot(d, d), e };
+        }
+        std::sort(order.begin(), order.end());
+        const Tet x = m.T[t];
+        for (int k = 0; k < 6 && !done; ++k)
+          done = SplitEdge(m, x[edges[order[k].second][0]], x[edges[order[k].second][1]], split, ringTets, ring);
+        if (done)
+        {
+          ++report.EdgeSplits;
+          ++changes;
+          continue;
+        }
+      }
       m.Tried[t] = 1;
     }
     // Geometry: smoothing of every free vertex, then a local search around the bad elements.
+    const size_t nv = m.Inc.size();
     for (size_t v = 0; v < nv; ++v)
       if (!m.FixedVertex[v] && m.Dirty[v] && (m.Dirty[v] = 0, Smooth(m, static_cast<int>(v))))
       {
@@ -635,9 +708,19 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
   }
   report = Optimize(points, tets, regions, fixed, options, progress);
 
-  // Back into the grid: moved points, new cells, their regions.
+  // Back into the grid: moved and new points (-1 in every point array: they lie inside, on no
+  // surface), new cells, their regions.
   for (vtkIdType v = 0; v < np; ++v)
     gridPoints->SetPoint(v, &points[3 * v]);
+  const vtkIdType nAll = static_cast<vtkIdType>(points.size() / 3);
+  for (vtkIdType v = np; v < nAll; ++v)
+    gridPoints->InsertNextPoint(&points[3 * v]);
+  vtkPointData* pd = grid->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+    if (vtkDataArray* array = pd->GetArray(a))
+      for (vtkIdType v = np; v < nAll; ++v)
+        for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+          array->InsertComponent(v, c, -1.0);
   gridPoints->Modified();
   const vtkIdType nt = static_cast<vtkIdType>(tets.size());
   vtkNew<vtkIdTypeArray> offsets, connectivity;

@@ -8,7 +8,9 @@
  * - topological: 2-3 face flips and edge removal (3-2 flip and its generalisation: the tetrahedra
  *   around an edge replaced by the best triangulation of their ring, Klincsek's dynamic program
  *   as in Shewchuk, "Two discrete optimization algorithms for the topological improvement of
- *   tetrahedral meshes", 2002), for rings of up to MaxRing vertices;
+ *   tetrahedral meshes", 2002), for rings of up to MaxRing vertices; for the worst elements
+ *   (Q above SplitQuality) that no flip mends, such as a sliver whose four vertices lie on the
+ *   surface, the split of a free edge whose new vertex then moves to the best place found;
  * - geometric: smoothing of free vertices (candidate positions: the centroid of the star's
  *   centroids, weighted by volume, and the neighbours' mean), kept when the star's worst element
  *   is not worse and its mean Q better; then a local search that moves each vertex of a bad
@@ -39,14 +41,15 @@ public:
     double FlipQuality = 1.6;       // elements with Q above this get flips
     double SearchQuality = 2.5;     // the vertices of elements with Q above this get the local search
     int MaxRing = 7;                // largest edge ring the edge removal triangulates
+    double SplitQuality = 5;        // elements with Q above this that no flip mends get an edge split
   };
   struct Report
   {
     double WorstBefore = 0, WorstAfter = 0, MeanBefore = 0, MeanAfter = 0;
-    long Flips23 = 0, EdgeRemovals = 0, Moves = 0;
+    long Flips23 = 0, EdgeRemovals = 0, EdgeSplits = 0, Moves = 0;
   };
 
-  /// points: 3 doubles per vertex (free vertices move); tets: 4 vertex ids per tetrahedron,
+  /// points: 3 doubles per vertex (free vertices move, split vertices are appended); tets: 4 vertex ids per tetrahedron,
   /// positively oriented (rewritten); regions: one label per tetrahedron (rewritten alike);
   /// fixedFaces: triangles that must remain faces (the surface); the vertices of those faces and
   /// of the mesh's boundary are fixed. progress(fraction) is called between passes.
@@ -57,7 +60,8 @@ public:
   /// The same on a mesh as amTetrahedralize and amLabelMapTetrahedralize make it: 'grid' holds
   /// the tetrahedra with cell array "Region", 'surface' every boundary and interface triangle on
   /// the same vtkPoints with cell array "Labels" (the normal pointing into the Labels[1] side).
-  /// Points move in place, the cells are replaced (cell data other than Region is dropped), and
+  /// Points move in place (new ones from edge splits are appended, with -1 in every point-data
+  /// array), the cells are replaced (cell data other than Region is dropped), and
   /// the surface's "Tetra" array (the tetrahedron on each side, -1 for none) is recomputed.
   /// False, with why, when the data is not of that form.
   static bool ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* surface, const Options& options,

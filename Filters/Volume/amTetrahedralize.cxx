@@ -754,11 +754,12 @@ int amTetrahedralize::RequestData(
     this->MeanQualityBeforeImprovement = report.MeanBefore;
     improvement << " improvement: worst Q " << report.WorstBefore << " -> " << report.WorstAfter << ", mean "
                 << report.MeanBefore << " -> " << report.MeanAfter << " (" << report.EdgeRemovals
-                << " edge removals, " << report.Flips23 << " 2-3 flips, " << report.Moves << " vertex moves)";
+                << " edge removals, " << report.Flips23 << " 2-3 flips, " << report.EdgeSplits << " edge splits, "
+                << report.Moves << " vertex moves)";
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
-  this->NumberOfSteinerPoints = nPoints - np;
+  this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation
          << " MaximumSize=" << this->MaximumSize << " ImproveQuality=" << this->ImproveQuality
