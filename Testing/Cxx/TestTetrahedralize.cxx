@@ -265,6 +265,22 @@ TEST(Tetrahedralize, Deterministic)
 
 namespace
 {
+/// The output's surface triangles, each as its sorted point ids.
+std::set<std::array<vtkIdType, 3>> SurfaceFaces(const Meshed& m)
+{
+  std::set<std::array<vtkIdType, 3>> surface;
+  for (vtkIdType s = 0; s < m.Interfaces->GetNumberOfCells(); ++s)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    m.Interfaces->GetCellPoints(s, n, ids);
+    std::array<vtkIdType, 3> f = { ids[0], ids[1], ids[2] };
+    std::sort(f.begin(), f.end());
+    surface.insert(f);
+  }
+  return surface;
+}
+
 /// A valid tetrahedralisation: every face inside shared by exactly two tetrahedra of one region,
 /// every other face an input (surface) triangle. Returns the number of faces that break this.
 long long BadFaces(const Meshed& m)
@@ -283,16 +299,7 @@ long long BadFaces(const Meshed& m)
       faces[f].push_back(static_cast<int>(region->GetComponent(c, 0)));
     }
   }
-  std::set<std::array<vtkIdType, 3>> surface;
-  for (vtkIdType s = 0; s < m.Interfaces->GetNumberOfCells(); ++s)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    m.Interfaces->GetCellPoints(s, n, ids);
-    std::array<vtkIdType, 3> f = { ids[0], ids[1], ids[2] };
-    std::sort(f.begin(), f.end());
-    surface.insert(f);
-  }
+  const auto surface = SurfaceFaces(m);
   long long bad = 0;
   for (const auto& kv : faces)
   {
@@ -320,16 +327,7 @@ QualityFigures Quality(const Meshed& m)
   f.Mean = q->GetMeanQuality();
   f.Worst = q->GetMaximumQuality();
   f.MinimumDihedral = q->GetMinimumDihedralAngle();
-  std::set<std::array<vtkIdType, 3>> surface;
-  for (vtkIdType s = 0; s < m.Interfaces->GetNumberOfCells(); ++s)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    m.Interfaces->GetCellPoints(s, n, ids);
-    std::array<vtkIdType, 3> t = { ids[0], ids[1], ids[2] };
-    std::sort(t.begin(), t.end());
-    surface.insert(t);
-  }
+  const auto surface = SurfaceFaces(m);
   vtkDataArray* quality = q->GetOutput()->GetCellData()->GetArray("Quality");
   for (vtkIdType c = 0; c < m.Mesh->GetNumberOfCells(); ++c)
   {
