@@ -51,6 +51,9 @@ struct Tri
 /// the triangle instead (longest-edge split), which makes room for the next attempt.
 const double MinimumNewAngle = 2.0 * M_PI / 180.0;
 
+/// Triangles with an angle under this are removed after the insertions where the checks allow.
+const double SmallAngle = 10.0 * M_PI / 180.0;
+
 double MinAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 p[3] = { a, b, c };
@@ -864,12 +867,7 @@ public:
     return this->SplitEdge(t, k, Vec3(cl)) ? 1 : 0;
   }
 
-  /// Removes triangles with an angle under SmallAngle where an operation that keeps the other
-  /// guarantees allows it: the flip of a cap's longest edge, else the collapse of the cap's apex
-  /// (or of the needle's short edge) into a neighbour. Caps arise where the Hausdorff insertions
-  /// refine along a crease of the input (the cut end of a vessel), which flips cannot cross.
-  /// Returns the number of operations done.
-  /// Live triangles with an angle under 10 degrees, and the shortest live edge.
+  /// Live triangles with an angle under SmallAngle, and the shortest live edge.
   void AngleSummary(long long& small, double& shortest) const
   {
     small = 0;
@@ -878,14 +876,18 @@ public:
       if (t.Alive)
       {
         const Vec3 &a = this->P[t.V[0]], &b = this->P[t.V[1]], &c = this->P[t.V[2]];
-        small += MinAngle(a, b, c) < 10.0 * M_PI / 180.0;
+        small += MinAngle(a, b, c) < SmallAngle;
         shortest = std::min({ shortest, (b - a).norm(), (c - b).norm(), (a - c).norm() });
       }
   }
 
+  /// Removes triangles with an angle under SmallAngle where an operation that keeps the other
+  /// guarantees allows it: the flip of a cap's longest edge, else the collapse of the cap's apex
+  /// (or of the needle's short edge) into a neighbour. Caps arise where the Hausdorff insertions
+  /// refine along a crease of the input (the cut end of a vessel), which flips cannot cross.
+  /// Returns the number of operations done.
   int SmallAngleCleanup()
   {
-    const double SmallAngle = 10.0 * M_PI / 180.0;
     int done = 0;
     for (size_t t = 0; t < this->T.size(); ++t)
     {
@@ -905,10 +907,12 @@ public:
       const int apex = w[large], a = w[(large + 1) % 3], b = w[(large + 2) % 3];
       bool ok = false;
       if (angle[large] > 0.5 * M_PI)
-        // A cap: its longest edge (a, b) faces the obtuse apex.
-        ok = this->Flip(std::min(a, b), std::max(a, b)) ||
-          this->Collapse(apex, (this->P[apex] - this->P[a]).norm() < (this->P[apex] - this->P[b]).norm() ? a : b) ||
-          this->Collapse(apex, (this->P[apex] - this->P[a]).norm() < (this->P[apex] - this->P[b]).norm() ? b : a);
+      {
+        // A cap: its longest edge (a, b) faces the obtuse apex, which goes to the nearer end.
+        const bool aNearer = (this->P[apex] - this->P[a]).norm() < (this->P[apex] - this->P[b]).norm();
+        ok = this->Flip(std::min(a, b), std::max(a, b)) || this->Collapse(apex, aNearer ? a : b) ||
+          this->Collapse(apex, aNearer ? b : a);
+      }
       else
       {
         // A needle: its short edge is opposite the small angle.
@@ -1174,12 +1178,14 @@ int amMetricRemeshing::RequestData(
   // would only refine towards a point).
   for (int attempt = 0; attempt < 3; ++attempt)
   {
-    Remesher before = r;
-    const double hBefore = h, upperBefore = upper;
-    const vtkIdType insertedBefore = inserted;
     long long smallBefore, smallAfter;
     double shortestBefore, shortestAfter;
     r.AngleSummary(smallBefore, shortestBefore);
+    if (smallBefore == 0)
+      break; // nothing to clean: no copy of the remesher for an undo
+    Remesher before = r;
+    const double hBefore = h, upperBefore = upper;
+    const vtkIdType insertedBefore = inserted;
     int cleaned = 0;
     for (int round = 0; round < 3; ++round)
     {

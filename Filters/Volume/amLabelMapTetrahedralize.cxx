@@ -380,8 +380,7 @@ int amLabelMapTetrahedralize::RequestData(
       vtkErrorMacro("Quality improvement: " << why);
       return 0;
     }
-    improvement << " improvement: worst Q " << report.WorstBefore << " -> " << report.WorstAfter << ", mean "
-                << report.MeanBefore << " -> " << report.MeanAfter;
+    improvement << " improvement: " << report.Describe();
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();

@@ -1,5 +1,6 @@
 #include "amTetraMeshOptimizer.h"
 
+#include "amMeshQuality.h"
 #include "amTetraGeometry.h"
 
 #include "vtkCellArray.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
@@ -57,7 +59,7 @@ public:
   std::vector<Tet> T;
   std::vector<int> R;
   std::vector<char> Alive;
-  std::vector<double> Q; // 1/Q per tetrahedron
+  std::vector<double> Q; // Objective per tetrahedron (kept current as vertices move)
   std::vector<char> Tried; // per tetrahedron: the flips failed and nothing moved since
   std::vector<char> Dirty; // per vertex: its star changed since it was last smoothed
   std::vector<std::vector<int>> Inc;
@@ -273,7 +275,20 @@ bool Flip23(Mesh& m, int t, int i)
   return true;
 }
 
-/// The star of v with v at x: worst 1/Q and the sum of Q (inf when a tetrahedron inverts).
+/// The star of v as it is: its worst objective and the sum of the inverse objectives.
+void CurrentStar(const Mesh& m, int v, double& worst, double& sum)
+{
+  worst = std::numeric_limits<double>::infinity();
+  sum = 0;
+  for (int t : m.Inc[v])
+  {
+    worst = std::min(worst, m.Q[t]);
+    sum += 1.0 / m.Q[t];
+  }
+}
+
+/// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
+/// (inf when a tetrahedron inverts).
 void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ)
 {
   worst = std::numeric_limits<double>::infinity();
@@ -315,7 +330,7 @@ bool Smooth(Mesh& m, int v)
     return false;
   const double* x = m.X(v);
   double worst0, sum0;
-  StarQuality(m, v, x, worst0, sum0);
+  CurrentStar(m, v, worst0, sum0);
   double centroid[3] = { 0, 0, 0 }, mass = 0, neighbours[3] = { 0, 0, 0 };
   int count = 0;
   for (int t : inc)
@@ -384,13 +399,12 @@ bool Climb(Mesh& m, int v)
   {
     double x[3];
     std::copy(m.X(v), m.X(v) + 3, x);
-    double worst0, sum0;
-    StarQuality(m, v, x, worst0, sum0);
     // The worst tetrahedron of the star and the gradient of its quality.
     int active = -1;
     for (int t : inc)
       if (active < 0 || m.Q[t] < m.Q[active])
         active = t;
+    const double worst0 = m.Q[active];
     const double h = 1e-5 * length;
     double g[3];
     for (int d = 0; d < 3; ++d)
@@ -429,7 +443,6 @@ bool Climb(Mesh& m, int v)
   }
   return moved;
 }
-
 
 /// Splits the free edge (u, v) at its midpoint, then moves the new vertex where its star is best:
 /// the one remedy for a sliver whose vertices all lie on the surface (no flip helps there).
@@ -475,24 +488,6 @@ bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::
 }
 }
 
-double amTetraMeshOptimizer::InverseQuality(const double* a, const double* b, const double* c, const double* d)
-{
-  const double volume = amTetraGeometry::SignedVolume(a, b, c, d);
-  if (!(volume > 0))
-    return -1.0;
-  using G = amTetraGeometry;
-  const Vec ab = G::Sub(b, a), ac = G::Sub(c, a), ad = G::Sub(d, a), bc = G::Sub(c, b), bd = G::Sub(d, b),
-            cd = G::Sub(d, c);
-  const double area = 0.5 *
-    (G::Norm(G::Cross(ab, ac)) + G::Norm(G::Cross(ab, ad)) + G::Norm(G::Cross(ac, ad)) +
-      G::Norm(G::Cross(bc, bd)));
-  const double longest2 = std::max({ G::Dot(ab, ab), G::Dot(ac, ac), G::Dot(ad, ad), G::Dot(bc, bc),
-    G::Dot(bd, bd), G::Dot(cd, cd) });
-  const double inradius = 3.0 * volume / area;
-  // 1/Q = rho / (alpha h_max) with alpha = sqrt(6)/12.
-  return 2.0 * std::sqrt(6.0) * inradius / std::sqrt(longest2);
-}
-
 double amTetraMeshOptimizer::Objective(const double* a, const double* b, const double* c, const double* d)
 {
   const double volume = amTetraGeometry::SignedVolume(a, b, c, d);
@@ -517,6 +512,15 @@ double amTetraMeshOptimizer::Objective(const double* a, const double* b, const d
   return std::min(inverseQ, minSine * 3.0 / std::sqrt(8.0));
 }
 
+std::string amTetraMeshOptimizer::Report::Describe() const
+{
+  std::ostringstream os;
+  os << "worst Q " << this->WorstBefore << " -> " << this->WorstAfter << ", mean " << this->MeanBefore << " -> "
+     << this->MeanAfter << " (" << this->EdgeRemovals << " edge removals, " << this->Flips23 << " 2-3 flips, "
+     << this->EdgeSplits << " edge splits, " << this->Moves << " vertex moves)";
+  return os.str();
+}
+
 amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>& points,
   std::vector<std::array<int, 4>>& tets, std::vector<int>& regions,
   const std::vector<std::array<int, 3>>& fixedFaces, const Options& options,
@@ -537,9 +541,9 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     for (size_t t = 0; t < m.T.size(); ++t)
       if (m.Alive[t])
       {
-        const double inverse = amTetraMeshOptimizer::InverseQuality(
-          m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]));
-        const double q = inverse > 0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+        double q, minDihedral, maxDihedral, radiusRatio, volume;
+        amMeshQuality::TetraQuality(m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]), q,
+          minDihedral, maxDihedral, radiusRatio, volume);
         worst = std::max(worst, q);
         sum += q;
         ++n;
@@ -624,11 +628,16 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     // Geometry: smoothing of every free vertex, then a local search around the bad elements.
     const size_t nv = m.Inc.size();
     for (size_t v = 0; v < nv; ++v)
-      if (!m.FixedVertex[v] && m.Dirty[v] && (m.Dirty[v] = 0, Smooth(m, static_cast<int>(v))))
+    {
+      if (m.FixedVertex[v] || !m.Dirty[v])
+        continue;
+      m.Dirty[v] = 0;
+      if (Smooth(m, static_cast<int>(v)))
       {
         ++report.Moves;
         ++changes;
       }
+    }
     std::vector<char> climb(nv, 0);
     for (size_t t = 0; t < m.T.size(); ++t)
       if (m.Alive[t] && m.Q[t] < poor)

@@ -13,7 +13,7 @@
  *   surface, the split of a free edge whose new vertex then moves to the best place found;
  * - geometric: smoothing of free vertices (candidate positions: the centroid of the star's
  *   centroids, weighted by volume, and the neighbours' mean), kept when the star's worst element
- *   is not worse and its mean Q better; then a local search that moves each vertex of a bad
+ *   is not worse and the mean of its inverse objectives better; then a local search that moves each vertex of a bad
  *   element along the numerical gradient of its star's worst quality.
  *
  * The fixed faces (the surface and interface triangles) and fixed vertices (those on them) never
@@ -38,8 +38,9 @@ public:
   struct Options
   {
     int Passes = 4;                 // rounds of flips + smoothing
-    double FlipQuality = 1.6;       // elements with Q above this get flips
-    double SearchQuality = 2.5;     // the vertices of elements with Q above this get the local search
+    // Thresholds in Q, applied to the objective (1/Q or the dihedral term, whichever is worse):
+    double FlipQuality = 1.6;       // elements above this get flips
+    double SearchQuality = 2.5;     // the vertices of elements above this get the local search
     int MaxRing = 7;                // largest edge ring the edge removal triangulates
     double SplitQuality = 5;        // elements with Q above this that no flip mends get an edge split
   };
@@ -47,6 +48,8 @@ public:
   {
     double WorstBefore = 0, WorstAfter = 0, MeanBefore = 0, MeanAfter = 0;
     long Flips23 = 0, EdgeRemovals = 0, EdgeSplits = 0, Moves = 0;
+    /// One line for provenance: worst and mean Q before -> after, and the operations done.
+    std::string Describe() const;
   };
 
   /// points: 3 doubles per vertex (free vertices move, split vertices are appended); tets: 4 vertex ids per tetrahedron,
@@ -67,8 +70,6 @@ public:
   static bool ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* surface, const Options& options,
     Report& report, std::string& why, const std::function<void(double)>& progress = nullptr);
 
-  /// 1/Q in (0, 1] for a positively oriented tetrahedron (1: regular), -1 when inverted or flat.
-  static double InverseQuality(const double* a, const double* b, const double* c, const double* d);
   /// What the operations maximise, in (0, 1] (1: regular), -1 when inverted or flat: the smaller
   /// of 1/Q and the smallest sine of the dihedral angles over that of the regular tetrahedron, so
   /// that no operation trades a dihedral angle for Q (slivers have both small).

@@ -752,10 +752,7 @@ int amTetrahedralize::RequestData(
     }
     this->WorstQualityBeforeImprovement = report.WorstBefore;
     this->MeanQualityBeforeImprovement = report.MeanBefore;
-    improvement << " improvement: worst Q " << report.WorstBefore << " -> " << report.WorstAfter << ", mean "
-                << report.MeanBefore << " -> " << report.MeanAfter << " (" << report.EdgeRemovals
-                << " edge removals, " << report.Flips23 << " 2-3 flips, " << report.EdgeSplits << " edge splits, "
-                << report.Moves << " vertex moves)";
+    improvement << " improvement: " << report.Describe();
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
