@@ -1,6 +1,7 @@
 #include "amSnakeSegmentation.h"
 
 #include "amInputCheck.h"
+#include "amPolarContour.h"
 #include "amProvenance.h"
 #include "amThreading.h"
 
@@ -186,6 +187,11 @@ amSnakeSegmentation::amSnakeSegmentation()
   , AllowAirSeeds(false)
   , RefineToHalfContrast(true)
   , AdaptiveSliceStatistics(false)
+  , ContourModel(LevelSet)
+  , OutsideThreshold(-30.0)
+  , EdgeContrast(40.0)
+  , MaximumRadius(30.0)
+  , MaximumGrowth(2.0)
 {
   amThreading::Initialize();
   this->SetNumberOfInputPorts(2);
@@ -301,6 +307,11 @@ int amSnakeSegmentation::RequestData(
   if (seeds.empty())
   {
     vtkErrorMacro("No seeds: add seeds with AddSeed(x, y, z, label) or connect a point set to input port 1.");
+    return 0;
+  }
+  if (this->ContourModel == Polar && this->Mode != SliceBySlice)
+  {
+    vtkErrorMacro("ContourModel Polar contours sections one slice at a time: set Mode to SliceBySlice.");
     return 0;
   }
   std::vector<int> order;
@@ -529,6 +540,100 @@ int amSnakeSegmentation::RequestData(
           m->FillBuffer(0);
           return m;
         };
+        if (this->ContourModel == Polar)
+        {
+          // One track per seed: a star-shaped snake in the seed's slice, then slice after slice
+          // around the last section's centroid, the last contour as prior.
+          amPolarContour::Parameters pp;
+          pp.OutsideThreshold = this->OutsideThreshold;
+          pp.EdgeContrast = this->EdgeContrast;
+          pp.MaximumRadius = this->MaximumRadius;
+          pp.MaximumGrowth = this->MaximumGrowth;
+          std::vector<float> slice(static_cast<size_t>(nu) * nv);
+          const auto load = [&](int is) {
+            for (int iv = 0; iv < nv; ++iv)
+              for (int iu = 0; iu < nu; ++iu)
+                slice[static_cast<size_t>(iv) * nu + iu] = fv[at(iu, iv, is)];
+          };
+          const amPolarContour contour(slice.data(), nu, nv, spacing[u], spacing[v]);
+          std::vector<unsigned char> section(slice.size()), previous;
+          // Pixels of the section in slice is, and how many of them earlier tracks already have.
+          const auto measure = [&](int is, size_t& area, size_t& taken) {
+            area = taken = 0;
+            for (int iv = 0; iv < nv; ++iv)
+              for (int iu = 0; iu < nu; ++iu)
+                if (section[static_cast<size_t>(iv) * nu + iu])
+                {
+                  ++area;
+                  taken += inside[at(iu, iv, is)];
+                }
+          };
+          const auto store = [&](int is) {
+            for (int iv = 0; iv < nv; ++iv)
+              for (int iu = 0; iu < nu; ++iu)
+                if (section[static_cast<size_t>(iv) * nu + iu])
+                  inside[at(iu, iv, is)] = 1;
+          };
+          size_t started = 0;
+          for (const Seed* sd : mine)
+          {
+            ++started;
+            const int s0 = std::min(ns - 1, std::max(0, static_cast<int>(std::lround(sd->Index[ax])) - lo[ax]));
+            const double cu = sd->Index[u] - lo[u], cv = sd->Index[v] - lo[v];
+            load(s0);
+            std::fill(section.begin(), section.end(), 0);
+            contour.Fill(cu, cv, contour.Find(cu, cv, {}, pp), section.data());
+            size_t area0, taken;
+            measure(s0, area0, taken);
+            // A seed whose section earlier tracks already cover (90 %) adds nothing; one that
+            // covers more (where a vessel's section is not star-shaped, as in the arch) goes on.
+            if (area0 * pixelArea < this->MinimumSliceArea || 10 * taken >= 9 * area0)
+              continue;
+            store(s0);
+            const std::vector<unsigned char> seedSection = section;
+            for (int dir : { -1, 1 })
+            {
+              previous = seedSection;
+              size_t previousArea = area0;
+              for (int is = s0 + dir; is >= 0 && is < ns; is += dir)
+              {
+                double mu = 0, mv = 0;
+                size_t c = 0;
+                for (int iv = 0; iv < nv; ++iv)
+                  for (int iu = 0; iu < nu; ++iu)
+                    if (previous[static_cast<size_t>(iv) * nu + iu])
+                    {
+                      mu += iu;
+                      mv += iv;
+                      ++c;
+                    }
+                mu /= c;
+                mv /= c;
+                const std::vector<double> prior = contour.RadiiOf(previous.data(), mu, mv, pp.MaximumRadius);
+                load(is);
+                std::fill(section.begin(), section.end(), 0);
+                contour.Fill(mu, mv, contour.Find(mu, mv, prior, pp), section.data());
+                size_t area = 0;
+                for (unsigned char q : section)
+                  area += q;
+                // The stopping rule: the section vanished, or changed abruptly (ended or merged).
+                if (area * pixelArea < this->MinimumSliceArea || area > this->MaximumAreaChange * previousArea ||
+                  area * this->MaximumAreaChange < previousArea)
+                  break;
+                measure(is, area, taken);
+                store(is);
+                if (2 * taken > area)
+                  break; // met another track
+                previous = section;
+                previousArea = area;
+                if (this->GetAbortExecute())
+                  return false;
+              }
+            }
+            this->UpdateProgress(p0 + (p1 - p0) * (0.15 + 0.85 * started / mine.size()));
+          }
+          return true;
+        }
         std::vector<char> done(static_cast<size_t>(ns), 0);
         std::map<int, std::vector<const Seed*>> bySlice;
         for (const Seed* s : mine)
@@ -692,7 +797,12 @@ int amSnakeSegmentation::RequestData(
     // its surroundings (where partial volume puts the true boundary), not at the edge of the
     // statistical interval. Sample a 2-voxel shell outside (beyond the smoothing's blur), move the facing threshold there
     // (never narrowing the interval) and evolve again.
-    if (this->AutomaticThresholds && this->RefineToHalfContrast)
+    if (this->ContourModel == Polar)
+    {
+      tlo = this->OutsideThreshold;
+      thi = range[1];
+    }
+    else if (this->AutomaticThresholds && this->RefineToHalfContrast)
     {
       auto mask3 = MaskImage<3>::New();
       mask3->SetRegions(region);
@@ -764,7 +874,11 @@ int amSnakeSegmentation::RequestData(
          << " AutomaticThresholds=" << this->AutomaticThresholds << " IntensityTolerance=" << this->IntensityTolerance
          << " MinimumIntensityWindow=" << this->MinimumIntensityWindow << " Propagation=" << this->PropagationScaling
          << " Curvature=" << this->CurvatureScaling << " EdgeWeight=" << this->EdgeWeight
-         << " Iterations=" << this->NumberOfIterations << " MaximumDistance=" << this->MaximumDistance;
+         << " Iterations=" << this->NumberOfIterations << " MaximumDistance=" << this->MaximumDistance
+         << " ContourModel=" << (this->ContourModel == Polar ? "Polar" : "LevelSet");
+  if (this->ContourModel == Polar)
+    params << " OutsideThreshold=" << this->OutsideThreshold << " EdgeContrast=" << this->EdgeContrast
+           << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth;
   amProvenance::Record(output, input, "amSnakeSegmentation", params.str());
   return 1;
 }
@@ -778,4 +892,9 @@ void amSnakeSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedRadius: " << this->SeedRadius << " mm\n";
   os << indent << "IntensityTolerance: " << this->IntensityTolerance << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "ContourModel: " << (this->ContourModel == Polar ? "Polar" : "LevelSet") << "\n";
+  os << indent << "OutsideThreshold: " << this->OutsideThreshold << "\n";
+  os << indent << "EdgeContrast: " << this->EdgeContrast << "\n";
+  os << indent << "MaximumRadius: " << this->MaximumRadius << " mm\n";
+  os << indent << "MaximumGrowth: " << this->MaximumGrowth << " mm\n";
 }

@@ -30,6 +30,17 @@
  * than MaximumAreaChange times from one slice to the next (the structure ends, or merges with
  * another one: an abrupt topology change).
  *
+ * ContourModel Polar (slice by slice only) replaces the level set of each section by a star-shaped
+ * snake found by dynamic programming (amPolarContour): bounded by OutsideThreshold (fat, lung) where
+ * the structure meets them and by edges elsewhere, at most MaximumRadius from its centre, and
+ * changing by at most MaximumGrowth mm from one slice to the next. Each seed starts its own track
+ * in its slice; each next slice is centred on the last section's centroid, and a track stops as
+ * above or where more than half its section is already segmented (it has met another track). A
+ * seed whose section earlier tracks already cover (90 %) starts none; others do, so a seed where
+ * two tracks meet in a section that no star-shaped contour covers (the aortic arch) joins them. For vessels whose contents do
+ * not have one intensity (a dissection's false lumen, thrombus, the wall) next to tissue of the
+ * same intensity, which no intensity interval separates.
+ *
  * Output: a label map on the input's grid (scalars "Labels", uint8), field data
  * "SegmentedVolumes" (mm^3 per label) and "Thresholds" (the interval used per label).
  * Errors: no seeds, a seed outside the image, a seed in air (CT below -950 HU, unless
@@ -171,6 +182,35 @@ public:
   vtkBooleanMacro(AdaptiveSliceStatistics, bool);
   ///@}
 
+  enum ContourModels
+  {
+    LevelSet = 0,
+    Polar = 1
+  };
+
+  ///@{
+  /// LevelSet (0, default): threshold level sets, in either mode. Polar (1): slice by slice only,
+  /// each section a star-shaped snake (see the class description).
+  vtkSetClampMacro(ContourModel, int, LevelSet, Polar);
+  vtkGetMacro(ContourModel, int);
+  ///@}
+
+  ///@{
+  /// Polar contours: the intensity below which a pixel is not the structure (default -30, HU:
+  /// half-way between fat, -100, and soft tissue, +40); an outward intensity drop that counts as
+  /// one unit of edge evidence, counted up to three units (default 40: every edge of 120 or more
+  /// counts alike, so a dissection flap inside does not beat the wall outside); the largest radius, mm (default 30); the largest
+  /// growth of a radius from one slice to the next, mm (default 2).
+  vtkSetMacro(OutsideThreshold, double);
+  vtkGetMacro(OutsideThreshold, double);
+  vtkSetClampMacro(EdgeContrast, double, 1e-6, 1e9);
+  vtkGetMacro(EdgeContrast, double);
+  vtkSetClampMacro(MaximumRadius, double, 1.0, 1000.0);
+  vtkGetMacro(MaximumRadius, double);
+  vtkSetClampMacro(MaximumGrowth, double, 0.0, 100.0);
+  vtkGetMacro(MaximumGrowth, double);
+  ///@}
+
   ///@{
   /// Accept seeds whose neighbourhood is below -950 (air on CT) (default off).
   vtkSetMacro(AllowAirSeeds, bool);
@@ -207,6 +247,11 @@ protected:
   bool AllowAirSeeds;
   bool RefineToHalfContrast;
   bool AdaptiveSliceStatistics;
+  int ContourModel;
+  double OutsideThreshold;
+  double EdgeContrast;
+  double MaximumRadius;
+  double MaximumGrowth;
   std::vector<double> Seeds; // x, y, z, label
 
 private:
