@@ -192,6 +192,7 @@ amSnakeSegmentation::amSnakeSegmentation()
   , EdgeContrast(40.0)
   , MaximumRadius(30.0)
   , MaximumGrowth(2.0)
+  , AreaCost(0.4)
 {
   amThreading::Initialize();
   this->SetNumberOfInputPorts(2);
@@ -549,6 +550,7 @@ int amSnakeSegmentation::RequestData(
           pp.EdgeContrast = this->EdgeContrast;
           pp.MaximumRadius = this->MaximumRadius;
           pp.MaximumGrowth = this->MaximumGrowth;
+          pp.AreaCost = this->AreaCost;
           std::vector<float> slice(static_cast<size_t>(nu) * nv);
           const auto load = [&](int is) {
             for (int iv = 0; iv < nv; ++iv)
@@ -878,7 +880,8 @@ int amSnakeSegmentation::RequestData(
          << " ContourModel=" << (this->ContourModel == Polar ? "Polar" : "LevelSet");
   if (this->ContourModel == Polar)
     params << " OutsideThreshold=" << this->OutsideThreshold << " EdgeContrast=" << this->EdgeContrast
-           << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth;
+           << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth
+           << " AreaCost=" << this->AreaCost;
   amProvenance::Record(output, input, "amSnakeSegmentation", params.str());
   return 1;
 }
@@ -897,4 +900,5 @@ void amSnakeSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EdgeContrast: " << this->EdgeContrast << "\n";
   os << indent << "MaximumRadius: " << this->MaximumRadius << " mm\n";
   os << indent << "MaximumGrowth: " << this->MaximumGrowth << " mm\n";
+  os << indent << "AreaCost: " << this->AreaCost << " per mm\n";
 }

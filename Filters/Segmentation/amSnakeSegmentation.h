@@ -212,6 +212,14 @@ public:
   ///@}
 
   ///@{
+  /// Polar contours: the cost of a contour's radius per mm (default 0.4; per ray, against up to 9
+  /// for an edge and 6 for the structure going on outside): what keeps a contour out of touching
+  /// tissue of the structure's intensity. Lower it for organs much larger than a vessel.
+  vtkSetClampMacro(AreaCost, double, 0.0, 100.0);
+  vtkGetMacro(AreaCost, double);
+  ///@}
+
+  ///@{
   /// Accept seeds whose neighbourhood is below -950 (air on CT) (default off).
   vtkSetMacro(AllowAirSeeds, bool);
   vtkGetMacro(AllowAirSeeds, bool);
@@ -252,6 +260,7 @@ protected:
   double EdgeContrast;
   double MaximumRadius;
   double MaximumGrowth;
+  double AreaCost;
   std::vector<double> Seeds; // x, y, z, label
 
 private:
