@@ -8,6 +8,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -24,6 +25,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 
@@ -43,6 +45,8 @@ amIntensityClassifier::amIntensityClassifier()
   , Window(1500.0)
   , Level(-300.0)
   , ClassifyWindowed(false)
+  , ExteriorAir(true)
+  , ExteriorThreshold(-480.0)
 {
   amThreading::Initialize();
   this->SetNumberOfOutputPorts(2);
@@ -209,6 +213,81 @@ int amIntensityClassifier::RequestData(
     }
   });
 
+  // The air around the patient, and the partial volume of the skin against it.
+  vtkIdType exteriorVoxels = 0;
+  if (this->ExteriorAir)
+  {
+    int dims[3];
+    input->GetDimensions(dims);
+    const vtkIdType sx = 1, sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
+    std::vector<unsigned char> exterior(static_cast<size_t>(n), 0);
+    std::vector<vtkIdType> front;
+    for (int k = 0; k < dims[2]; ++k)
+      for (int j = 0; j < dims[1]; ++j)
+        for (int i = 0; i < dims[0]; ++i)
+          if (i == 0 || j == 0 || i == dims[0] - 1 || j == dims[1] - 1)
+          {
+            const vtkIdType id = k * sz + j * sy + i * sx;
+            if (l[id] == 0)
+            {
+              exterior[id] = 1;
+              front.push_back(id);
+            }
+          }
+    // Visit the 6 neighbours of id, calling f(neighbour).
+    const auto neighbours = [&](vtkIdType id, const std::function<void(vtkIdType)>& f) {
+      const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
+                k = static_cast<int>(id / sz);
+      if (i > 0) f(id - sx);
+      if (i < dims[0] - 1) f(id + sx);
+      if (j > 0) f(id - sy);
+      if (j < dims[1] - 1) f(id + sy);
+      if (k > 0) f(id - sz);
+      if (k < dims[2] - 1) f(id + sz);
+    };
+    while (!front.empty()) // flood the unclassified voxels from the sides
+    {
+      const vtkIdType id = front.back();
+      front.pop_back();
+      neighbours(id, [&](vtkIdType q) {
+        if (!exterior[q] && l[q] == 0)
+        {
+          exterior[q] = 1;
+          front.push_back(q);
+        }
+      });
+    }
+    for (int layer = 0; layer < 2; ++layer)
+    {
+      std::vector<vtkIdType> shell;
+      for (vtkIdType id = 0; id < n; ++id)
+        if (!exterior[id] && l[id] != 0 && scalars->GetComponent(id, 0) < this->ExteriorThreshold)
+        {
+          bool touches = false;
+          neighbours(id, [&](vtkIdType q) { touches = touches || exterior[q]; });
+          // ... and tissue within two voxels along an axis: skin, not lung beside an air pocket.
+          const int c[3] = { static_cast<int>(id % dims[0]), static_cast<int>((id / dims[0]) % dims[1]),
+            static_cast<int>(id / sz) };
+          const vtkIdType stride[3] = { sx, sy, sz };
+          bool tissue = false;
+          for (int a = 0; a < 3 && touches && !tissue; ++a)
+            for (int d : { -2, -1, 1, 2 })
+              if (c[a] + d >= 0 && c[a] + d < dims[a] &&
+                scalars->GetComponent(id + d * stride[a], 0) >= this->ExteriorThreshold)
+                tissue = true;
+          if (touches && tissue)
+            shell.push_back(id);
+        }
+      for (vtkIdType id : shell)
+      {
+        exterior[id] = 1;
+        l[id] = 0;
+      }
+      exteriorVoxels += static_cast<vtkIdType>(shell.size());
+    }
+  }
+  this->UpdateProgress(0.9);
+
   labelsOut->CopyStructure(input);
   windowOut->CopyStructure(input);
   labelsOut->GetPointData()->SetScalars(labels);
@@ -223,6 +302,13 @@ int amIntensityClassifier::RequestData(
       a->InsertNextValue(s);
     labelsOut->GetFieldData()->AddArray(a);
   }
+  if (this->ExteriorAir)
+  {
+    vtkNew<vtkIdTypeArray> a;
+    a->SetName("ExteriorVoxels");
+    a->InsertNextValue(exteriorVoxels);
+    labelsOut->GetFieldData()->AddArray(a);
+  }
   std::ostringstream params;
   params << "Mode=" << (this->Mode == Otsu ? "Otsu" : "Ranges");
   if (this->Mode == Otsu)
@@ -233,7 +319,8 @@ int amIntensityClassifier::RequestData(
     for (size_t r = 0; r < nr; ++r)
       params << (r ? ";" : "") << "[" << ranges[3 * r] << "," << ranges[3 * r + 1] << ")->" << ranges[3 * r + 2];
   }
-  params << " Window=" << this->Window << " Level=" << this->Level << " ClassifyWindowed=" << this->ClassifyWindowed;
+  params << " Window=" << this->Window << " Level=" << this->Level << " ClassifyWindowed=" << this->ClassifyWindowed
+         << " ExteriorAir=" << this->ExteriorAir << " ExteriorThreshold=" << this->ExteriorThreshold;
   amProvenance::Record(labelsOut, input, "amIntensityClassifier", params.str());
   amProvenance::Record(windowOut, input, "amIntensityClassifier", params.str());
   this->UpdateProgress(1.0);
@@ -248,4 +335,5 @@ void amIntensityClassifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfClasses: " << this->NumberOfClasses << "\n";
   os << indent << "Window: " << this->Window << " Level: " << this->Level << "\n";
   os << indent << "ClassifyWindowed: " << this->ClassifyWindowed << "\n";
+  os << indent << "ExteriorAir: " << this->ExteriorAir << " (threshold " << this->ExteriorThreshold << ")\n";
 }

@@ -17,6 +17,15 @@
  * intensities into NumberOfClasses classes, labelled 0 (darkest) to NumberOfClasses-1; the
  * thresholds are recorded in field data "Thresholds".
  * ClassifyWindowed applies either mode to the 8-bit windowed values instead of the raw ones.
+ * ExteriorAir (default on): the air around the patient is label 0 connected (across faces) to the
+ * sides of the image (the borders of the first two index axes; not the ends of the third, where a
+ * trachea may leave the field of view). A voxel of another class that touches it, is darker than
+ * ExteriorThreshold (default -480 HU, half-way between air and soft tissue) and has a voxel at least
+ * that bright within two voxels along an axis is mostly air: partial volume of the skin, which
+ * would otherwise land in the lung or fat class (lung beside an air pocket that reaches the sides
+ * of a cropped scan has no such tissue beside it and stays lung). Such voxels become
+ * label 0 and join the exterior, twice over (the blur spans up to two voxels); their number is
+ * field data "ExteriorVoxels".
  * Errors: no input scalars, several components, an empty image, NaN values.
  */
 #ifndef amIntensityClassifier_h
@@ -80,6 +89,15 @@ public:
   vtkBooleanMacro(ClassifyWindowed, bool);
   ///@}
 
+  ///@{
+  /// Partial volume at the body's surface to air (see the class description; default on, -480).
+  vtkSetMacro(ExteriorAir, bool);
+  vtkGetMacro(ExteriorAir, bool);
+  vtkBooleanMacro(ExteriorAir, bool);
+  vtkSetMacro(ExteriorThreshold, double);
+  vtkGetMacro(ExteriorThreshold, double);
+  ///@}
+
 protected:
   amIntensityClassifier();
   ~amIntensityClassifier() override;
@@ -92,6 +110,8 @@ protected:
   double Window;
   double Level;
   bool ClassifyWindowed;
+  bool ExteriorAir;
+  double ExteriorThreshold;
   std::vector<double> RangeList; // low, high, label triples
 
 private:
