@@ -76,8 +76,10 @@ std::vector<double> amPolarContour::Find(
       cost[static_cast<size_t>(a) * nr + n] = c;
     }
   }
-  // Circular dynamic program, unrolled over three turns; steps of at most 1 mm between rays.
-  const int maxStep = static_cast<int>(std::lround(1.0 / RadialStep));
+  // Circular dynamic program, unrolled over three turns; between neighbouring rays the radius
+  // changes by at most 1 mm or the arc between them (a slope of 45 degrees), whichever is more.
+  const double arc = TwoPi / na; // radians between rays
+  const int minStep = static_cast<int>(std::lround(1.0 / RadialStep));
   const int turns = 3, total = turns * na;
   std::vector<double> best(nr), next(nr);
   std::vector<int> back(static_cast<size_t>(total) * nr, 0);
@@ -90,6 +92,7 @@ std::vector<double> amPolarContour::Find(
     {
       double b = std::numeric_limits<double>::max();
       int arg = n;
+      const int maxStep = std::max(minStep, static_cast<int>(std::floor(n * arc)));
       for (int s = -maxStep; s <= maxStep; ++s) // fixed order: ties go to the smallest radius
       {
         const int m = n + s;

@@ -11,7 +11,8 @@
  *   + AreaCost/mm x radius (no growth without evidence: keeps the snake out of touching tissue
  *     of the structure's intensity)
  *   + PriorWeight/mm x |r - r_previous| (the previous slice's contour, when propagating),
- * plus 2/mm x |r(theta) - r(theta')| between neighbouring rays (smoothness; at most 1 mm apart).
+ * plus 2/mm x |r(theta) - r(theta')| between neighbouring rays (smoothness; at most 1 mm or the arc
+ * between the rays apart, whichever is more).
  * Radii are at least MinimumRadius and, when propagating, at most r_previous + MaximumGrowth.
  * The closed contour is the middle turn of the optimal path over three turns (the usual way to
  * close a circular dynamic program); the result is deterministic.

@@ -193,6 +193,7 @@ amSnakeSegmentation::amSnakeSegmentation()
   , MaximumRadius(30.0)
   , MaximumGrowth(2.0)
   , AreaCost(0.4)
+  , MinimumSectionContrast(0.5)
 {
   amThreading::Initialize();
   this->SetNumberOfInputPorts(2);
@@ -593,6 +594,19 @@ int amSnakeSegmentation::RequestData(
               continue;
             store(s0);
             const std::vector<unsigned char> seedSection = section;
+            // The section's mean contrast above OutsideThreshold; the seed's sets the scale.
+            const auto contrast = [&]() {
+              double sum = 0;
+              size_t c = 0;
+              for (size_t q = 0; q < section.size(); ++q)
+                if (section[q])
+                {
+                  sum += slice[q];
+                  ++c;
+                }
+              return c ? sum / c - this->OutsideThreshold : 0.0;
+            };
+            const double seedContrast = contrast();
             for (int dir : { -1, 1 })
             {
               previous = seedSection;
@@ -621,6 +635,9 @@ int amSnakeSegmentation::RequestData(
                 // The stopping rule: the section vanished, or changed abruptly (ended or merged).
                 if (area * pixelArea < this->MinimumSliceArea || area > this->MaximumAreaChange * previousArea ||
                   area * this->MaximumAreaChange < previousArea)
+                  break;
+                // ... or it no longer looks like the structure (a heart's section entering the liver).
+                if (contrast() < this->MinimumSectionContrast * seedContrast)
                   break;
                 measure(is, area, taken);
                 store(is);
@@ -881,7 +898,7 @@ int amSnakeSegmentation::RequestData(
   if (this->ContourModel == Polar)
     params << " OutsideThreshold=" << this->OutsideThreshold << " EdgeContrast=" << this->EdgeContrast
            << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth
-           << " AreaCost=" << this->AreaCost;
+           << " AreaCost=" << this->AreaCost << " MinimumSectionContrast=" << this->MinimumSectionContrast;
   amProvenance::Record(output, input, "amSnakeSegmentation", params.str());
   return 1;
 }
@@ -901,4 +918,5 @@ void amSnakeSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumRadius: " << this->MaximumRadius << " mm\n";
   os << indent << "MaximumGrowth: " << this->MaximumGrowth << " mm\n";
   os << indent << "AreaCost: " << this->AreaCost << " per mm\n";
+  os << indent << "MinimumSectionContrast: " << this->MinimumSectionContrast << "\n";
 }

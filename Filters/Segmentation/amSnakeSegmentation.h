@@ -35,7 +35,9 @@
  * the structure meets them and by edges elsewhere, at most MaximumRadius from its centre, and
  * changing by at most MaximumGrowth mm from one slice to the next. Each seed starts its own track
  * in its slice; each next slice is centred on the last section's centroid, and a track stops as
- * above or where more than half its section is already segmented (it has met another track). A
+ * above, where its section's mean intensity falls to MinimumSectionContrast of its seed section's
+ * (above OutsideThreshold), or where more than half its section is already segmented (it has met
+ * another track). A
  * seed whose section earlier tracks already cover (90 %) starts none; others do, so a seed where
  * two tracks meet in a section that no star-shaped contour covers (the aortic arch) joins them. For vessels whose contents do
  * not have one intensity (a dissection's false lumen, thrombus, the wall) next to tissue of the
@@ -220,6 +222,14 @@ public:
   ///@}
 
   ///@{
+  /// Polar contours: a track also stops where its section's mean intensity above OutsideThreshold
+  /// falls below this fraction of its seed section's (default 0.5; 0 turns the rule off): the
+  /// structure has ended in tissue of a duller intensity (a heart's section entering the liver).
+  vtkSetClampMacro(MinimumSectionContrast, double, 0.0, 1.0);
+  vtkGetMacro(MinimumSectionContrast, double);
+  ///@}
+
+  ///@{
   /// Accept seeds whose neighbourhood is below -950 (air on CT) (default off).
   vtkSetMacro(AllowAirSeeds, bool);
   vtkGetMacro(AllowAirSeeds, bool);
@@ -261,6 +271,7 @@ protected:
   double MaximumRadius;
   double MaximumGrowth;
   double AreaCost;
+  double MinimumSectionContrast;
   std::vector<double> Seeds; // x, y, z, label
 
 private:

@@ -2,7 +2,10 @@
 
 The aorta pipeline (Examples/Pipelines/cardiac_aorta.xml: nine seeds, polar snakes slice by
 slice) is compared with the provided TotalSegmentator mask (the issue's bar: Dice >= 0.85; measured
-0.889), and its tetrahedral mesh with the segmentation's volume.
+0.889), and its tetrahedral mesh with the segmentation's volume. The heart pipeline
+(Examples/Pipelines/cardiac_heart.xml) is compared with the pulmonary crop's heart mask, which lies
+on another grid (world coordinates): measured 0.829, guarded at 0.8 (below the 0.85 that the aorta
+meets; README's known limits say where it goes wrong).
 """
 import os
 import subprocess
@@ -14,6 +17,8 @@ SHARED = os.environ.get("ANATOMESH_SHARED_DATA", os.path.join(SOURCE, "..", "sha
 TMP = os.environ.get("ANATOMESH_TEST_TMP", "/tmp")
 CT = os.path.join(SHARED, "totalseg_cardiac_ct", "aorta_report", "ct_cropped.nii.gz")
 MASK = os.path.join(SHARED, "totalseg_cardiac_ct", "aorta_report", "aorta.nii.gz")
+HEART_CT = os.path.join(SHARED, "totalseg_cardiac_ct", "pulmonary_report", "ct_cropped.nii.gz")
+HEART = os.path.join(SHARED, "totalseg_cardiac_ct", "pulmonary_report", "heart.nii.gz")
 
 
 @unittest.skipUnless(os.path.exists(CT) and os.path.exists(MASK), "shared cardiac CT absent: " + CT)
@@ -56,6 +61,39 @@ class AortaOfRealCT(unittest.TestCase):
         voxel_volume = voxels * np.prod(seg.GetOutput().GetSpacing())
         print("aorta: %d tetrahedra, %.1f cm3 (voxels %.1f cm3)" % (len(volume), volume.sum() / 1e3, voxel_volume / 1e3))
         self.assertLess(abs(volume.sum() - voxel_volume), 0.05 * voxel_volume)
+
+
+@unittest.skipUnless(os.path.exists(HEART_CT) and os.path.exists(HEART), "shared cardiac CT absent: " + HEART_CT)
+class HeartOfRealCT(unittest.TestCase):
+    def test_heart_pipeline_against_mask(self):
+        import anatomesh
+        out = os.path.join(TMP, "real_heart")
+        cli = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh"), "run",
+               os.path.join(SOURCE, "Examples", "Pipelines", "cardiac_heart.xml"),
+               "--set", "input=" + HEART_CT, "--output", out, "--quiet"]
+        p = subprocess.run(cli, capture_output=True, text=True, timeout=600)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        seg, mask = anatomesh.amImageReader(), anatomesh.amImageReader()
+        seg.SetFileName(os.path.join(out, "heart_labels.nii.gz"))
+        mask.SetFileName(HEART)  # a larger grid than the crop's
+        overlap = anatomesh.amLabelOverlap()
+        overlap.SetInputConnection(0, seg.GetOutputPort())
+        overlap.SetInputConnection(1, mask.GetOutputPort())
+        overlap.Update()
+        dice = overlap.GetDice(1)
+        print("heart Dice against the TotalSegmentator mask: %.3f" % dice)
+        self.assertGreaterEqual(dice, 0.8)
+
+        import numpy as np
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+        r = vtkXMLUnstructuredGridReader()
+        r.SetFileName(os.path.join(out, "heart_tets.vtu"))
+        r.Update()
+        grid = r.GetOutput()
+        regions = set(vtk_to_numpy(grid.GetCellData().GetArray("Region")).tolist())
+        self.assertEqual(regions, {1, 2})  # heart and aorta
+        self.assertTrue(np.all(vtk_to_numpy(grid.GetCellData().GetArray("Volume")) > 0))
 
 
 if __name__ == "__main__":
