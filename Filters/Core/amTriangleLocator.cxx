@@ -8,8 +8,22 @@
 void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
   const std::vector<std::array<vtkIdType, 3>>& triangles)
 {
-  this->Points = points;
-  this->Triangles = triangles;
+  // Keep only the points the triangles use (a locator over a few triangles of a large mesh stays
+  // small), renumbered in the order of their ids.
+  std::vector<vtkIdType> used;
+  used.reserve(3 * triangles.size());
+  for (const auto& t : triangles)
+    used.insert(used.end(), t.begin(), t.end());
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  this->Points.resize(used.size());
+  for (size_t i = 0; i < used.size(); ++i)
+    this->Points[i] = points[used[i]];
+  this->Triangles.resize(triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      this->Triangles[t][k] =
+        static_cast<vtkIdType>(std::lower_bound(used.begin(), used.end(), triangles[t][k]) - used.begin());
   const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
     std::numeric_limits<double>::max() };
@@ -57,6 +71,10 @@ void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
       b1[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mx - this->Origin[d]) / h)));
     }
   };
+  this->Spheres.resize(static_cast<size_t>(nt));
+  for (vtkIdType t = 0; t < nt; ++t)
+    this->Spheres[t] = BoundingSphere(
+      points[triangles[t][0]].data(), points[triangles[t][1]].data(), points[triangles[t][2]].data());
   this->BinStart.assign(static_cast<size_t>(nb + 1), 0);
   int b0[3], b1[3];
   for (vtkIdType t = 0; t < nt; ++t)
@@ -79,6 +97,18 @@ void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
         for (int i = b0[0]; i <= b1[0]; ++i)
           this->BinTriangles[fill[(static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i]++] = t;
   }
+}
+
+std::array<double, 4> amTriangleLocator::BoundingSphere(const double a[3], const double b[3], const double c[3])
+{
+  std::array<double, 4> s;
+  for (int d = 0; d < 3; ++d)
+    s[d] = (a[d] + b[d] + c[d]) / 3.0;
+  double r2 = 0;
+  for (const double* p : { a, b, c })
+    r2 = std::max(r2, (p[0] - s[0]) * (p[0] - s[0]) + (p[1] - s[1]) * (p[1] - s[1]) + (p[2] - s[2]) * (p[2] - s[2]));
+  s[3] = std::sqrt(r2) * (1.0 + 1e-9) + 1e-12;
+  return s;
 }
 
 double amTriangleLocator::ClosestPointOnTriangle(
@@ -184,6 +214,12 @@ double amTriangleLocator::ClosestPoint(const double x[3], double closest[3], vtk
           for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
           {
             const vtkIdType t = this->BinTriangles[s];
+            const auto& sphere = this->Spheres[t];
+            const double dc = std::sqrt((x[0] - sphere[0]) * (x[0] - sphere[0]) +
+                                (x[1] - sphere[1]) * (x[1] - sphere[1]) + (x[2] - sphere[2]) * (x[2] - sphere[2])) -
+              sphere[3];
+            if (dc > 0 && dc * dc >= best)
+              continue; // no point of this triangle can be closer than the best so far
             const auto& tri = this->Triangles[t];
             const double d2 = ClosestPointOnTriangle(x, this->Points[tri[0]].data(),
               this->Points[tri[1]].data(), this->Points[tri[2]].data(), q);

@@ -673,48 +673,116 @@ public:
     return done;
   }
 
+  // What the last Measure saw: the next one measures again only what changed since (the input is
+  // fixed, so a triangle with the same vertices at the same places has the same distances, and an
+  // input sample whose nearest triangle is unchanged can only have come nearer to a new one).
+  struct MeasureCache
+  {
+    bool Valid = false;
+    std::vector<std::array<int, 4>> Tri; // per triangle slot: vertices and sheet (sheet -1: dead)
+    std::vector<Vec3> P;                 // vertex positions
+    std::vector<double> Worst, Gap;      // per triangle slot: remeshed -> input
+    std::vector<Vec3> Far;
+    std::vector<int> Edge;
+    std::vector<std::vector<double>> D2; // per sheet, per input sample: squared distance ...
+    std::vector<std::vector<int>> At;    // ... and the nearest triangle's slot (-1: none)
+  } Cache;
+  bool Unchanged(size_t t) const
+  {
+    const MeasureCache& c = this->Cache;
+    if (!c.Valid || t >= c.Tri.size() || !this->T[t].Alive || c.Tri[t][3] != this->T[t].Sheet)
+      return false;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int v = this->T[t].V[k];
+      if (v != c.Tri[t][k] || static_cast<size_t>(v) >= c.P.size() || !(this->P[v] == c.P[v]))
+        return false;
+    }
+    return true;
+  }
+
   /// The two-sided distance per interface; fills the points to insert where it exceeds Eps.
   double Measure(double& upperBound, std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf)
   {
     edgeOf.clear();
     const int nSheets = static_cast<int>(this->Ref.size());
-    std::vector<amTriangleLocator> cur(static_cast<size_t>(nSheets));
-    std::vector<std::vector<int>> ids(static_cast<size_t>(nSheets));
+    const size_t nt = this->T.size();
+    std::vector<char> same(nt, 0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(nt), [&](vtkIdType t0, vtkIdType t1) {
+      for (vtkIdType t = t0; t < t1; ++t)
+        same[t] = this->Unchanged(static_cast<size_t>(t)) ? 1 : 0;
+    });
+    // Per sheet: the whole current surface, and the triangles changed since the last Measure.
+    std::vector<amTriangleLocator> cur(static_cast<size_t>(nSheets)), changed(static_cast<size_t>(nSheets));
+    std::vector<std::vector<int>> ids(static_cast<size_t>(nSheets)), changedIds(static_cast<size_t>(nSheets));
     {
-      std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets));
+      std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets)),
+        changedTris(static_cast<size_t>(nSheets));
       std::vector<std::array<double, 3>> pts(this->P.size());
       for (size_t i = 0; i < this->P.size(); ++i)
         pts[i] = { this->P[i].x(), this->P[i].y(), this->P[i].z() };
-      for (size_t t = 0; t < this->T.size(); ++t)
+      for (size_t t = 0; t < nt; ++t)
         if (this->T[t].Alive)
         {
-          tris[this->T[t].Sheet].push_back({ this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] });
+          const std::array<vtkIdType, 3> v = { this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] };
+          tris[this->T[t].Sheet].push_back(v);
           ids[this->T[t].Sheet].push_back(static_cast<int>(t));
+          if (!same[t])
+          {
+            changedTris[this->T[t].Sheet].push_back(v);
+            changedIds[this->T[t].Sheet].push_back(static_cast<int>(t));
+          }
         }
       for (int s = 0; s < nSheets; ++s)
+      {
         cur[s].Build(pts, tris[s]);
+        changed[s].Build(pts, changedTris[s]);
+      }
     }
+    MeasureCache& cache = this->Cache;
+    cache.D2.resize(static_cast<size_t>(nSheets));
+    cache.At.resize(static_cast<size_t>(nSheets));
     double worst = 0, gap = 0;
     insert.clear();
-    std::vector<char> used(this->T.size(), 0);
+    std::vector<char> used(nt, 0);
     const double eps2 = this->Eps * this->Eps;
     // Input -> remeshed.
     for (int s = 0; s < nSheets; ++s)
     {
       const auto& samples = this->RefSamples[s];
-      std::vector<double> d2(samples.size());
-      std::vector<vtkIdType> at(samples.size());
+      std::vector<double>& d2 = cache.D2[s];
+      std::vector<int>& at = cache.At[s];
+      const bool known = cache.Valid && d2.size() == samples.size();
+      if (!known)
+      {
+        d2.assign(samples.size(), 0.0);
+        at.assign(samples.size(), -1);
+      }
       vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType i0, vtkIdType i1) {
         double cl[3];
+        vtkIdType a;
         for (vtkIdType i = i0; i < i1; ++i)
-          d2[i] = cur[s].ClosestPoint(samples[i].data(), cl, at[i]);
+          if (known && at[i] >= 0 && same[at[i]])
+          {
+            const double q = changed[s].ClosestPoint(samples[i].data(), cl, a);
+            if (q < d2[i])
+            {
+              d2[i] = q;
+              at[i] = changedIds[s][a];
+            }
+          }
+          else
+          {
+            d2[i] = cur[s].ClosestPoint(samples[i].data(), cl, a);
+            at[i] = a >= 0 ? ids[s][a] : -1;
+          }
       });
       for (size_t i = 0; i < samples.size(); ++i)
       {
         worst = std::max(worst, std::sqrt(d2[i]));
         if (d2[i] > eps2 && at[i] >= 0)
         {
-          const int t = ids[s][at[i]];
+          const int t = at[i];
           if (!used[t])
           {
             used[t] = 1;
@@ -724,20 +792,27 @@ public:
         }
       }
     }
-    // Remeshed -> input: a grid of points on every triangle, spacing at most Eps.
-    std::vector<int> alive;
-    for (size_t t = 0; t < this->T.size(); ++t)
+    // Remeshed -> input: a grid of points on every triangle, spacing at most Eps (again only on
+    // the triangles that changed).
+    std::vector<int> alive, todo;
+    for (size_t t = 0; t < nt; ++t)
       if (this->T[t].Alive)
+      {
         alive.push_back(static_cast<int>(t));
-    std::vector<double> triWorst(alive.size()), triGap(alive.size());
-    std::vector<Vec3> triFar(alive.size());
-    std::vector<int> triEdge(alive.size(), -1); // the far sample lies on edge k (V[k], V[k+1]), or -1
-    vtkSMPTools::For(0, static_cast<vtkIdType>(alive.size()), [&](vtkIdType i0, vtkIdType i1) {
+        if (!same[t])
+          todo.push_back(static_cast<int>(t));
+      }
+    cache.Worst.resize(nt, 0.0);
+    cache.Gap.resize(nt, 0.0);
+    cache.Far.resize(nt, Vec3::Zero());
+    cache.Edge.resize(nt, -1); // the far sample lies on edge k (V[k], V[k+1]), or -1
+    vtkSMPTools::For(0, static_cast<vtkIdType>(todo.size()), [&](vtkIdType i0, vtkIdType i1) {
       double cl[3];
       vtkIdType tt;
       for (vtkIdType i = i0; i < i1; ++i)
       {
-        const Tri& t = this->T[alive[i]];
+        const int slot = todo[i];
+        const Tri& t = this->T[slot];
         const Vec3 &a = this->P[t.V[0]], &b = this->P[t.V[1]], &c = this->P[t.V[2]];
         const double longest = std::max({ (b - a).norm(), (c - b).norm(), (a - c).norm() });
         // Spacing Eps, at most 12 intervals per edge (the gap enters the upper bound).
@@ -757,23 +832,29 @@ public:
               onEdge = v == 0 ? 0 : (u + v == n ? 1 : (u == 0 ? 2 : -1));
             }
           }
-        triWorst[i] = std::sqrt(w);
-        triFar[i] = far;
-        triEdge[i] = onEdge;
-        triGap[i] = longest / n / std::sqrt(3.0);
+        cache.Worst[slot] = std::sqrt(w);
+        cache.Far[slot] = far;
+        cache.Edge[slot] = onEdge;
+        cache.Gap[slot] = longest / n / std::sqrt(3.0);
       }
     });
-    for (size_t i = 0; i < alive.size(); ++i)
+    for (int t : alive)
     {
-      worst = std::max(worst, triWorst[i]);
-      gap = std::max(gap, triGap[i]);
-      if (triWorst[i] > this->Eps && !used[alive[i]])
+      worst = std::max(worst, cache.Worst[t]);
+      gap = std::max(gap, cache.Gap[t]);
+      if (cache.Worst[t] > this->Eps && !used[t])
       {
-        used[alive[i]] = 1;
-        insert.push_back({ alive[i], triFar[i] });
-        edgeOf.push_back(triEdge[i]);
+        used[t] = 1;
+        insert.push_back({ t, cache.Far[t] });
+        edgeOf.push_back(cache.Edge[t]);
       }
     }
+    // What this Measure saw.
+    cache.Tri.resize(nt);
+    for (size_t t = 0; t < nt; ++t)
+      cache.Tri[t] = { this->T[t].V[0], this->T[t].V[1], this->T[t].V[2], this->T[t].Alive ? this->T[t].Sheet : -1 };
+    cache.P = this->P;
+    cache.Valid = true;
     upperBound = worst + gap;
     return worst;
   }
