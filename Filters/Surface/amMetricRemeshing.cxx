@@ -31,6 +31,7 @@
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 vtkStandardNewMacro(amMetricRemeshing);
 
@@ -1179,12 +1180,17 @@ int amMetricRemeshing::RequestData(
   {
     std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets));
     std::vector<std::vector<char>> seen(static_cast<size_t>(nSheets));
+    std::vector<std::unordered_set<long long>> edgesSeen(static_cast<size_t>(nSheets));
     for (const Tri& t : r.T)
     {
       tris[t.Sheet].push_back({ t.V[0], t.V[1], t.V[2] });
       r.RefSamples[t.Sheet].push_back((r.P[t.V[0]] + r.P[t.V[1]] + r.P[t.V[2]]) / 3.0);
-      for (int k = 0; k < 3; ++k) // interior edges twice, junction edges once per interface
-        r.RefSamples[t.Sheet].push_back(0.5 * (r.P[t.V[k]] + r.P[t.V[(k + 1) % 3]]));
+      for (int k = 0; k < 3; ++k) // each edge of an interface once
+      {
+        const long long a = std::min(t.V[k], t.V[(k + 1) % 3]), b = std::max(t.V[k], t.V[(k + 1) % 3]);
+        if (edgesSeen[t.Sheet].insert(a * static_cast<long long>(np) + b).second)
+          r.RefSamples[t.Sheet].push_back(0.5 * (r.P[t.V[k]] + r.P[t.V[(k + 1) % 3]]));
+      }
       auto& s = seen[t.Sheet];
       if (s.empty())
         s.assign(static_cast<size_t>(np), 0);
