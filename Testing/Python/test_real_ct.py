@@ -21,28 +21,38 @@ HEART_CT = os.path.join(SHARED, "totalseg_cardiac_ct", "pulmonary_report", "ct_c
 HEART = os.path.join(SHARED, "totalseg_cardiac_ct", "pulmonary_report", "heart.nii.gz")
 
 
+def run_pipeline(test, name, scan, out):
+    """Run Examples/Pipelines/<name> on scan into out through the CLI; the test fails on an error."""
+    cli = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh"), "run",
+           os.path.join(SOURCE, "Examples", "Pipelines", name), "--set", "input=" + scan, "--output", out, "--quiet"]
+    p = subprocess.run(cli, capture_output=True, text=True, timeout=600)
+    test.assertEqual(p.returncode, 0, p.stderr)
+
+
+def reader(path):
+    import anatomesh
+    r = anatomesh.amImageReader()
+    r.SetFileName(path)
+    return r
+
+
+def dice_of_label_1(seg, mask):
+    """Dice of label 1 between two image readers, in world coordinates (the grids may differ)."""
+    import anatomesh
+    overlap = anatomesh.amLabelOverlap()
+    overlap.SetInputConnection(0, seg.GetOutputPort())
+    overlap.SetInputConnection(1, mask.GetOutputPort())
+    overlap.Update()
+    return overlap.GetDice(1)
+
+
 @unittest.skipUnless(os.path.exists(CT) and os.path.exists(MASK), "shared cardiac CT absent: " + CT)
 class AortaOfRealCT(unittest.TestCase):
     def test_aorta_pipeline_against_mask(self):
-        import anatomesh
         out = os.path.join(TMP, "real_aorta")
-        cli = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh"), "run",
-               os.path.join(SOURCE, "Examples", "Pipelines", "cardiac_aorta.xml"),
-               "--set", "input=" + CT, "--output", out, "--quiet"]
-        p = subprocess.run(cli, capture_output=True, text=True, timeout=600)
-        self.assertEqual(p.returncode, 0, p.stderr)
-
-        def reader(path):
-            r = anatomesh.amImageReader()
-            r.SetFileName(path)
-            return r
-
+        run_pipeline(self, "cardiac_aorta.xml", CT, out)
         seg, mask = reader(os.path.join(out, "aorta_labels.nii.gz")), reader(MASK)
-        overlap = anatomesh.amLabelOverlap()  # in world coordinates
-        overlap.SetInputConnection(0, seg.GetOutputPort())
-        overlap.SetInputConnection(1, mask.GetOutputPort())
-        overlap.Update()
-        dice = overlap.GetDice(1)
+        dice = dice_of_label_1(seg, mask)
         print("aorta Dice against the TotalSegmentator mask: %.3f" % dice)
         self.assertGreaterEqual(dice, 0.85)
 
@@ -66,21 +76,10 @@ class AortaOfRealCT(unittest.TestCase):
 @unittest.skipUnless(os.path.exists(HEART_CT) and os.path.exists(HEART), "shared cardiac CT absent: " + HEART_CT)
 class HeartOfRealCT(unittest.TestCase):
     def test_heart_pipeline_against_mask(self):
-        import anatomesh
         out = os.path.join(TMP, "real_heart")
-        cli = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh"), "run",
-               os.path.join(SOURCE, "Examples", "Pipelines", "cardiac_heart.xml"),
-               "--set", "input=" + HEART_CT, "--output", out, "--quiet"]
-        p = subprocess.run(cli, capture_output=True, text=True, timeout=600)
-        self.assertEqual(p.returncode, 0, p.stderr)
-        seg, mask = anatomesh.amImageReader(), anatomesh.amImageReader()
-        seg.SetFileName(os.path.join(out, "heart_labels.nii.gz"))
-        mask.SetFileName(HEART)  # a larger grid than the crop's
-        overlap = anatomesh.amLabelOverlap()
-        overlap.SetInputConnection(0, seg.GetOutputPort())
-        overlap.SetInputConnection(1, mask.GetOutputPort())
-        overlap.Update()
-        dice = overlap.GetDice(1)
+        run_pipeline(self, "cardiac_heart.xml", HEART_CT, out)
+        # The heart mask lies on a larger grid than the crop's.
+        dice = dice_of_label_1(reader(os.path.join(out, "heart_labels.nii.gz")), reader(HEART))
         print("heart Dice against the TotalSegmentator mask: %.3f" % dice)
         self.assertGreaterEqual(dice, 0.8)
 
