@@ -4,8 +4,7 @@ The aorta pipeline (Examples/Pipelines/cardiac_aorta.xml: nine seeds, polar snak
 slice) is compared with the provided TotalSegmentator mask (the issue's bar: Dice >= 0.85; measured
 0.889), and its tetrahedral mesh with the segmentation's volume. The heart pipeline
 (Examples/Pipelines/cardiac_heart.xml) is compared with the pulmonary crop's heart mask, which lies
-on another grid (world coordinates): measured 0.829, guarded at 0.8 (below the 0.85 that the aorta
-meets; README's known limits say where it goes wrong).
+on another grid (world coordinates): measured 0.876, against the same bar of 0.85.
 """
 import os
 import subprocess
@@ -81,7 +80,7 @@ class HeartOfRealCT(unittest.TestCase):
         # The heart mask lies on a larger grid than the crop's.
         dice = dice_of_label_1(reader(os.path.join(out, "heart_labels.nii.gz")), reader(HEART))
         print("heart Dice against the TotalSegmentator mask: %.3f" % dice)
-        self.assertGreaterEqual(dice, 0.8)
+        self.assertGreaterEqual(dice, 0.85)
 
         import numpy as np
         from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -91,7 +90,7 @@ class HeartOfRealCT(unittest.TestCase):
         r.Update()
         grid = r.GetOutput()
         regions = set(vtk_to_numpy(grid.GetCellData().GetArray("Region")).tolist())
-        self.assertEqual(regions, {1, 2})  # heart and aorta
+        self.assertEqual(regions, {1, 2, 3})  # heart, aorta, superior vena cava
         self.assertTrue(np.all(vtk_to_numpy(grid.GetCellData().GetArray("Volume")) > 0))
 
 
