@@ -314,6 +314,23 @@ public:
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   }
+  /// Whether v's connected component has at most n vertices (searches no further than that).
+  bool ComponentAtMost(int v, size_t n) const
+  {
+    std::vector<int> seen{ v }, next;
+    for (size_t i = 0; i < seen.size(); ++i)
+    {
+      this->Neighbours(seen[i], next);
+      for (int w : next)
+        if (std::find(seen.begin(), seen.end(), w) == seen.end())
+        {
+          seen.push_back(w);
+          if (seen.size() > n)
+            return false;
+        }
+    }
+    return true;
+  }
   void EdgeTriangles(int a, int b, std::vector<int>& out) const
   {
     out.clear();
@@ -380,6 +397,11 @@ public:
     std::sort(apex.begin(), apex.end());
     apex.erase(std::unique(apex.begin(), apex.end()), apex.end());
     if (apex != common || apex.size() != edge.size())
+      return false;
+    // A closed fragment of five vertices or fewer is not collapsed further: as a tetrahedron it
+    // is flat enough to turn inside out when its vertices are moved onto the input (seen on the
+    // frog's thin organs: inverted bubbles whose labels then contradict the volume around them).
+    if (this->ComponentAtMost(a, 5))
       return false;
     for (int t : this->VT[a])
     {
