@@ -23,6 +23,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <map>
 #include <set>
 
 namespace
@@ -165,4 +167,63 @@ TEST(MetricRemeshing, BadInput)
   rm->SetInputConnection(sphere->GetOutputPort());
   rm->Update();
   EXPECT_TRUE(errors->ErrorContains("no 6-component point data \"Metric\"")) << errors->AllErrors();
+}
+
+// Fragments a voxel or two across (what thin organs leave, as on the frog): coarsened with a large
+// target size, none may shrink below five vertices (a tetrahedron that flat can turn inside out
+// when projected onto the input) and every one stays oriented as the labels say.
+TEST(MetricRemeshing, TinyFragmentsNeverBecomeTetrahedra)
+{
+  const double origin[3] = { 0, 0, 0 };
+  auto img = amTest::LabelMap(40, 40, 12, 1.0, origin, [](double x, double y, double z) {
+    const int i = static_cast<int>(x), j = static_cast<int>(y), k = static_cast<int>(z);
+    if (k < 4 || k > 5 || i < 2 || j < 2 || i > 37 || j > 37)
+      return 0;
+    // Single voxels, 2x1 bars and 2x2 plates on a 4-voxel lattice, labels 1 and 2.
+    const int ci = (i - 2) % 4, cj = (j - 2) % 4, kind = ((i - 2) / 4 + (j - 2) / 4) % 3;
+    const bool in = kind == 0 ? (ci == 0 && cj == 0 && k == 4) : kind == 1 ? (ci < 2 && cj == 0 && k == 4) : (ci < 2 && cj < 2);
+    return in ? 1 + ((i - 2) / 4) % 2 : 0;
+  });
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputData(img);
+  vtkNew<amMetricRemeshing> rm;
+  rm->SetInputConnection(ls->GetOutputPort());
+  rm->SetTargetSize(6.0);
+  rm->SetTolerance(1.0);
+  rm->Update();
+  vtkPolyData* out = rm->GetOutput();
+  ASSERT_GT(out->GetNumberOfCells(), 0);
+  ExpectClosedRegions(out);
+  // Connected components through shared vertices: vertex count and signed volume each.
+  const vtkIdType np = out->GetNumberOfPoints();
+  std::vector<vtkIdType> parent(static_cast<size_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+    parent[i] = i;
+  std::function<vtkIdType(vtkIdType)> find = [&](vtkIdType x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  vtkIdType npts;
+  const vtkIdType* ids;
+  for (out->GetPolys()->InitTraversal(); out->GetPolys()->GetNextCell(npts, ids);)
+    for (int k = 1; k < 3; ++k)
+      parent[find(ids[k])] = find(ids[0]);
+  std::map<vtkIdType, std::set<vtkIdType>> vertices;
+  std::map<vtkIdType, double> volume;
+  for (out->GetPolys()->InitTraversal(); out->GetPolys()->GetNextCell(npts, ids);)
+  {
+    double p[3][3], c[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      out->GetPoint(ids[k], p[k]);
+      vertices[find(ids[0])].insert(ids[k]);
+    }
+    vtkMath::Cross(p[1], p[2], c);
+    volume[find(ids[0])] += vtkMath::Dot(p[0], c) / 6.0;
+  }
+  EXPECT_GE(vertices.size(), 60u);
+  int positive = 0, negative = 0;
+  for (const auto& entry : vertices)
+  {
+    EXPECT_GE(entry.second.size(), 5u) << "a fragment shrank to a tetrahedron";
+    (volume[entry.first] > 0 ? positive : negative) += 1;
+  }
+  EXPECT_TRUE(positive == 0 || negative == 0) << positive << " fragments one way, " << negative << " the other";
 }
