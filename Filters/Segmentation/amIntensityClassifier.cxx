@@ -25,7 +25,6 @@
 
 #include <atomic>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <sstream>
 
@@ -235,7 +234,7 @@ int amIntensityClassifier::RequestData(
             }
           }
     // Visit the 6 neighbours of id, calling f(neighbour).
-    const auto neighbours = [&](vtkIdType id, const std::function<void(vtkIdType)>& f) {
+    const auto neighbours = [&](vtkIdType id, auto&& f) {
       const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
                 k = static_cast<int>(id / sz);
       if (i > 0) f(id - sx);

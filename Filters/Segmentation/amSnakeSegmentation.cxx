@@ -542,6 +542,12 @@ int amSnakeSegmentation::RequestData(
           m->FillBuffer(0);
           return m;
         };
+        // The stopping rule of a propagation: the section vanished, or changed abruptly (the
+        // structure ended, or merged with another one).
+        const auto ends = [&](size_t area, size_t previousArea) {
+          return area * pixelArea < this->MinimumSliceArea || area > this->MaximumAreaChange * previousArea ||
+            area * this->MaximumAreaChange < previousArea;
+        };
         if (this->ContourModel == Polar)
         {
           // One track per seed: a star-shaped snake in the seed's slice, then slice after slice
@@ -590,7 +596,7 @@ int amSnakeSegmentation::RequestData(
             measure(s0, area0, taken);
             // A seed whose section earlier tracks already cover (90 %) adds nothing; one that
             // covers more (where a vessel's section is not star-shaped, as in the arch) goes on.
-            if (area0 * pixelArea < this->MinimumSliceArea || 10 * taken >= 9 * area0)
+            if (area0 == 0 || area0 * pixelArea < this->MinimumSliceArea || 10 * taken >= 9 * area0)
               continue;
             store(s0);
             const std::vector<unsigned char> seedSection = section;
@@ -629,17 +635,12 @@ int amSnakeSegmentation::RequestData(
                 load(is);
                 std::fill(section.begin(), section.end(), 0);
                 contour.Fill(mu, mv, contour.Find(mu, mv, prior, pp), section.data());
-                size_t area = 0;
-                for (unsigned char q : section)
-                  area += q;
-                // The stopping rule: the section vanished, or changed abruptly (ended or merged).
-                if (area * pixelArea < this->MinimumSliceArea || area > this->MaximumAreaChange * previousArea ||
-                  area * this->MaximumAreaChange < previousArea)
-                  break;
-                // ... or it no longer looks like the structure (a heart's section entering the liver).
-                if (contrast() < this->MinimumSectionContrast * seedContrast)
-                  break;
+                size_t area;
                 measure(is, area, taken);
+                // The stopping rule, or the section no longer looks like the structure (a heart's
+                // section entering the liver).
+                if (ends(area, previousArea) || contrast() < this->MinimumSectionContrast * seedContrast)
+                  break;
                 store(is);
                 if (2 * taken > area)
                   break; // met another track
@@ -792,9 +793,7 @@ int amSnakeSegmentation::RequestData(
               }
               KeepOverlapping<2>(next, previous);
               const size_t area = Count<2>(next);
-              // The stopping rule: the section vanished, or changed abruptly (ended or merged).
-              if (area * pixelArea < this->MinimumSliceArea || area > this->MaximumAreaChange * previousArea ||
-                area * this->MaximumAreaChange < previousArea)
+              if (ends(area, previousArea))
                 break;
               store(next, is);
               previous = next;

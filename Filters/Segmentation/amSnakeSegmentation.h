@@ -39,9 +39,9 @@
  * (above OutsideThreshold), or where more than half its section is already segmented (it has met
  * another track). A
  * seed whose section earlier tracks already cover (90 %) starts none; others do, so a seed where
- * two tracks meet in a section that no star-shaped contour covers (the aortic arch) joins them. For vessels whose contents do
- * not have one intensity (a dissection's false lumen, thrombus, the wall) next to tissue of the
- * same intensity, which no intensity interval separates.
+ * two tracks meet in a section that no star-shaped contour covers (the aortic arch) joins them.
+ * For vessels whose contents do not have one intensity (a dissection's false lumen, thrombus, the
+ * wall) next to tissue of the same intensity, which no intensity interval separates.
  *
  * Output: a label map on the input's grid (scalars "Labels", uint8), field data
  * "SegmentedVolumes" (mm^3 per label) and "Thresholds" (the interval used per label).

@@ -401,7 +401,7 @@ public:
     // A closed fragment of five vertices or fewer is not collapsed further: as a tetrahedron it
     // is flat enough to turn inside out when its vertices are moved onto the input (seen on the
     // frog's thin organs: inverted bubbles whose labels then contradict the volume around them).
-    if (this->ComponentAtMost(a, 5))
+    if (na.size() < 5 && this->ComponentAtMost(a, 5)) // a and five neighbours are six already
       return false;
     for (int t : this->VT[a])
     {

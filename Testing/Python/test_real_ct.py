@@ -4,7 +4,7 @@ The aorta pipeline (Examples/Pipelines/cardiac_aorta.xml: nine seeds, polar snak
 slice) is compared with the provided TotalSegmentator mask (the issue's bar: Dice >= 0.85; measured
 0.889), and its tetrahedral mesh with the segmentation's volume. The heart pipeline
 (Examples/Pipelines/cardiac_heart.xml) is compared with the pulmonary crop's heart mask, which lies
-on another grid (world coordinates): measured 0.876, against the same bar of 0.85.
+on another grid (world coordinates): measured 0.875, against the same bar of 0.85.
 """
 import os
 import subprocess
