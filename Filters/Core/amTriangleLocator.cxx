@@ -251,3 +251,40 @@ double amTriangleLocator::ClosestPoint(const double x[3], double closest[3], vtk
   }
   return best;
 }
+
+bool amTriangleLocator::WithinDistance(const double x[3], double r2) const
+{
+  if (this->Triangles.empty() || !(r2 >= 0))
+    return false;
+  const double r = std::sqrt(r2);
+  int b0[3], b1[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    b0[d] = std::max(0, static_cast<int>(std::floor((x[d] - r - this->Origin[d]) / this->H)));
+    b1[d] = std::min(this->N[d] - 1, static_cast<int>(std::floor((x[d] + r - this->Origin[d]) / this->H)));
+    if (b0[d] > b1[d])
+      return false;
+  }
+  double q[3];
+  for (int k = b0[2]; k <= b1[2]; ++k)
+    for (int j = b0[1]; j <= b1[1]; ++j)
+      for (int i = b0[0]; i <= b1[0]; ++i)
+      {
+        const vtkIdType b = (static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i;
+        for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
+        {
+          const vtkIdType t = this->BinTriangles[s];
+          const auto& sphere = this->Spheres[t];
+          const double dc = std::sqrt((x[0] - sphere[0]) * (x[0] - sphere[0]) +
+                              (x[1] - sphere[1]) * (x[1] - sphere[1]) + (x[2] - sphere[2]) * (x[2] - sphere[2])) -
+            sphere[3];
+          if (dc > 0 && dc * dc > r2)
+            continue;
+          const auto& tri = this->Triangles[t];
+          if (ClosestPointOnTriangle(x, this->Points[tri[0]].data(), this->Points[tri[1]].data(),
+                this->Points[tri[2]].data(), q) <= r2)
+            return true;
+        }
+      }
+  return false;
+}

@@ -30,6 +30,11 @@ public:
   /// triangle index (-1 and +inf when there is no triangle).
   double ClosestPoint(const double x[3], double closest[3], vtkIdType& triangle) const;
 
+  /// Whether some triangle lies within squared distance r2 of x (the same answer as
+  /// ClosestPoint(x) <= r2, but only the bins within reach are searched and the first triangle
+  /// found within reach ends the search).
+  bool WithinDistance(const double x[3], double r2) const;
+
   /// A sphere about the centroid of (a, b, c) holding the triangle: centre and radius, the radius
   /// inflated by a relative 1e-9 so that rejections by it are safe against rounding.
   static std::array<double, 4> BoundingSphere(const double a[3], const double b[3], const double c[3]);

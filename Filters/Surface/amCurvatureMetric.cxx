@@ -11,7 +11,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
 
 #include <Eigen/Dense>
 
@@ -99,6 +102,8 @@ amCurvatureMetric::amCurvatureMetric()
   , Gradation(1.3)
   , Anisotropic(true)
   , NeighbourhoodRings(2)
+  , NeighbourhoodRadius(0.0)
+  , ScaleAdaptive(true)
 {
   amThreading::Initialize();
 }
@@ -131,78 +136,154 @@ int amCurvatureMetric::RequestData(
     return (static_cast<long long>(a) << 32) ^ static_cast<unsigned int>(b);
   };
 
-  std::vector<Curvature> curv(static_cast<size_t>(np));
+  // The fit's neighbourhood: every vertex of the interface within 'radius' of the vertex (reached
+  // through the interface's triangles), and at least its NeighbourhoodRings-ring.
+  double baseRadius = this->NeighbourhoodRadius;
+  if (baseRadius <= 0)
+  {
+    vtkDataArray* voxel = input->GetFieldData()->GetArray("VoxelSize");
+    baseRadius = voxel && voxel->GetNumberOfTuples() > 0 ? 2.0 * voxel->GetComponent(0, 0) : 0.0;
+    if (!(baseRadius > 0))
+      baseRadius = 0;
+  }
   const int rings = this->NeighbourhoodRings;
-  vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
-    std::vector<vtkIdType> frontier, next, seen;
-    std::vector<Vec3> nbrs;
-    std::vector<long long> sheets;
-    for (vtkIdType v = v0; v < v1; ++v)
-    {
-      sheets.clear();
-      for (vtkIdType r = mesh.VertexTriangleStart[v]; r < mesh.VertexTriangleStart[v + 1]; ++r)
-        sheets.push_back(sheetOf(mesh.VertexTriangles[r]));
-      std::sort(sheets.begin(), sheets.end());
-      sheets.erase(std::unique(sheets.begin(), sheets.end()), sheets.end());
-      const Vec3 p(mesh.Points[v].data());
-      Curvature best;
-      double bestK = -1;
-      for (long long sheet : sheets)
-      {
-        Vec3 n = Vec3::Zero();
-        for (vtkIdType r = mesh.VertexTriangleStart[v]; r < mesh.VertexTriangleStart[v + 1]; ++r)
-        {
-          const vtkIdType t = mesh.VertexTriangles[r];
-          if (sheetOf(t) == sheet)
-            n += Vec3(mesh.TriangleNormal(t).data());
-        }
-        if (n.norm() == 0)
-          continue;
-        n.normalize();
-        // Rings of neighbours through the triangles of this sheet.
-        seen.assign(1, v);
-        frontier.assign(1, v);
-        for (int ring = 0; ring < rings; ++ring)
-        {
-          next.clear();
-          for (vtkIdType f : frontier)
-            for (vtkIdType r = mesh.VertexTriangleStart[f]; r < mesh.VertexTriangleStart[f + 1]; ++r)
-            {
-              const vtkIdType t = mesh.VertexTriangles[r];
-              if (sheetOf(t) != sheet)
-                continue;
-              for (vtkIdType q : mesh.Triangles[t])
-                if (std::find(seen.begin(), seen.end(), q) == seen.end())
-                {
-                  seen.push_back(q);
-                  next.push_back(q);
-                }
-            }
-          frontier.swap(next);
-        }
-        nbrs.clear();
-        for (size_t i = 1; i < seen.size(); ++i)
-          nbrs.emplace_back(mesh.Points[seen[i]].data());
-        const Curvature c = Fit(p, n, nbrs);
-        const double k = std::max(std::fabs(c.K1), std::fabs(c.K2));
-        if (k > bestK)
-        {
-          bestK = k;
-          best = c;
-        }
-      }
-      curv[v] = best;
-    }
-  });
-  this->UpdateProgress(0.6);
-
-  // Sizes along the principal directions, then gradation of the smallest one.
   const double eps = this->Tolerance, hmin = this->MinimumSize, hmax = this->MaximumSize;
   auto sizeOf = [&](double k) {
     const double a = std::fabs(k);
-    return a > 0 ? std::min(hmax, std::max(hmin, std::sqrt(8 * eps / a))) : hmax;
+    return a > 0 ? std::min(hmax, std::max(hmin, std::sqrt(6 * eps / a))) : hmax;
   };
-  std::vector<double> h1(static_cast<size_t>(np)), h2(static_cast<size_t>(np)), cap(static_cast<size_t>(np));
+  struct Stamps
+  {
+    std::vector<int> Of; // per vertex: the search that last reached it
+    int Current = 0;
+  };
+  vtkSMPThreadLocal<Stamps> stampLocal;
+  std::vector<Curvature> curv(static_cast<size_t>(np));
+  // radius: per vertex; a vertex whose radius changed by less than 10 % since its last fit keeps it.
+  std::vector<double> fitted(static_cast<size_t>(np), -1.0);
+  auto fitAll = [&](const std::vector<double>& radius) {
+    vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+      Stamps& stamps = stampLocal.Local();
+      std::vector<int>& stamp = stamps.Of;
+      if (stamp.size() != static_cast<size_t>(np))
+        stamp.assign(static_cast<size_t>(np), 0);
+      std::vector<vtkIdType> frontier, next, seen;
+      std::vector<Vec3> nbrs;
+      std::vector<long long> sheets;
+      for (vtkIdType v = v0; v < v1; ++v)
+      {
+        if (fitted[v] >= 0 && std::fabs(radius[v] - fitted[v]) <= 0.1 * fitted[v])
+          continue;
+        fitted[v] = radius[v];
+        sheets.clear();
+        for (vtkIdType r = mesh.VertexTriangleStart[v]; r < mesh.VertexTriangleStart[v + 1]; ++r)
+          sheets.push_back(sheetOf(mesh.VertexTriangles[r]));
+        std::sort(sheets.begin(), sheets.end());
+        sheets.erase(std::unique(sheets.begin(), sheets.end()), sheets.end());
+        const Vec3 p(mesh.Points[v].data());
+        const double r2 = radius[v] * radius[v];
+        Curvature best;
+        double bestK = -1;
+        for (long long sheet : sheets)
+        {
+          const int mark = ++stamps.Current;
+          Vec3 n = Vec3::Zero();
+          for (vtkIdType r = mesh.VertexTriangleStart[v]; r < mesh.VertexTriangleStart[v + 1]; ++r)
+          {
+            const vtkIdType t = mesh.VertexTriangles[r];
+            if (sheetOf(t) == sheet)
+              n += Vec3(mesh.TriangleNormal(t).data());
+          }
+          if (n.norm() == 0)
+            continue;
+          n.normalize();
+          seen.assign(1, v);
+          stamp[v] = mark;
+          frontier.assign(1, v);
+          for (int ring = 0; !frontier.empty(); ++ring)
+          {
+            next.clear();
+            for (vtkIdType f : frontier)
+              for (vtkIdType r = mesh.VertexTriangleStart[f]; r < mesh.VertexTriangleStart[f + 1]; ++r)
+              {
+                const vtkIdType t = mesh.VertexTriangles[r];
+                if (sheetOf(t) != sheet)
+                  continue;
+                for (vtkIdType q : mesh.Triangles[t])
+                  if (stamp[q] != mark &&
+                    (ring < rings || (Vec3(mesh.Points[q].data()) - p).squaredNorm() <= r2))
+                  {
+                    stamp[q] = mark;
+                    seen.push_back(q);
+                    next.push_back(q);
+                  }
+              }
+            frontier.swap(next);
+          }
+          nbrs.clear();
+          for (size_t i = 1; i < seen.size(); ++i)
+            nbrs.emplace_back(mesh.Points[seen[i]].data());
+          const Curvature c = Fit(p, n, nbrs);
+          const double k = std::max(std::fabs(c.K1), std::fabs(c.K2));
+          if (k > bestK)
+          {
+            bestK = k;
+            best = c;
+          }
+        }
+        curv[v] = best;
+      }
+    });
+  };
+  std::vector<double> radius(static_cast<size_t>(np), baseRadius);
+  fitAll(radius);
+  this->UpdateProgress(0.3);
+  if (this->ScaleAdaptive)
+  {
+    // Again at the scale of the triangles asked for: over the size the last fit gives (the disc a
+    // vertex's triangles will cover; from the first radius to three times it), so that ripples shorter
+    // than the triangles (the staircase that smoothing leaves on a label map's surface) average
+    // out instead of shrinking every size. The size taken is the median over the vertex's 2-ring,
+    // so that a vertex whose small fit was all noise does not stay at the small scale.
+    std::vector<double> h(static_cast<size_t>(np));
+    for (int pass = 0; pass < 3; ++pass)
+    {
+      for (vtkIdType v = 0; v < np; ++v)
+        h[v] = std::min(sizeOf(curv[v].K1), sizeOf(curv[v].K2));
+      vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+        std::vector<vtkIdType> near;
+        std::vector<double> values;
+        for (vtkIdType v = v0; v < v1; ++v)
+        {
+          near.assign(1, v);
+          for (int ring = 0, from = 0; ring < 2; ++ring)
+          {
+            const int to = static_cast<int>(near.size());
+            for (int i = from; i < to; ++i)
+              for (vtkIdType r = mesh.RingStart[near[i]]; r < mesh.RingStart[near[i] + 1]; ++r)
+                near.push_back(mesh.Ring[r]);
+            from = to;
+          }
+          std::sort(near.begin(), near.end());
+          near.erase(std::unique(near.begin(), near.end()), near.end());
+          values.clear();
+          for (vtkIdType q : near)
+            values.push_back(h[q]);
+          std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+          radius[v] = std::max(baseRadius, std::min(3.0 * baseRadius, values[values.size() / 2]));
+        }
+      });
+      fitAll(radius);
+      this->UpdateProgress(0.3 + 0.1 * (pass + 1));
+    }
+  }
+  this->UpdateProgress(0.6);
+
+  // Sizes along the principal directions, then gradation of the smaller and of the larger one
+  // (each principal size is capped by the graded field of its kind, so an anisotropic metric
+  // stays anisotropic: capping both by the graded smaller size would make it isotropic).
+  std::vector<double> h1(static_cast<size_t>(np)), h2(static_cast<size_t>(np)), cap(static_cast<size_t>(np)),
+    capLarge(static_cast<size_t>(np));
   for (vtkIdType v = 0; v < np; ++v)
   {
     h1[v] = sizeOf(curv[v].K1);
@@ -210,32 +291,39 @@ int amCurvatureMetric::RequestData(
     if (!this->Anisotropic)
       h1[v] = h2[v] = std::min(h1[v], h2[v]);
     cap[v] = std::min(h1[v], h2[v]);
+    capLarge[v] = std::max(h1[v], h2[v]);
   }
   if (this->Gradation >= 1.0)
   {
     const double slope = this->Gradation - 1.0;
-    using Item = std::pair<double, vtkIdType>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-    for (vtkIdType v = 0; v < np; ++v)
-      queue.push({ cap[v], v });
-    while (!queue.empty())
+    for (std::vector<double>* field : { &cap, &capLarge })
     {
-      const Item it = queue.top();
-      queue.pop();
-      if (it.first > cap[it.second])
-        continue;
-      const vtkIdType i = it.second;
-      for (vtkIdType r = mesh.RingStart[i]; r < mesh.RingStart[i + 1]; ++r)
+      std::vector<double>& f = *field;
+      using Item = std::pair<double, vtkIdType>;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+      for (vtkIdType v = 0; v < np; ++v)
+        queue.push({ f[v], v });
+      while (!queue.empty())
       {
-        const vtkIdType j = mesh.Ring[r];
-        const double L = (Vec3(mesh.Points[i].data()) - Vec3(mesh.Points[j].data())).norm();
-        const double candidate = cap[i] + slope * L;
-        if (candidate < cap[j])
+        const Item it = queue.top();
+        queue.pop();
+        if (it.first > f[it.second])
+          continue;
+        const vtkIdType i = it.second;
+        for (vtkIdType r = mesh.RingStart[i]; r < mesh.RingStart[i + 1]; ++r)
         {
-          cap[j] = candidate;
-          queue.push({ candidate, j });
+          const vtkIdType j = mesh.Ring[r];
+          const double L = (Vec3(mesh.Points[i].data()) - Vec3(mesh.Points[j].data())).norm();
+          const double candidate = f[i] + slope * L;
+          if (candidate < f[j])
+          {
+            f[j] = candidate;
+            queue.push({ candidate, j });
+          }
         }
       }
+      if (!this->Anisotropic)
+        break; // both principal sizes are the smaller one
     }
   }
   this->UpdateProgress(0.8);
@@ -261,7 +349,12 @@ int amCurvatureMetric::RequestData(
   for (vtkIdType v = 0; v < np; ++v)
   {
     const Curvature& c = curv[v];
-    const double a = std::min(h1[v], cap[v]), b = std::min(h2[v], cap[v]), n = std::min(a, b);
+    // The smaller principal size is capped by the graded smaller sizes, the larger by the graded
+    // larger ones (isotropic: both are the smaller).
+    const bool firstSmaller = h1[v] <= h2[v];
+    const double a = std::min(h1[v], firstSmaller || !this->Anisotropic ? cap[v] : capLarge[v]);
+    const double b = std::min(h2[v], !firstSmaller || !this->Anisotropic ? cap[v] : capLarge[v]);
+    const double n = std::min(a, b);
     const Eigen::Matrix3d M = c.D1 * c.D1.transpose() / (a * a) + c.D2 * c.D2.transpose() / (b * b) +
       c.N * c.N.transpose() / (n * n);
     const double m[6] = { M(0, 0), M(1, 1), M(2, 2), M(0, 1), M(1, 2), M(0, 2) };
@@ -278,7 +371,8 @@ int amCurvatureMetric::RequestData(
   std::ostringstream params;
   params << "Tolerance=" << eps << " MinimumSize=" << hmin << " MaximumSize=" << hmax
          << " Gradation=" << this->Gradation << " Anisotropic=" << this->Anisotropic
-         << " NeighbourhoodRings=" << rings;
+         << " NeighbourhoodRings=" << rings << " NeighbourhoodRadius=" << baseRadius
+         << " ScaleAdaptive=" << this->ScaleAdaptive;
   amProvenance::Record(output, input, "amCurvatureMetric", params.str());
   this->UpdateProgress(1.0);
   return 1;
@@ -293,4 +387,6 @@ void amCurvatureMetric::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Gradation: " << this->Gradation << "\n";
   os << indent << "Anisotropic: " << this->Anisotropic << "\n";
   os << indent << "NeighbourhoodRings: " << this->NeighbourhoodRings << "\n";
+  os << indent << "NeighbourhoodRadius: " << this->NeighbourhoodRadius << "\n";
+  os << indent << "ScaleAdaptive: " << this->ScaleAdaptive << "\n";
 }

@@ -294,9 +294,7 @@ public:
   }
   bool Near(int sheet, const Vec3& x) const
   {
-    double cl[3];
-    vtkIdType t;
-    return this->Ref[sheet].ClosestPoint(x.data(), cl, t) <= this->Eps * this->Eps;
+    return this->Ref[sheet].WithinDistance(x.data(), this->Eps * this->Eps);
   }
   /// Edge midpoints and centroid of a (new) triangle lie within Eps of its interface.
   bool TriangleNear(int sheet, const Vec3& a, const Vec3& b, const Vec3& c) const
@@ -313,6 +311,63 @@ public:
           out.push_back(this->T[t].V[k]);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+  /// Whether every input vertex that an affected vertex stands for stays within Eps of that
+  /// vertex's triangles of its interface (a junction-curve point: of every interface around the
+  /// vertex) once the triangles 'removed' are replaced by the new ones (ids, positions, sheets).
+  /// 'from' (or -1) is a vertex disappearing into 'into': its points are checked with into's.
+  /// Every operation keeps this, so no patch of the input can drift away from the result.
+  bool ClustersStayNear(const std::vector<int>& removed, const std::vector<std::array<int, 3>>& ids,
+    const std::vector<std::array<Vec3, 3>>& pos, const std::vector<int>& sheets, const std::vector<int>& affected,
+    int from = -1, int into = -1) const
+  {
+    const double eps2 = this->Eps * this->Eps;
+    std::vector<std::pair<int, std::array<Vec3, 3>>> star;
+    std::vector<int> starSheets;
+    for (int w : affected)
+    {
+      star.clear();
+      for (int t : this->VT[w])
+        if (std::find(removed.begin(), removed.end(), t) == removed.end())
+          star.push_back({ this->T[t].Sheet,
+            { this->P[this->T[t].V[0]], this->P[this->T[t].V[1]], this->P[this->T[t].V[2]] } });
+      for (size_t n = 0; n < ids.size(); ++n)
+        if (ids[n][0] == w || ids[n][1] == w || ids[n][2] == w)
+          star.push_back({ sheets[n], pos[n] });
+      starSheets.clear();
+      for (const auto& q : star)
+        starSheets.push_back(q.first);
+      std::sort(starSheets.begin(), starSheets.end());
+      starSheets.erase(std::unique(starSheets.begin(), starSheets.end()), starSheets.end());
+      auto near = [&](const Vec3& x, int sheet) {
+        double cl[3];
+        for (const auto& q : star)
+          if (q.first == sheet &&
+            amTriangleLocator::ClosestPointOnTriangle(x.data(), q.second[0].data(), q.second[1].data(),
+              q.second[2].data(), cl) <= eps2)
+            return true;
+        return false;
+      };
+      for (int owner : { w, w == into ? from : -1 })
+      {
+        if (owner < 0)
+          continue;
+        for (const auto& entry : this->Cluster[owner])
+        {
+          const Vec3& x = this->RefPoints[entry.first];
+          if (entry.second >= 0)
+          {
+            if (!near(x, entry.second))
+              return false;
+          }
+          else
+            for (int sheet : starSheets)
+              if (!near(x, sheet))
+                return false;
+        }
+      }
+    }
+    return true;
   }
   /// Whether v's connected component has at most n vertices (searches no further than that).
   bool ComponentAtMost(int v, size_t n) const
@@ -419,62 +474,17 @@ public:
       const Vec3 n0 = this->Normal(t), n1 = (p[1] - p[0]).cross(p[2] - p[0]);
       if (n1.norm() <= 1e-12 * n0.norm() || n0.normalized().dot(n1.normalized()) < 0.5)
         return false;
-      if (MinAngle(p[0], p[1], p[2]) < 0.09) // ~5 degrees
+      if (MinAngle(p[0], p[1], p[2]) < SmallAngle) // a cap or needle no later flip may mend
         return false;
       if (this->Length(b, other[0]) > 4.0 / 3.0 || this->Length(b, other[1]) > 4.0 / 3.0)
         return false;
       if (!this->TriangleNear(this->T[t].Sheet, p[0], p[1], p[2]))
         return false;
     }
-    // The input vertices a stood for must stay within Eps of the triangles of their interface
-    // around b afterwards (so no patch of an interface can retract or vanish).
-    {
-      std::map<int, std::vector<std::array<Vec3, 3>>> ring;
-      for (int t : this->VT[b])
-        if (std::find(edge.begin(), edge.end(), t) == edge.end())
-          ring[this->T[t].Sheet].push_back(
-            { this->P[this->T[t].V[0]], this->P[this->T[t].V[1]], this->P[this->T[t].V[2]] });
-      for (int t : this->VT[a])
-        if (std::find(edge.begin(), edge.end(), t) == edge.end())
-        {
-          std::array<Vec3, 3> q;
-          for (int k = 0; k < 3; ++k)
-            q[k] = this->T[t].V[k] == a ? this->P[b] : this->P[this->T[t].V[k]];
-          ring[this->T[t].Sheet].push_back(q);
-        }
-      std::vector<int> sheetsOfA;
-      for (int t : this->VT[a])
-        sheetsOfA.push_back(this->T[t].Sheet);
-      std::sort(sheetsOfA.begin(), sheetsOfA.end());
-      sheetsOfA.erase(std::unique(sheetsOfA.begin(), sheetsOfA.end()), sheetsOfA.end());
-      const double eps2 = this->Eps * this->Eps;
-      auto near = [&](const Vec3& x, int sheet) {
-        auto it = ring.find(sheet);
-        if (it == ring.end())
-          return false;
-        double cl[3];
-        for (const auto& q : it->second)
-          if (amTriangleLocator::ClosestPointOnTriangle(x.data(), q[0].data(), q[1].data(), q[2].data(), cl) <= eps2)
-            return true;
-        return false;
-      };
-      for (const auto& entry : this->Cluster[a])
-      {
-        const Vec3& x = this->RefPoints[entry.first];
-        if (entry.second >= 0)
-        {
-          if (!near(x, entry.second))
-            return false;
-        }
-        else
-          for (int sheet : sheetsOfA)
-            if (!near(x, sheet))
-              return false;
-      }
-    }
     {
       std::vector<std::array<int, 3>> ids;
       std::vector<std::array<Vec3, 3>> pos;
+      std::vector<int> sheets;
       for (int t : this->VT[a])
         if (std::find(edge.begin(), edge.end(), t) == edge.end())
         {
@@ -487,7 +497,15 @@ public:
           }
           ids.push_back(v);
           pos.push_back(x);
+          sheets.push_back(this->T[t].Sheet);
         }
+      // The input vertices a stood for must stay within Eps of the triangles of their interface
+      // around b afterwards, and those of b and a's other neighbours within Eps of theirs (so no
+      // patch of an interface can retract or vanish).
+      std::vector<int> affected = na;
+      affected.erase(std::remove(affected.begin(), affected.end(), a), affected.end());
+      if (!this->ClustersStayNear(this->VT[a], ids, pos, sheets, affected, a, b))
+        return false;
       if (this->Crosses(ids, pos, this->VT[a]))
         return false;
     }
@@ -585,6 +603,9 @@ public:
     const int sheet = this->T[t1].Sheet;
     if (!this->TriangleNear(sheet, pa, pd, pc) || !this->TriangleNear(sheet, pd, pb, pc))
       return false;
+    if (!this->ClustersStayNear({ t1, t2 }, { { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } },
+          { sheet, sheet }, { a, b, c, d }))
+      return false;
     if (this->Crosses({ { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } }, { t1, t2 }))
       return false;
     const Tri like = this->T[t1];
@@ -676,6 +697,7 @@ public:
       {
         std::vector<std::array<int, 3>> ids;
         std::vector<std::array<Vec3, 3>> pos;
+        std::vector<int> sheets;
         for (int t : this->VT[v])
         {
           ids.push_back({ this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] });
@@ -683,8 +705,10 @@ public:
           for (int k = 0; k < 3; ++k)
             q[k] = this->T[t].V[k] == static_cast<int>(v) ? x : this->P[this->T[t].V[k]];
           pos.push_back(q);
+          sheets.push_back(this->T[t].Sheet);
         }
-        if (this->Crosses(ids, pos, this->VT[v]))
+        ring.push_back(static_cast<int>(v));
+        if (!this->ClustersStayNear(this->VT[v], ids, pos, sheets, ring) || this->Crosses(ids, pos, this->VT[v]))
           continue;
       }
       this->P[v] = x;
@@ -946,9 +970,10 @@ public:
     return true;
   }
 
-  /// Where an insertion was refused because it would cross triangle 'other' of another part of
-  /// the surface: bring both closer to their own input surfaces (which do not cross) by splitting
-  /// their longest edges at points of the input. Returns the number of splits done.
+  /// Split the longest edge of triangle t at the point of the input nearest its midpoint, then
+  /// flip around the new vertex: how the distance bound is restored where it is exceeded, and
+  /// where an insertion was refused because it would cross another part of the surface (both
+  /// come closer to their own input surfaces, which do not cross). Returns the splits done.
   int Refine(int t)
   {
     if (t < 0 || !this->T[t].Alive)
@@ -968,7 +993,10 @@ public:
     double cl[3];
     vtkIdType tri;
     this->Ref[this->T[t].Sheet].ClosestPoint(mid.data(), cl, tri);
-    return this->SplitEdge(t, k, Vec3(cl)) ? 1 : 0;
+    if (!this->SplitEdge(t, k, Vec3(cl)))
+      return 0;
+    this->FlipAround(static_cast<int>(this->P.size()) - 1);
+    return 1;
   }
 
   /// Live triangles with an angle under SmallAngle, and the shortest live edge.
@@ -1259,7 +1287,11 @@ int amMetricRemeshing::RequestData(
       for (size_t i = 0; i < insert.size(); ++i)
       {
         const int t = insert[i].first;
-        const bool ok = edgeOf[i] >= 0 ? r.SplitEdge(t, edgeOf[i], insert[i].second) : r.Insert(t, insert[i].second);
+        // Longest-edge bisection towards the input first (it keeps the angles: the far point
+        // itself, inserted, often lands near a corner or an edge and leaves slivers), the far
+        // point itself where the bisection is refused.
+        const bool ok = r.Refine(t) > 0 ||
+          (edgeOf[i] >= 0 ? r.SplitEdge(t, edgeOf[i], insert[i].second) : r.Insert(t, insert[i].second));
         done += ok;
         if (!ok)
         {

@@ -12,7 +12,12 @@
 #include "amThoraxPhantomSource.h"
 #include "../Cxx/amAnalyticDistance.h"
 
+#include "amCgalIsotropicRemeshing.h"
+
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCleanPolyData.h"
+#include "vtkDataArray.h"
 #include "vtkDiscreteFlyingEdges3D.h"
 #include "vtkDiscreteMarchingCubes.h"
 #include "vtkImageData.h"
@@ -126,14 +131,10 @@ BENCHMARK(Extract)
   ->Iterations(1)
   ->UseRealTime();
 
-/// Phantom at 1 mm: smoothing, metric and remeshing (eps 0.2 mm); then vtkQuadricDecimation of
-/// the smoothed surface to the same triangle count. Both measured against the smoothed surface.
-void Remesh(benchmark::State& state)
+/// The smoothed 1 mm phantom surface (computed once).
+vtkPolyData* Smoothed()
 {
-  const bool quadric = state.range(0) == 1;
   static vtkSmartPointer<vtkPolyData> smooth;
-  static vtkIdType remeshedTriangles = 0;
-  vtkSMPTools::SetBackend("STDThread");
   if (!smooth)
   {
     vtkNew<amLabelSurface> ls;
@@ -144,6 +145,54 @@ void Remesh(benchmark::State& state)
     sm->Update();
     smooth = sm->GetOutput();
   }
+  return smooth;
+}
+
+/// Fraction of the triangles whose angles are all at least 'degrees'.
+double AngleFraction(vtkPolyData* pd, double degrees)
+{
+  vtkIdType good = 0, npts;
+  const vtkIdType* ids;
+  for (pd->GetPolys()->InitTraversal(); pd->GetPolys()->GetNextCell(npts, ids);)
+  {
+    double p[3][3], smallest = 180;
+    for (int k = 0; k < 3; ++k)
+      pd->GetPoint(ids[k], p[k]);
+    for (int k = 0; k < 3; ++k)
+    {
+      double u[3], v[3];
+      vtkMath::Subtract(p[(k + 1) % 3], p[k], u);
+      vtkMath::Subtract(p[(k + 2) % 3], p[k], v);
+      smallest = std::min(smallest, vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v)));
+    }
+    good += smallest >= degrees;
+  }
+  return static_cast<double>(good) / std::max<vtkIdType>(1, pd->GetNumberOfCells());
+}
+
+/// Triangles, Hausdorff and mean distance to the reference, and the angle figures.
+void SurfaceCounters(benchmark::State& state, vtkPolyData* result, vtkPolyData* reference)
+{
+  vtkNew<amSurfaceDistance> d;
+  d->SetInputData(0, result);
+  d->SetInputData(1, reference);
+  d->Update();
+  state.counters["input_triangles"] = static_cast<double>(reference->GetNumberOfCells());
+  state.counters["triangles"] = static_cast<double>(result->GetNumberOfCells());
+  state.counters["hausdorff_mm"] = d->GetHausdorff();
+  state.counters["mean_mm"] = 0.5 * (d->GetMeanAToB() + d->GetMeanBToA());
+  state.counters["angles_ge_20"] = AngleFraction(result, 20);
+  state.counters["peak_MB"] = PeakMegabytes();
+}
+
+/// Phantom at 1 mm: smoothing, metric and remeshing (eps 0.2 mm); then vtkQuadricDecimation of
+/// the smoothed surface to the same triangle count. Both measured against the smoothed surface.
+void Remesh(benchmark::State& state)
+{
+  const bool quadric = state.range(0) == 1;
+  static vtkIdType remeshedTriangles = 0;
+  vtkSMPTools::SetBackend("STDThread");
+  vtkPolyData* smooth = Smoothed();
   vtkSmartPointer<vtkPolyData> result;
   double secondsMetric = 0;
   for (auto _ : state)
@@ -175,31 +224,7 @@ void Remesh(benchmark::State& state)
       result = q->GetOutput();
     }
   }
-  vtkNew<amSurfaceDistance> d;
-  d->SetInputData(0, result);
-  d->SetInputData(1, smooth);
-  d->Update();
-  vtkIdType good = 0, npts;
-  const vtkIdType* ids;
-  for (result->GetPolys()->InitTraversal(); result->GetPolys()->GetNextCell(npts, ids);)
-  {
-    double p[3][3], smallest = 180;
-    for (int k = 0; k < 3; ++k)
-      result->GetPoint(ids[k], p[k]);
-    for (int k = 0; k < 3; ++k)
-    {
-      double u[3], v[3];
-      vtkMath::Subtract(p[(k + 1) % 3], p[k], u);
-      vtkMath::Subtract(p[(k + 2) % 3], p[k], v);
-      smallest = std::min(smallest, vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v)));
-    }
-    good += smallest >= 20;
-  }
-  state.counters["input_triangles"] = static_cast<double>(smooth->GetNumberOfCells());
-  state.counters["triangles"] = static_cast<double>(result->GetNumberOfCells());
-  state.counters["hausdorff_mm"] = d->GetHausdorff();
-  state.counters["mean_mm"] = 0.5 * (d->GetMeanAToB() + d->GetMeanBToA());
-  state.counters["angles_ge_20"] = static_cast<double>(good) / result->GetNumberOfCells();
+  SurfaceCounters(state, result, smooth);
   state.counters["metric_s"] = secondsMetric;
   // Against the phantom's analytic interfaces (the bar: within one voxel, 1 mm).
   const amTest::AnalyticDistance truth = amTest::DistanceToPhantom(result, 1.0);
@@ -213,10 +238,100 @@ void Remesh(benchmark::State& state)
     state.counters["smoothed_surface_mean_mm"] = smoothTruth.MeanSurfaceToTruth;
     state.counters["smoothed_surface_within_1mm"] = smoothTruth.FractionWithin(1.0);
   }
-  state.counters["peak_MB"] = PeakMegabytes();
 }
 // 0 = amCurvatureMetric + amMetricRemeshing, 1 = vtkQuadricDecimation to the same count.
 BENCHMARK(Remesh)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+/// The outer surface of the smoothed 1 mm phantom (every triangle facing the background), as one
+/// unlabelled closed surface: the reference case for CGAL's isotropic remeshing.
+vtkPolyData* OuterSurface()
+{
+  static vtkSmartPointer<vtkPolyData> outer;
+  if (!outer)
+  {
+    vtkPolyData* smooth = Smoothed();
+    vtkDataArray* labels = smooth->GetCellData()->GetArray("Labels");
+    vtkNew<vtkCellArray> polys;
+    vtkIdType npts;
+    const vtkIdType* ids;
+    vtkIdType t = 0;
+    for (smooth->GetPolys()->InitTraversal(); smooth->GetPolys()->GetNextCell(npts, ids); ++t)
+      if (labels->GetComponent(t, 1) == 0)
+        polys->InsertNextCell(npts, ids);
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    pd->SetPoints(smooth->GetPoints());
+    pd->SetPolys(polys);
+    vtkNew<vtkCleanPolyData> clean; // drop the points of the inner interfaces
+    clean->SetInputData(pd);
+    clean->PointMergingOff();
+    clean->Update();
+    outer = clean->GetOutput();
+  }
+  return outer;
+}
+
+/// The comparison with CGAL's uniform isotropic remeshing (3 iterations) on the phantom's
+/// outer surface: MetricRemeshing at a tolerance (curvature metric, isotropic), then CGAL with
+/// the edge length that gives the same triangle count; both measured against the outer surface.
+void OuterRemesh(benchmark::State& state)
+{
+  const bool cgal = state.range(0) == 1;
+  const double eps = state.range(1) / 100.0;
+  static std::map<int, vtkIdType> ours; // triangles of our result, per tolerance
+  vtkSMPTools::SetBackend("STDThread");
+  vtkPolyData* outer = OuterSurface();
+  vtkSmartPointer<vtkPolyData> result;
+  double seconds = 0;
+  for (auto _ : state)
+  {
+    if (!cgal)
+    {
+      vtkNew<amCurvatureMetric> cm;
+      cm->SetInputData(outer);
+      cm->SetTolerance(eps);
+      cm->SetAnisotropic(false);
+      vtkNew<amMetricRemeshing> rm;
+      rm->SetInputConnection(cm->GetOutputPort());
+      rm->SetTolerance(eps);
+      const auto t0 = std::chrono::steady_clock::now();
+      rm->Update();
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      result = rm->GetOutput();
+      ours[static_cast<int>(state.range(1))] = result->GetNumberOfCells();
+    }
+    else
+    {
+      // Edge length for the same count (equilateral triangles of the surface's area), corrected
+      // once by the count the first run gives; the second run is the one timed.
+      const vtkIdType target = ours.count(static_cast<int>(state.range(1))) ? ours[static_cast<int>(state.range(1))] : 92000;
+      double area = 0;
+      vtkIdType npts;
+      const vtkIdType* ids;
+      for (outer->GetPolys()->InitTraversal(); outer->GetPolys()->GetNextCell(npts, ids);)
+      {
+        double p[3][3], u[3], v[3], n[3];
+        for (int k = 0; k < 3; ++k)
+          outer->GetPoint(ids[k], p[k]);
+        vtkMath::Subtract(p[1], p[0], u);
+        vtkMath::Subtract(p[2], p[0], v);
+        vtkMath::Cross(u, v, n);
+        area += 0.5 * vtkMath::Norm(n);
+      }
+      double length = std::sqrt(4.0 * area / (std::sqrt(3.0) * target));
+      result = amBench::CgalIsotropicRemeshing(outer, length, 3);
+      length *= std::sqrt(static_cast<double>(result->GetNumberOfCells()) / target);
+      const auto t0 = std::chrono::steady_clock::now();
+      result = amBench::CgalIsotropicRemeshing(outer, length, 3);
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      state.counters["edge_length_mm"] = length;
+    }
+  }
+  SurfaceCounters(state, result, outer);
+  state.counters["remesh_s"] = seconds;
+}
+// (method, tolerance in 1/100 mm): method 0 = amCurvatureMetric + amMetricRemeshing, 1 = CGAL
+// isotropic_remeshing to the same triangle count.
+BENCHMARK(OuterRemesh)->ArgsProduct({ { 0, 1 }, { 25, 50 } })->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 }
 
 BENCHMARK_MAIN();

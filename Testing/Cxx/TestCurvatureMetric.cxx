@@ -20,7 +20,9 @@
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace
 {
@@ -46,7 +48,7 @@ TEST(CurvatureMetric, SphereCurvatureAndSize)
   vtkDataArray *k1 = Array(out, "MaximumCurvature"), *k2 = Array(out, "MinimumCurvature");
   vtkDataArray* size = Array(out, "Size");
   vtkDataArray* metric = Array(out, "Metric");
-  const double h = std::sqrt(8 * 0.2 * 10); // 4 mm
+  const double h = std::sqrt(6 * 0.2 * 10); // 3.46 mm
   for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
   {
     EXPECT_NEAR(k1->GetComponent(v, 0), 0.1, 0.005); // 5 %
@@ -162,12 +164,50 @@ TEST(CurvatureMetric, SmoothedVoxelSphere)
   vtkNew<amCurvatureMetric> cm;
   cm->SetInputConnection(sm->GetOutputPort());
   cm->SetNeighbourhoodRings(3);
+  cm->SetNeighbourhoodRadius(1e-6); // the 3-ring alone, at the scale of the voxels
+  cm->SetScaleAdaptive(false);
   cm->Update();
   vtkDataArray* kmean = Array(cm->GetOutput(), "MeanCurvature");
   double sum = 0;
   for (vtkIdType v = 0; v < kmean->GetNumberOfTuples(); ++v)
     sum += kmean->GetComponent(v, 0);
   EXPECT_NEAR(sum / kmean->GetNumberOfTuples(), 1 / 15.0, 0.05 / 15.0);
+}
+
+TEST(CurvatureMetric, ScaleAdaptiveFitIgnoresStaircaseRipples)
+{
+  // A ball of radius 20 voxels, extracted and smoothed: the staircase left by smoothing has ripples
+  // a few voxels long that a fit over a two-voxel neighbourhood takes for curvature (the sizes then
+  // shrink everywhere). Fitted again at the scale of the sizes asked for, max |k| is the sphere's.
+  const double origin[3] = { -24, -24, -24 };
+  auto img = amTest::LabelMap(49, 49, 49, 1.0, origin, [](double x, double y, double z) {
+    return x * x + y * y + z * z < 400 ? 1 : 0;
+  });
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputData(img);
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputConnection(ls->GetOutputPort());
+  auto percentiles = [&](bool adaptive, double& median, double& p90) {
+    vtkNew<amCurvatureMetric> cm;
+    cm->SetInputConnection(sm->GetOutputPort());
+    cm->SetScaleAdaptive(adaptive);
+    cm->Update();
+    vtkDataArray *k1 = Array(cm->GetOutput(), "MaximumCurvature"), *k2 = Array(cm->GetOutput(), "MinimumCurvature");
+    std::vector<double> k;
+    for (vtkIdType v = 0; v < k1->GetNumberOfTuples(); ++v)
+      k.push_back(std::max(std::fabs(k1->GetComponent(v, 0)), std::fabs(k2->GetComponent(v, 0))));
+    std::sort(k.begin(), k.end());
+    median = k[k.size() / 2];
+    p90 = k[k.size() * 9 / 10];
+  };
+  double median, p90;
+  percentiles(true, median, p90); // measured: 1.22 and 1.96 times 1/20
+  EXPECT_GT(median, 0.9 / 20);
+  EXPECT_LT(median, 1.3 / 20);
+  EXPECT_LT(p90, 2.2 / 20);
+  percentiles(false, median, p90); // measured: 1.9 and 3.5 times (the test can fail)
+  EXPECT_GT(median, 1.5 / 20);
+  EXPECT_GT(p90, 3.0 / 20);
 }
 
 TEST(CurvatureMetric, BadSizes)
