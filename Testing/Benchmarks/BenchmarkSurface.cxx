@@ -19,6 +19,7 @@
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDiscreteFlyingEdges3D.h"
+#include "vtkFieldData.h"
 #include "vtkDiscreteMarchingCubes.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
@@ -266,6 +267,7 @@ vtkPolyData* OuterSurface()
     clean->PointMergingOff();
     clean->Update();
     outer = clean->GetOutput();
+    outer->GetFieldData()->PassData(smooth->GetFieldData()); // VoxelSize, for the curvature fit
   }
   return outer;
 }
