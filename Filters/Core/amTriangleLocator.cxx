@@ -175,6 +175,17 @@ double amTriangleLocator::ClosestPointOnTriangle(
 
 double amTriangleLocator::ClosestPoint(const double x[3], double closest[3], vtkIdType& triangle) const
 {
+  return this->Closest(x, nullptr, closest, triangle);
+}
+
+double amTriangleLocator::ClosestPointFacing(
+  const double x[3], const double normal[3], double closest[3], vtkIdType& triangle) const
+{
+  return this->Closest(x, normal, closest, triangle);
+}
+
+double amTriangleLocator::Closest(const double x[3], const double* normal, double closest[3], vtkIdType& triangle) const
+{
   triangle = -1;
   double best = std::numeric_limits<double>::infinity();
   if (this->Triangles.empty())
@@ -221,6 +232,15 @@ double amTriangleLocator::ClosestPoint(const double x[3], double closest[3], vtk
             if (dc > 0 && dc * dc >= best)
               continue; // no point of this triangle can be closer than the best so far
             const auto& tri = this->Triangles[t];
+            if (normal)
+            {
+              const auto &a = this->Points[tri[0]], &b = this->Points[tri[1]], &c = this->Points[tri[2]];
+              const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+              const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+              const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+              if (n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2] <= 0)
+                continue; // facing the other way: the other side of a thin part
+            }
             const double d2 = ClosestPointOnTriangle(x, this->Points[tri[0]].data(),
               this->Points[tri[1]].data(), this->Points[tri[2]].data(), q);
             if (d2 < best)

@@ -30,6 +30,11 @@ public:
   /// triangle index (-1 and +inf when there is no triangle).
   double ClosestPoint(const double x[3], double closest[3], vtkIdType& triangle) const;
 
+  /// The same among the triangles whose normal (their orientation) has a positive component
+  /// along 'normal': where a thin part of the surface has two sides close together, the point on
+  /// the side facing the same way.
+  double ClosestPointFacing(const double x[3], const double normal[3], double closest[3], vtkIdType& triangle) const;
+
   /// Whether some triangle lies within squared distance r2 of x (the same answer as
   /// ClosestPoint(x) <= r2, but only the bins within reach are searched and the first triangle
   /// found within reach ends the search).
@@ -44,6 +49,8 @@ public:
     const double x[3], const double a[3], const double b[3], const double c[3], double closest[3]);
 
 private:
+  double Closest(const double x[3], const double* normal, double closest[3], vtkIdType& triangle) const;
+
   std::vector<std::array<double, 3>> Points;
   std::vector<std::array<vtkIdType, 3>> Triangles;
   double Origin[3] = { 0, 0, 0 };

@@ -657,7 +657,8 @@ public:
       const int sheet = this->T[this->VT[v][0]].Sheet;
       double cl[3];
       vtkIdType tri;
-      this->Ref[sheet].ClosestPoint(x.data(), cl, tri);
+      if (this->Ref[sheet].ClosestPointFacing(x.data(), n.data(), cl, tri) == std::numeric_limits<double>::infinity())
+        continue;
       x = Vec3(cl);
       double before = M_PI, after = M_PI;
       bool ok = true;
@@ -865,7 +866,7 @@ public:
         // Spacing Eps, at most 12 intervals per edge (the gap enters the upper bound).
         const int n = std::min(12, std::max(2, static_cast<int>(std::ceil(longest / this->Eps))));
         double w = 0;
-        Vec3 far = a;
+        Vec3 far = a, farSample = a;
         int onEdge = -1;
         for (int u = 0; u <= n; ++u)
           for (int v = 0; u + v <= n; ++v)
@@ -876,9 +877,18 @@ public:
             {
               w = d;
               far = Vec3(cl);
+              farSample = x;
               onEdge = v == 0 ? 0 : (u + v == n ? 1 : (u == 0 ? 2 : -1));
             }
           }
+        // The point to insert: on the side of the input facing the way the triangle faces.
+        if (w > this->Eps * this->Eps)
+        {
+          const Vec3 normal = (b - a).cross(c - a);
+          if (this->Ref[t.Sheet].ClosestPointFacing(farSample.data(), normal.data(), cl, tt) <
+            std::numeric_limits<double>::infinity())
+            far = Vec3(cl);
+        }
         cache.Worst[slot] = std::sqrt(w);
         cache.Far[slot] = far;
         cache.Edge[slot] = onEdge;
@@ -992,7 +1002,11 @@ public:
     const Vec3 mid = 0.5 * (this->P[this->T[t].V[k]] + this->P[this->T[t].V[(k + 1) % 3]]);
     double cl[3];
     vtkIdType tri;
-    this->Ref[this->T[t].Sheet].ClosestPoint(mid.data(), cl, tri);
+    // The input point on the side facing the way the triangle faces (in a thin part the nearest
+    // input point can lie on the other side, and refining towards it crumples the surface).
+    const Vec3 n = this->Normal(t);
+    if (this->Ref[this->T[t].Sheet].ClosestPointFacing(mid.data(), n.data(), cl, tri) == std::numeric_limits<double>::infinity())
+      return 0;
     if (!this->SplitEdge(t, k, Vec3(cl)))
       return 0;
     this->FlipAround(static_cast<int>(this->P.size()) - 1);

@@ -11,6 +11,7 @@
 #include "amSurfaceSmoothing.h"
 #include "amThoraxPhantomSource.h"
 #include "../Cxx/amAnalyticDistance.h"
+#include "../Cxx/amSurfaceTestUtilities.h"
 
 #include "amCgalIsotropicRemeshing.h"
 
@@ -149,27 +150,6 @@ vtkPolyData* Smoothed()
   return smooth;
 }
 
-/// Fraction of the triangles whose angles are all at least 'degrees'.
-double AngleFraction(vtkPolyData* pd, double degrees)
-{
-  vtkIdType good = 0, npts;
-  const vtkIdType* ids;
-  for (pd->GetPolys()->InitTraversal(); pd->GetPolys()->GetNextCell(npts, ids);)
-  {
-    double p[3][3], smallest = 180;
-    for (int k = 0; k < 3; ++k)
-      pd->GetPoint(ids[k], p[k]);
-    for (int k = 0; k < 3; ++k)
-    {
-      double u[3], v[3];
-      vtkMath::Subtract(p[(k + 1) % 3], p[k], u);
-      vtkMath::Subtract(p[(k + 2) % 3], p[k], v);
-      smallest = std::min(smallest, vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v)));
-    }
-    good += smallest >= degrees;
-  }
-  return static_cast<double>(good) / std::max<vtkIdType>(1, pd->GetNumberOfCells());
-}
 
 /// Triangles, Hausdorff and mean distance to the reference, and the angle figures.
 void SurfaceCounters(benchmark::State& state, vtkPolyData* result, vtkPolyData* reference)
@@ -182,7 +162,7 @@ void SurfaceCounters(benchmark::State& state, vtkPolyData* result, vtkPolyData* 
   state.counters["triangles"] = static_cast<double>(result->GetNumberOfCells());
   state.counters["hausdorff_mm"] = d->GetHausdorff();
   state.counters["mean_mm"] = 0.5 * (d->GetMeanAToB() + d->GetMeanBToA());
-  state.counters["angles_ge_20"] = AngleFraction(result, 20);
+  state.counters["angles_ge_20"] = amTest::AngleFraction(result, 20);
   state.counters["peak_MB"] = PeakMegabytes();
 }
 

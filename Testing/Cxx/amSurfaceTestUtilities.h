@@ -2,12 +2,16 @@
 #ifndef amSurfaceTestUtilities_h
 #define amSurfaceTestUtilities_h
 
+#include "vtkCellArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkPolyData.h"
 #include "vtkIntArray.h"
 #include "vtkPointData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <string>
@@ -31,6 +35,28 @@ inline vtkSmartPointer<vtkImageData> LabelMap(int n0, int n1, int n2, double spa
         a->SetValue((static_cast<vtkIdType>(k) * n1 + j) * n0 + i,
           f(origin[0] + spacing * i, origin[1] + spacing * j, origin[2] + spacing * k));
   return img;
+}
+
+/// Fraction of the triangles whose smallest angle is at least 'degrees'.
+inline double AngleFraction(vtkPolyData* pd, double degrees)
+{
+  vtkIdType good = 0, npts;
+  const vtkIdType* ids;
+  for (pd->GetPolys()->InitTraversal(); pd->GetPolys()->GetNextCell(npts, ids);)
+  {
+    double p[3][3], smallest = 180;
+    for (int k = 0; k < 3; ++k)
+      pd->GetPoint(ids[k], p[k]);
+    for (int k = 0; k < 3; ++k)
+    {
+      double u[3], v[3];
+      vtkMath::Subtract(p[(k + 1) % 3], p[k], u);
+      vtkMath::Subtract(p[(k + 2) % 3], p[k], v);
+      smallest = std::min(smallest, vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v)));
+    }
+    good += smallest >= degrees;
+  }
+  return static_cast<double>(good) / std::max<vtkIdType>(1, pd->GetNumberOfCells());
 }
 
 /// The topology table of amLabelSurface as label -> column name -> value.
