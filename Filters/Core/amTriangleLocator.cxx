@@ -111,6 +111,14 @@ std::array<double, 4> amTriangleLocator::BoundingSphere(const double a[3], const
   return s;
 }
 
+double amTriangleLocator::SphereGap(vtkIdType t, const double x[3]) const
+{
+  const auto& sphere = this->Spheres[t];
+  return std::sqrt((x[0] - sphere[0]) * (x[0] - sphere[0]) + (x[1] - sphere[1]) * (x[1] - sphere[1]) +
+           (x[2] - sphere[2]) * (x[2] - sphere[2])) -
+    sphere[3];
+}
+
 double amTriangleLocator::ClosestPointOnTriangle(
   const double p[3], const double a[3], const double b[3], const double c[3], double out[3])
 {
@@ -225,10 +233,7 @@ double amTriangleLocator::Closest(const double x[3], const double* normal, doubl
           for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
           {
             const vtkIdType t = this->BinTriangles[s];
-            const auto& sphere = this->Spheres[t];
-            const double dc = std::sqrt((x[0] - sphere[0]) * (x[0] - sphere[0]) +
-                                (x[1] - sphere[1]) * (x[1] - sphere[1]) + (x[2] - sphere[2]) * (x[2] - sphere[2])) -
-              sphere[3];
+            const double dc = this->SphereGap(t, x);
             if (dc > 0 && dc * dc >= best)
               continue; // no point of this triangle can be closer than the best so far
             const auto& tri = this->Triangles[t];
@@ -294,10 +299,7 @@ bool amTriangleLocator::WithinDistance(const double x[3], double r2) const
         for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
         {
           const vtkIdType t = this->BinTriangles[s];
-          const auto& sphere = this->Spheres[t];
-          const double dc = std::sqrt((x[0] - sphere[0]) * (x[0] - sphere[0]) +
-                              (x[1] - sphere[1]) * (x[1] - sphere[1]) + (x[2] - sphere[2]) * (x[2] - sphere[2])) -
-            sphere[3];
+          const double dc = this->SphereGap(t, x);
           if (dc > 0 && dc * dc > r2)
             continue;
           const auto& tri = this->Triangles[t];

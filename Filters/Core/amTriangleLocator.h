@@ -50,6 +50,9 @@ public:
 
 private:
   double Closest(const double x[3], const double* normal, double closest[3], vtkIdType& triangle) const;
+  /// Distance from x to the bounding sphere of triangle t (negative inside): a lower bound of the
+  /// distance to the triangle.
+  double SphereGap(vtkIdType t, const double x[3]) const;
 
   std::vector<std::array<double, 3>> Points;
   std::vector<std::array<vtkIdType, 3>> Triangles;

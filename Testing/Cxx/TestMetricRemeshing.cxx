@@ -130,7 +130,7 @@ TEST(MetricRemeshing, PhantomWithCurvatureMetric)
     EXPECT_GT(d.TruthSamples, 10000);
     EXPECT_LE(d.TruthToSurface, 2.0);
     EXPECT_LT(d.MeanSurfaceToTruth, 0.5);
-    EXPECT_GT(d.FractionWithin(2.0), 0.98); // measured: 99.7 % smoothed, 98.7 % remeshed
+    EXPECT_GT(d.FractionWithin(2.0), 0.98); // measured: 99.7 % smoothed, 98.6 % remeshed
   }
 }
 
