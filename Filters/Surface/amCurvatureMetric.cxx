@@ -4,7 +4,9 @@
 #include "amSurfaceMesh.h"
 #include "amThreading.h"
 
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -13,8 +15,6 @@
 #include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkDataArray.h"
-#include "vtkFieldData.h"
 
 #include <Eigen/Dense>
 
@@ -241,8 +241,8 @@ int amCurvatureMetric::RequestData(
   if (this->ScaleAdaptive)
   {
     // Again at the scale of the triangles asked for: over the size the last fit gives (the disc a
-    // vertex's triangles will cover; from the first radius to three times it), so that ripples shorter
-    // than the triangles (the staircase that smoothing leaves on a label map's surface) average
+    // vertex's triangles will cover; from the first radius to three times it), so that ripples
+    // shorter than the triangles (the staircase that smoothing leaves on a label map's surface) average
     // out instead of shrinking every size. The size taken is the median over the vertex's 2-ring,
     // so that a vertex whose small fit was all noise does not stay at the small scale.
     std::vector<double> h(static_cast<size_t>(np));
