@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace
@@ -31,6 +32,20 @@ vtkDataArray* Array(vtkPolyData* pd, const char* name)
   vtkDataArray* a = pd->GetPointData()->GetArray(name);
   EXPECT_NE(a, nullptr) << name;
   return a;
+}
+
+/// A ball of the given radius (voxels of 1 mm) centred in an n^3 label map, extracted and smoothed.
+vtkSmartPointer<vtkPolyData> SmoothedBall(int n, double radius)
+{
+  const double o = -(n - 1) / 2.0, origin[3] = { o, o, o };
+  auto img = amTest::LabelMap(n, n, n, 1.0, origin,
+    [radius](double x, double y, double z) { return x * x + y * y + z * z < radius * radius ? 1 : 0; });
+  vtkNew<amLabelSurface> ls;
+  ls->SetInputData(img);
+  vtkNew<amSurfaceSmoothing> sm;
+  sm->SetInputConnection(ls->GetOutputPort());
+  sm->Update();
+  return sm->GetOutput();
 }
 }
 
@@ -153,16 +168,9 @@ TEST(CurvatureMetric, GradationBoundsSizeGrowth)
 TEST(CurvatureMetric, SmoothedVoxelSphere)
 {
   // Robustness on a label-map surface: a ball of radius 15 voxels, extracted and smoothed.
-  const double origin[3] = { -20, -20, -20 };
-  auto img = amTest::LabelMap(41, 41, 41, 1.0, origin, [](double x, double y, double z) {
-    return x * x + y * y + z * z < 225 ? 1 : 0;
-  });
-  vtkNew<amLabelSurface> ls;
-  ls->SetInputData(img);
-  vtkNew<amSurfaceSmoothing> sm;
-  sm->SetInputConnection(ls->GetOutputPort());
+  auto ball = SmoothedBall(41, 15);
   vtkNew<amCurvatureMetric> cm;
-  cm->SetInputConnection(sm->GetOutputPort());
+  cm->SetInputData(ball);
   cm->SetNeighbourhoodRings(3);
   cm->SetNeighbourhoodRadius(1e-6); // the 3-ring alone, at the scale of the voxels
   cm->SetScaleAdaptive(false);
@@ -179,17 +187,10 @@ TEST(CurvatureMetric, ScaleAdaptiveFitIgnoresStaircaseRipples)
   // A ball of radius 20 voxels, extracted and smoothed: the staircase left by smoothing has ripples
   // a few voxels long that a fit over a two-voxel neighbourhood takes for curvature (the sizes then
   // shrink everywhere). Fitted again at the scale of the sizes asked for, max |k| is the sphere's.
-  const double origin[3] = { -24, -24, -24 };
-  auto img = amTest::LabelMap(49, 49, 49, 1.0, origin, [](double x, double y, double z) {
-    return x * x + y * y + z * z < 400 ? 1 : 0;
-  });
-  vtkNew<amLabelSurface> ls;
-  ls->SetInputData(img);
-  vtkNew<amSurfaceSmoothing> sm;
-  sm->SetInputConnection(ls->GetOutputPort());
+  auto ball = SmoothedBall(49, 20);
   auto percentiles = [&](bool adaptive, double& median, double& p90) {
     vtkNew<amCurvatureMetric> cm;
-    cm->SetInputConnection(sm->GetOutputPort());
+    cm->SetInputData(ball);
     cm->SetScaleAdaptive(adaptive);
     cm->Update();
     vtkDataArray *k1 = Array(cm->GetOutput(), "MaximumCurvature"), *k2 = Array(cm->GetOutput(), "MinimumCurvature");
@@ -199,13 +200,15 @@ TEST(CurvatureMetric, ScaleAdaptiveFitIgnoresStaircaseRipples)
     std::sort(k.begin(), k.end());
     median = k[k.size() / 2];
     p90 = k[k.size() * 9 / 10];
+    std::printf("ScaleAdaptive %d: max |k| median %.2f, 90th percentile %.2f times the sphere's\n", adaptive,
+      median * 20, p90 * 20);
   };
   double median, p90;
   percentiles(true, median, p90); // measured: 1.22 and 1.96 times 1/20
   EXPECT_GT(median, 0.9 / 20);
   EXPECT_LT(median, 1.3 / 20);
   EXPECT_LT(p90, 2.2 / 20);
-  percentiles(false, median, p90); // measured: 1.9 and 3.5 times (the test can fail)
+  percentiles(false, median, p90); // measured: 1.80 and 3.44 times (the test can fail)
   EXPECT_GT(median, 1.5 / 20);
   EXPECT_GT(p90, 3.0 / 20);
 }
