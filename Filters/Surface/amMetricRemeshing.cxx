@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -85,62 +86,73 @@ public:
   // Input vertices each vertex stands for, with the interface they must stay near (-1: every
   // interface around the vertex, for junction-curve points).
   std::vector<std::vector<std::pair<int, int>>> Cluster;
+  // Per input vertex on a junction curve or corner: the interfaces around it (sorted) and its
+  // neighbours along the curves (with the edge lengths). Every curve vertex of the result sits on
+  // an input curve vertex, its anchor (-1 for surface vertices): its triangles may only belong to
+  // the anchor's interfaces, and a junction edge is split at the input curve vertex halfway
+  // along the input curve between its two anchors, so the curves of the result visit the
+  // input's curve vertices in their order (splitting at the curve vertex nearest the edge's
+  // midpoint could pick one from a neighbouring stretch of the curve and fold it back).
+  std::vector<std::vector<int>> InputSheets;
+  std::vector<std::vector<std::pair<int, double>>> CurveNeighbours;
+  std::vector<int> Anchor;
+  bool Allowed(int v, int sheet) const
+  {
+    if (this->Kind[v] == amSurfaceMesh::Surface || this->Anchor[v] < 0)
+      return true;
+    const auto& sheets = this->InputSheets[this->Anchor[v]];
+    return std::binary_search(sheets.begin(), sheets.end(), sheet);
+  }
+  /// The input curve vertex halfway (by length) along the shortest input curve path from a to b
+  /// no longer than maxLength, not a or b themselves (-1: no such path, or no vertex between).
+  int CurveMiddle(int a, int b, double maxLength) const
+  {
+    std::unordered_map<int, std::pair<double, int>> dist; // vertex: distance from a, previous
+    std::vector<std::pair<double, int>> heap{ { 0.0, a } };
+    dist[a] = { 0.0, -1 };
+    bool found = false;
+    while (!heap.empty())
+    {
+      std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+      const auto [d, v] = heap.back();
+      heap.pop_back();
+      if (d > dist[v].first)
+        continue;
+      if (v == b)
+      {
+        found = true;
+        break;
+      }
+      for (const auto& [w, l] : this->CurveNeighbours[v])
+      {
+        const double dw = d + l;
+        if (dw > maxLength)
+          continue;
+        auto it = dist.find(w);
+        if (it == dist.end() || dw < it->second.first)
+        {
+          dist[w] = { dw, v };
+          heap.push_back({ dw, w });
+          std::push_heap(heap.begin(), heap.end(), std::greater<>());
+        }
+      }
+    }
+    if (!found)
+      return -1;
+    const double half = 0.5 * dist[b].first;
+    int best = -1;
+    double bestGap = std::numeric_limits<double>::infinity();
+    for (int v = dist[b].second; v != a && v >= 0; v = dist[v].second)
+      if (std::abs(dist[v].first - half) < bestGap)
+      {
+        bestGap = std::abs(dist[v].first - half);
+        best = v;
+      }
+    return best;
+  }
   double Eps = 0.2;
   long long Collapses = 0, Flips = 0, Moves = 0, Refused = 0;
   int LastHit = -1; // the live triangle the last refused operation would have crossed
-
-  // Input vertices on junction curves (and corners), binned: a junction edge is split at one of
-  // them, so that junction curves stay on the input's curves.
-  double CurveCell = 1.0;
-  std::unordered_map<long long, std::vector<int>> CurveBins;
-  void BuildCurveBins(const std::vector<unsigned char>& inputKind)
-  {
-    double sum = 0;
-    long long n = 0;
-    for (const Tri& t : this->T)
-      if (t.Alive)
-        for (int k = 0; k < 3; ++k, ++n)
-          sum += (this->RefPoints[t.V[(k + 1) % 3]] - this->RefPoints[t.V[k]]).norm();
-    this->CurveCell = n ? std::max(sum / n, 1e-6) : 1.0;
-    for (size_t v = 0; v < inputKind.size(); ++v)
-      if (inputKind[v] != amSurfaceMesh::Surface)
-      {
-        const Vec3& x = this->RefPoints[v];
-        this->CurveBins[BinKey(static_cast<long long>(std::floor(x[0] / this->CurveCell)),
-                          static_cast<long long>(std::floor(x[1] / this->CurveCell)),
-                          static_cast<long long>(std::floor(x[2] / this->CurveCell)))]
-          .push_back(static_cast<int>(v));
-      }
-  }
-  /// The input curve vertex nearest to x within radius r (false if none).
-  bool NearestCurvePoint(const Vec3& x, double r, Vec3& out) const
-  {
-    const long long reach = static_cast<long long>(std::ceil(r / this->CurveCell));
-    const long long c[3] = { static_cast<long long>(std::floor(x[0] / this->CurveCell)),
-      static_cast<long long>(std::floor(x[1] / this->CurveCell)),
-      static_cast<long long>(std::floor(x[2] / this->CurveCell)) };
-    double best = r * r;
-    bool found = false;
-    for (long long i = c[0] - reach; i <= c[0] + reach; ++i)
-      for (long long j = c[1] - reach; j <= c[1] + reach; ++j)
-        for (long long k = c[2] - reach; k <= c[2] + reach; ++k)
-        {
-          auto it = this->CurveBins.find(BinKey(i, j, k));
-          if (it == this->CurveBins.end())
-            continue;
-          for (int v : it->second)
-          {
-            const double d = (this->RefPoints[v] - x).squaredNorm();
-            if (d < best)
-            {
-              best = d;
-              out = this->RefPoints[v];
-              found = true;
-            }
-          }
-        }
-    return found;
-  }
 
   // Bins of the live triangles (entries may be stale: a query checks the actual bounding box), so
   // that every local operation can refuse to make a triangle cross another one.
@@ -386,6 +398,18 @@ public:
     }
     return true;
   }
+  /// Whether (a, b) is an edge of a junction curve: other than two triangles, or two of
+  /// different interfaces.
+  bool IsFeature(int a, int b) const
+  {
+    std::vector<int> edge;
+    this->EdgeTriangles(a, b, edge);
+    return IsFeature(edge);
+  }
+  bool IsFeature(const std::vector<int>& edge) const
+  {
+    return edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet;
+  }
   void EdgeTriangles(int a, int b, std::vector<int>& out) const
   {
     out.clear();
@@ -437,7 +461,7 @@ public:
     this->EdgeTriangles(a, b, edge);
     if (edge.empty())
       return false;
-    const bool feature = edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet;
+    const bool feature = this->IsFeature(edge);
     if ((this->Kind[a] == amSurfaceMesh::Curve) != feature)
       return false;
     // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
@@ -475,6 +499,8 @@ public:
       if (n1.norm() <= 1e-12 * n0.norm() || n0.normalized().dot(n1.normalized()) < 0.5)
         return false;
       if (MinAngle(p[0], p[1], p[2]) < SmallAngle) // a cap or needle no later flip may mend
+        return false;
+      if (!this->Allowed(b, this->T[t].Sheet))
         return false;
       if (this->Length(b, other[0]) > 4.0 / 3.0 || this->Length(b, other[1]) > 4.0 / 3.0)
         return false;
@@ -565,7 +591,7 @@ public:
   {
     std::vector<int> edge;
     this->EdgeTriangles(a, b, edge);
-    if (edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet)
+    if (this->IsFeature(edge))
       return false;
     // t1 = (a, b, c), t2 = (b, a, d) in their own orientation.
     int t1 = edge[0], t2 = edge[1];
@@ -659,66 +685,73 @@ public:
       vtkIdType tri;
       if (this->Ref[sheet].ClosestPointFacing(x.data(), n.data(), cl, tri) == std::numeric_limits<double>::infinity())
         continue;
-      x = Vec3(cl);
-      double before = M_PI, after = M_PI;
-      bool ok = true;
-      for (int t : this->VT[v])
-      {
-        Vec3 p[3], q[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          p[k] = this->P[this->T[t].V[k]];
-          q[k] = this->T[t].V[k] == static_cast<int>(v) ? x : p[k];
-        }
-        before = std::min(before, MinAngle(p[0], p[1], p[2]));
-        after = std::min(after, MinAngle(q[0], q[1], q[2]));
-        const Vec3 n0 = (p[1] - p[0]).cross(p[2] - p[0]), n1 = (q[1] - q[0]).cross(q[2] - q[0]);
-        if (n1.norm() == 0 || n0.normalized().dot(n1.normalized()) < 0.7)
-        {
-          ok = false;
-          break;
-        }
-      }
-      if (!ok || after < before)
-        continue;
-      bool near = true;
-      for (int t : this->VT[v])
-      {
-        Vec3 q[3];
-        for (int k = 0; k < 3; ++k)
-          q[k] = this->T[t].V[k] == static_cast<int>(v) ? x : this->P[this->T[t].V[k]];
-        if (!this->TriangleNear(this->T[t].Sheet, q[0], q[1], q[2]))
-        {
-          near = false;
-          break;
-        }
-      }
-      if (!near)
-        continue;
-      {
-        std::vector<std::array<int, 3>> ids;
-        std::vector<std::array<Vec3, 3>> pos;
-        std::vector<int> sheets;
-        for (int t : this->VT[v])
-        {
-          ids.push_back({ this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] });
-          std::array<Vec3, 3> q;
-          for (int k = 0; k < 3; ++k)
-            q[k] = this->T[t].V[k] == static_cast<int>(v) ? x : this->P[this->T[t].V[k]];
-          pos.push_back(q);
-          sheets.push_back(this->T[t].Sheet);
-        }
-        ring.push_back(static_cast<int>(v));
-        if (!this->ClustersStayNear(this->VT[v], ids, pos, sheets, ring) || this->Crosses(ids, pos, this->VT[v]))
-          continue;
-      }
-      this->P[v] = x;
-      for (int t : this->VT[v])
-        this->BinTriangle(t);
-      ++done;
-      ++this->Moves;
+      if (this->Move(static_cast<int>(v), Vec3(cl), true))
+        ++done;
     }
     return done;
+  }
+
+  /// Where the point x of the input is nearest to a surface vertex of triangle t (it lies above
+  /// a vertex where the surface bends, not above a triangle to insert it into): move that vertex
+  /// to x. Returns whether it was done.
+  bool MoveVertexNearest(int t, const Vec3& x)
+  {
+    if (!this->T[t].Alive)
+      return false;
+    const int* w = this->T[t].V;
+    double cl[3];
+    amTriangleLocator::ClosestPointOnTriangle(x.data(), this->P[w[0]].data(), this->P[w[1]].data(), this->P[w[2]].data(), cl);
+    const double longest =
+      std::max({ (this->P[w[1]] - this->P[w[0]]).norm(), (this->P[w[2]] - this->P[w[1]]).norm(), (this->P[w[0]] - this->P[w[2]]).norm() });
+    for (int k = 0; k < 3; ++k)
+      if ((Vec3(cl) - this->P[w[k]]).norm() < 0.05 * longest)
+        return this->Move(w[k], x, false);
+    return false;
+  }
+
+  /// Move surface vertex v to x (a point of the input) unless a triangle around it would turn
+  /// over, leave its interface by more than Eps, carry an input point too far, cross another, or
+  /// get a smaller angle than before ('relax') or than min(before, SmallAngle) (otherwise).
+  bool Move(int v, const Vec3& x, bool relax)
+  {
+    if (this->Kind[v] != amSurfaceMesh::Surface || this->VT[v].empty())
+      return false;
+    double before = M_PI, after = M_PI;
+    std::vector<std::array<int, 3>> ids;
+    std::vector<std::array<Vec3, 3>> pos;
+    std::vector<int> sheets;
+    for (int t : this->VT[v])
+    {
+      std::array<Vec3, 3> p, q;
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = this->P[this->T[t].V[k]];
+        q[k] = this->T[t].V[k] == v ? x : p[k];
+      }
+      before = std::min(before, MinAngle(p[0], p[1], p[2]));
+      after = std::min(after, MinAngle(q[0], q[1], q[2]));
+      const Vec3 n0 = (p[1] - p[0]).cross(p[2] - p[0]), n1 = (q[1] - q[0]).cross(q[2] - q[0]);
+      if (n1.norm() == 0 || n0.normalized().dot(n1.normalized()) < 0.7)
+        return false;
+      ids.push_back({ this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] });
+      pos.push_back(q);
+      sheets.push_back(this->T[t].Sheet);
+    }
+    if (after < (relax ? before : std::min(before, SmallAngle)))
+      return false;
+    for (size_t n = 0; n < pos.size(); ++n)
+      if (!this->TriangleNear(sheets[n], pos[n][0], pos[n][1], pos[n][2]))
+        return false;
+    std::vector<int> ring;
+    this->Neighbours(v, ring);
+    ring.push_back(v);
+    if (!this->ClustersStayNear(this->VT[v], ids, pos, sheets, ring) || this->Crosses(ids, pos, this->VT[v]))
+      return false;
+    this->P[v] = x;
+    for (int t : this->VT[v])
+      this->BinTriangle(t);
+    ++this->Moves;
+    return true;
   }
 
   // What the last Measure saw: the next one measures again only what changed since (the input is
@@ -926,17 +959,23 @@ public:
     const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
     std::vector<int> edge;
     this->EdgeTriangles(a, b, edge);
-    const bool feature = edge.size() != 2 || this->T[edge[0]].Sheet != this->T[edge[1]].Sheet;
+    const bool feature = this->IsFeature(edge);
+    int curvePoint = -1;
     if (feature)
     {
       // A junction edge is split at the input curve vertex nearest its midpoint (a point of one
       // interface off the curve would fold the others).
-      const double length = (this->P[b] - this->P[a]).norm();
-      Vec3 c;
-      if (!this->NearestCurvePoint(0.5 * (this->P[a] + this->P[b]), 0.5 * length, c) ||
-        (c - this->P[a]).norm() < 1e-6 * length || (c - this->P[b]).norm() < 1e-6 * length)
+      if (this->Anchor[a] < 0 || this->Anchor[b] < 0)
         return false;
-      x = c;
+      const double length = (this->P[b] - this->P[a]).norm();
+      curvePoint = this->CurveMiddle(this->Anchor[a], this->Anchor[b], 4.0 * length);
+      if (curvePoint < 0)
+        return false;
+      for (int e : edge)
+        if (!std::binary_search(this->InputSheets[curvePoint].begin(), this->InputSheets[curvePoint].end(),
+              this->T[e].Sheet))
+          return false;
+      x = this->RefPoints[curvePoint];
     }
     const int v = static_cast<int>(this->P.size());
     struct Half
@@ -967,6 +1006,7 @@ public:
     this->P.push_back(x);
     this->M.push_back(0.5 * (this->M[a] + this->M[b]));
     this->Kind.push_back(feature ? amSurfaceMesh::Curve : amSurfaceMesh::Surface);
+    this->Anchor.push_back(curvePoint);
     this->VAlive.push_back(1);
     this->VT.emplace_back();
     this->Cluster.emplace_back();
@@ -1087,7 +1127,7 @@ public:
   /// new triangles would cross another triangle. A point that falls near an edge of t (a new
   /// triangle would get under 10 % of t's area) splits that edge instead, so no sliver triangle
   /// appears. Returns whether it was done.
-  bool Insert(int t, const Vec3& x)
+  bool Insert(int t, Vec3 x)
   {
     this->LastHit = -1;
     if (!this->T[t].Alive)
@@ -1115,10 +1155,30 @@ public:
         const Vec3& p = this->P[w[k]];
         const Vec3 e = this->P[w[(k + 1) % 3]] - p;
         const double along = e.dot(x - p) / e.squaredNorm();
-        if (along < 0.15 || along > 0.85 || !this->SplitEdge(t, k, x))
+        if (along >= 0.15 && along <= 0.85 && this->SplitEdge(t, k, x))
+        {
+          this->FlipAround(static_cast<int>(this->P.size()) - 1);
+          return true;
+        }
+        // Beside a junction edge that is an edge of the input curve (nothing to split it at),
+        // where the interface bulges beyond the curve's chord: insert inside the triangle,
+        // moved towards the opposite vertex and put back on the input.
+        if (!this->IsFeature(w[k], w[(k + 1) % 3]))
           return false;
-        this->FlipAround(static_cast<int>(this->P.size()) - 1);
-        return true;
+        const Vec3& o = this->P[w[(k + 2) % 3]];
+        x += (0.2 - smallest) / (1.0 - smallest) * (o - x);
+        double cl[3];
+        vtkIdType tri;
+        if (this->Ref[like.Sheet].ClosestPointFacing(x.data(), n.data(), cl, tri) ==
+          std::numeric_limits<double>::infinity())
+          return false;
+        x = Vec3(cl);
+        for (int e = 0; e < 3; ++e)
+        {
+          const Vec3& q = this->P[w[e]];
+          if (n.dot((this->P[w[(e + 1) % 3]] - q).cross(x - q)) / n.squaredNorm() < 0.05)
+            return false;
+        }
       }
     }
     for (int e = 0; e < 3; ++e)
@@ -1133,6 +1193,7 @@ public:
     Mat3 m = (this->M[like.V[0]] + this->M[like.V[1]] + this->M[like.V[2]]) / 3.0;
     this->M.push_back(m);
     this->Kind.push_back(amSurfaceMesh::Surface);
+    this->Anchor.push_back(-1);
     this->VAlive.push_back(1);
     this->VT.emplace_back();
     this->Cluster.emplace_back();
@@ -1270,7 +1331,27 @@ int amMetricRemeshing::RequestData(
         r.Ref[s].Build(mesh.Points, tris[s]);
     });
   }
-  r.BuildCurveBins(mesh.Kind);
+  r.InputSheets.resize(static_cast<size_t>(np));
+  r.Anchor.assign(static_cast<size_t>(np), -1);
+  for (vtkIdType v = 0; v < np; ++v)
+    if (r.Kind[v] != amSurfaceMesh::Surface)
+    {
+      r.Anchor[v] = static_cast<int>(v);
+      auto& sheets = r.InputSheets[v];
+      for (int t : r.VT[v])
+        sheets.push_back(r.T[t].Sheet);
+      std::sort(sheets.begin(), sheets.end());
+      sheets.erase(std::unique(sheets.begin(), sheets.end()), sheets.end());
+    }
+  r.CurveNeighbours.resize(static_cast<size_t>(np));
+  for (size_t e = 0; e < mesh.Edges.size(); ++e)
+    if (mesh.FeatureEdge[e])
+    {
+      const int a = static_cast<int>(mesh.Edges[e][0]), b = static_cast<int>(mesh.Edges[e][1]);
+      const double l = (r.P[a] - r.P[b]).norm();
+      r.CurveNeighbours[a].push_back({ b, l });
+      r.CurveNeighbours[b].push_back({ a, l });
+    }
   this->UpdateProgress(0.05);
 
   for (int it = 0; it < this->NumberOfIterations; ++it)
@@ -1305,7 +1386,8 @@ int amMetricRemeshing::RequestData(
         // itself, inserted, often lands near a corner or an edge and leaves slivers), the far
         // point itself where the bisection is refused.
         const bool ok = r.Refine(t) > 0 ||
-          (edgeOf[i] >= 0 ? r.SplitEdge(t, edgeOf[i], insert[i].second) : r.Insert(t, insert[i].second));
+          (edgeOf[i] >= 0 ? r.SplitEdge(t, edgeOf[i], insert[i].second)
+                          : r.Insert(t, insert[i].second) || r.MoveVertexNearest(t, insert[i].second));
         done += ok;
         if (!ok)
         {
