@@ -85,7 +85,24 @@ public:
   std::vector<Vec3> RefPoints;                // the input vertices
   // Input vertices each vertex stands for, with the interface they must stay near (-1: every
   // interface around the vertex, for junction-curve points).
-  std::vector<std::vector<std::pair<int, int>>> Cluster;
+  // Each entry also keeps a triangle of the vertex's star found within Eps of it (-1: none yet):
+  // while that triangle is alive and untouched (every operation that changes a triangle's
+  // vertices or their positions passes it as removed, or kills it), the entry needs no search.
+  struct ClusterEntry
+  {
+    int Point;
+    int Sheet;
+    int Hint;
+  };
+  std::vector<std::vector<ClusterEntry>> Cluster;
+  // Hints found by the last ClustersStayNear (owner, entry, triangle), kept if the operation is.
+  mutable std::vector<std::array<int, 3>> PendingHints;
+  void KeepHints()
+  {
+    for (const auto& h : this->PendingHints)
+      this->Cluster[h[0]][h[1]].Hint = h[2];
+    this->PendingHints.clear();
+  }
   // Per input vertex on a junction curve or corner: the interfaces around it (sorted) and its
   // neighbours along the curves (with the edge lengths). Every curve vertex of the result sits on
   // an input curve vertex, its anchor (-1 for surface vertices): its triangles may only belong to
@@ -206,6 +223,32 @@ public:
       if (this->T[t].Alive)
         this->BinTriangle(static_cast<int>(t));
   }
+  /// Whether the vertices of q not shared with p lie strictly on one side of p's plane.
+  static bool Separated(const Vec3* p, const int* ip, const Vec3* q, const int* iq)
+  {
+    const Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double scale = n.norm() * ((p[1] - p[0]).norm() + (p[2] - p[0]).norm());
+    int side = 0;
+    for (int j = 0; j < 3; ++j)
+    {
+      if (iq[j] == ip[0] || iq[j] == ip[1] || iq[j] == ip[2])
+        continue;
+      const double d = n.dot(q[j] - p[0]);
+      const double margin = 1e-9 * (scale + n.norm() * (q[j] - p[0]).norm());
+      const int s = d > margin ? 1 : (d < -margin ? -1 : 0);
+      if (s == 0 || (side != 0 && s != side))
+        return false;
+      side = s;
+    }
+    return side != 0;
+  }
+  struct NearTriangle
+  {
+    int Id;
+    std::array<int, 3> V;
+    Vec3 X[3], Lo, Hi;
+  };
+  std::vector<NearTriangle> NearBuffer;
   /// Would the new triangles (vertex ids and positions), replacing the triangles 'removed', cross
   /// any live triangle or each other (CGAL exact test; also two triangles folded flat on an edge)?
   bool Crosses(const std::vector<std::array<int, 3>>& ids, const std::vector<std::array<Vec3, 3>>& pos,
@@ -242,8 +285,13 @@ public:
         if (u.norm() > 0 && w.norm() > 0 && u.normalized().dot(w.normalized()) > 0.99985)
           return true;
       }
+      // Most pairs are neighbours well apart: one triangle's other vertices all strictly on one
+      // side of the other's plane (by a margin far above rounding) cannot cross it.
+      if (shared < 2 && (Separated(pa.data(), ia.data(), pb, ib.data()) || Separated(pb, ib.data(), pa.data(), ia.data())))
+        return false;
       return amSelfIntersection::Cross(a, va, b, vb);
     };
+    Vec3 lo = pos[0][0], hi = pos[0][0];
     for (size_t n = 0; n < ids.size(); ++n)
     {
       // A new triangle with (nearly) no area is refused like a crossing: TetGen rejects those.
@@ -260,41 +308,52 @@ public:
           this->LastHit = -1;
           return true;
         }
-      Vec3 lo, hi;
-      this->Box(pos[n].data(), lo, hi);
-      bool hit = false;
-      const int stamp = ++this->StampValue;
-      this->ForBins(lo, hi, [&](long long key) {
-        if (hit)
-          return;
-        auto it = this->Bins.find(key);
-        if (it == this->Bins.end())
-          return;
-        for (int t : it->second)
-        {
-          if (this->Stamp[t] == stamp || !this->T[t].Alive || std::find(removed.begin(), removed.end(), t) != removed.end())
-            continue;
-          this->Stamp[t] = stamp;
-          Vec3 q[3], qlo, qhi;
-          for (int k = 0; k < 3; ++k)
-            q[k] = this->P[this->T[t].V[k]];
-          this->Box(q, qlo, qhi);
-          if ((qlo.array() > hi.array()).any() || (qhi.array() < lo.array()).any())
-            continue;
-          const std::array<int, 3> qi = { this->T[t].V[0], this->T[t].V[1], this->T[t].V[2] };
-          if (pairCrosses(ids[n], pos[n], qi, q))
-          {
-            this->LastHit = t;
-            hit = true;
-            return;
-          }
-        }
-      });
-      if (hit)
+      for (const Vec3& x : pos[n])
       {
-        ++this->Refused;
-        return true;
+        lo = lo.cwiseMin(x);
+        hi = hi.cwiseMax(x);
       }
+    }
+    // The live triangles near the new ones, each once (the removed ones are stamped first), then
+    // every pair whose boxes overlap tested exactly.
+    const int stamp = ++this->StampValue;
+    for (int t : removed)
+      this->Stamp[t] = stamp;
+    auto& near = this->NearBuffer;
+    near.clear();
+    this->ForBins(lo, hi, [&](long long key) {
+      auto it = this->Bins.find(key);
+      if (it == this->Bins.end())
+        return;
+      for (int t : it->second)
+      {
+        if (this->Stamp[t] == stamp || !this->T[t].Alive)
+          continue;
+        this->Stamp[t] = stamp;
+        NearTriangle c;
+        c.Id = t;
+        for (int k = 0; k < 3; ++k)
+        {
+          c.V[k] = this->T[t].V[k];
+          c.X[k] = this->P[c.V[k]];
+        }
+        this->Box(c.X, c.Lo, c.Hi);
+        if ((c.Lo.array() <= hi.array()).all() && (c.Hi.array() >= lo.array()).all())
+          near.push_back(c);
+      }
+    });
+    for (size_t n = 0; n < ids.size(); ++n)
+    {
+      Vec3 nlo, nhi;
+      this->Box(pos[n].data(), nlo, nhi);
+      for (const NearTriangle& c : near)
+        if ((c.Lo.array() <= nhi.array()).all() && (c.Hi.array() >= nlo.array()).all() &&
+          pairCrosses(ids[n], pos[n], c.V, c.X))
+        {
+          this->LastHit = c.Id;
+          ++this->Refused;
+          return true;
+        }
     }
     return false;
   }
@@ -329,52 +388,66 @@ public:
   /// vertex) once the triangles 'removed' are replaced by the new ones (ids, positions, sheets).
   /// 'from' (or -1) is a vertex disappearing into 'into': its points are checked with into's.
   /// Every operation keeps this, so no patch of the input can drift away from the result.
+  /// 'newIds' are the ids the new triangles will have.
   bool ClustersStayNear(const std::vector<int>& removed, const std::vector<std::array<int, 3>>& ids,
-    const std::vector<std::array<Vec3, 3>>& pos, const std::vector<int>& sheets, const std::vector<int>& affected,
-    int from = -1, int into = -1) const
+    const std::vector<std::array<Vec3, 3>>& pos, const std::vector<int>& sheets, const std::vector<int>& newIds,
+    const std::vector<int>& affected, int from = -1, int into = -1) const
   {
     const double eps2 = this->Eps * this->Eps;
-    std::vector<std::pair<int, std::array<Vec3, 3>>> star;
+    struct StarTriangle
+    {
+      int Sheet, Id;
+      std::array<Vec3, 3> X;
+    };
+    std::vector<StarTriangle> star;
     std::vector<int> starSheets;
+    this->PendingHints.clear();
     for (int w : affected)
     {
       star.clear();
       for (int t : this->VT[w])
         if (std::find(removed.begin(), removed.end(), t) == removed.end())
-          star.push_back({ this->T[t].Sheet,
+          star.push_back({ this->T[t].Sheet, t,
             { this->P[this->T[t].V[0]], this->P[this->T[t].V[1]], this->P[this->T[t].V[2]] } });
       for (size_t n = 0; n < ids.size(); ++n)
         if (ids[n][0] == w || ids[n][1] == w || ids[n][2] == w)
-          star.push_back({ sheets[n], pos[n] });
+          star.push_back({ sheets[n], newIds[n], pos[n] });
       starSheets.clear();
       for (const auto& q : star)
-        starSheets.push_back(q.first);
+        starSheets.push_back(q.Sheet);
       std::sort(starSheets.begin(), starSheets.end());
       starSheets.erase(std::unique(starSheets.begin(), starSheets.end()), starSheets.end());
       auto near = [&](const Vec3& x, int sheet) {
         double cl[3];
         for (const auto& q : star)
-          if (q.first == sheet &&
-            amTriangleLocator::ClosestPointOnTriangle(x.data(), q.second[0].data(), q.second[1].data(),
-              q.second[2].data(), cl) <= eps2)
-            return true;
-        return false;
+          if (q.Sheet == sheet &&
+            amTriangleLocator::ClosestPointOnTriangle(x.data(), q.X[0].data(), q.X[1].data(), q.X[2].data(), cl) <=
+              eps2)
+            return q.Id;
+        return -1;
       };
       for (int owner : { w, w == into ? from : -1 })
       {
         if (owner < 0)
           continue;
-        for (const auto& entry : this->Cluster[owner])
+        const auto& cluster = this->Cluster[owner];
+        for (size_t i = 0; i < cluster.size(); ++i)
         {
-          const Vec3& x = this->RefPoints[entry.first];
-          if (entry.second >= 0)
+          const ClusterEntry& entry = cluster[i];
+          const Vec3& x = this->RefPoints[entry.Point];
+          if (entry.Sheet >= 0)
           {
-            if (!near(x, entry.second))
+            if (owner == w && entry.Hint >= 0 && this->T[entry.Hint].Alive &&
+              std::find(removed.begin(), removed.end(), entry.Hint) == removed.end())
+              continue; // still within Eps of the same, untouched triangle
+            const int hit = near(x, entry.Sheet);
+            if (hit < 0)
               return false;
+            this->PendingHints.push_back({ owner, static_cast<int>(i), hit });
           }
           else
             for (int sheet : starSheets)
-              if (!near(x, sheet))
+              if (near(x, sheet) < 0)
                 return false;
         }
       }
@@ -511,6 +584,7 @@ public:
       std::vector<std::array<int, 3>> ids;
       std::vector<std::array<Vec3, 3>> pos;
       std::vector<int> sheets;
+      std::vector<int> newIds;
       for (int t : this->VT[a])
         if (std::find(edge.begin(), edge.end(), t) == edge.end())
         {
@@ -524,21 +598,23 @@ public:
           ids.push_back(v);
           pos.push_back(x);
           sheets.push_back(this->T[t].Sheet);
+          newIds.push_back(t);
         }
       // The input vertices a stood for must stay within Eps of the triangles of their interface
       // around b afterwards, and those of b and a's other neighbours within Eps of theirs (so no
       // patch of an interface can retract or vanish).
       std::vector<int> affected = na;
       affected.erase(std::remove(affected.begin(), affected.end(), a), affected.end());
-      if (!this->ClustersStayNear(this->VT[a], ids, pos, sheets, affected, a, b))
+      if (!this->ClustersStayNear(this->VT[a], ids, pos, sheets, newIds, affected, a, b))
         return false;
       if (this->Crosses(ids, pos, this->VT[a]))
         return false;
     }
+    this->KeepHints();
     for (int t : edge)
       this->Detach(t);
     this->Cluster[b].insert(this->Cluster[b].end(), this->Cluster[a].begin(), this->Cluster[a].end());
-    std::vector<std::pair<int, int>>().swap(this->Cluster[a]);
+    std::vector<ClusterEntry>().swap(this->Cluster[a]);
     for (int t : this->VT[a])
     {
       for (int k = 0; k < 3; ++k)
@@ -550,11 +626,25 @@ public:
     this->VT[a].clear();
     this->VAlive[a] = 0;
     ++this->Collapses;
+    for (int w : na)
+      this->Touch(w);
     return true;
   }
 
+  /// Vertices whose neighbourhood changed since the last collapse pass began: only edges at one
+  /// of them are tried again (a refused collapse whose surroundings did not change would be
+  /// refused again).
+  std::vector<char> Dirty;
+  void Touch(int v)
+  {
+    if (static_cast<size_t>(v) >= this->Dirty.size())
+      this->Dirty.resize(this->P.size(), 1);
+    this->Dirty[v] = 1;
+  }
   int CollapsePass()
   {
+    if (this->Dirty.size() < this->P.size())
+      this->Dirty.resize(this->P.size(), 1);
     std::vector<std::pair<double, std::pair<int, int>>> cand;
     for (size_t t = 0; t < this->T.size(); ++t)
     {
@@ -563,7 +653,7 @@ public:
       for (int k = 0; k < 3; ++k)
       {
         const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
-        if (a < b)
+        if (a < b && (this->Dirty[a] || this->Dirty[b]))
         {
           const double L = this->Length(a, b);
           if (L < 0.8)
@@ -573,6 +663,7 @@ public:
     }
     std::sort(cand.begin(), cand.end());
     cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+    std::fill(this->Dirty.begin(), this->Dirty.end(), 0);
     int done = 0;
     for (const auto& c : cand)
     {
@@ -629,17 +720,21 @@ public:
     const int sheet = this->T[t1].Sheet;
     if (!this->TriangleNear(sheet, pa, pd, pc) || !this->TriangleNear(sheet, pd, pb, pc))
       return false;
+    const int next = static_cast<int>(this->T.size()); // the ids of the two new triangles
     if (!this->ClustersStayNear({ t1, t2 }, { { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } },
-          { sheet, sheet }, { a, b, c, d }))
+          { sheet, sheet }, { next, next + 1 }, { a, b, c, d }))
       return false;
     if (this->Crosses({ { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } }, { t1, t2 }))
       return false;
+    this->KeepHints();
     const Tri like = this->T[t1];
     this->Detach(t1);
     this->Detach(t2);
     this->AddTriangle(a, d, c, like);
     this->AddTriangle(d, b, c, like);
     ++this->Flips;
+    for (int w : { a, b, c, d })
+      this->Touch(w);
     return true;
   }
 
@@ -745,12 +840,16 @@ public:
     std::vector<int> ring;
     this->Neighbours(v, ring);
     ring.push_back(v);
-    if (!this->ClustersStayNear(this->VT[v], ids, pos, sheets, ring) || this->Crosses(ids, pos, this->VT[v]))
+    if (!this->ClustersStayNear(this->VT[v], ids, pos, sheets, this->VT[v], ring) ||
+      this->Crosses(ids, pos, this->VT[v]))
       return false;
+    this->KeepHints();
     this->P[v] = x;
     for (int t : this->VT[v])
       this->BinTriangle(t);
     ++this->Moves;
+    for (int w : ring)
+      this->Touch(w);
     return true;
   }
 
@@ -1275,7 +1374,7 @@ int amMetricRemeshing::RequestData(
   r.Cluster.resize(static_cast<size_t>(np));
   for (vtkIdType v = 0; v < np; ++v)
     r.Cluster[v].assign(1,
-      { static_cast<int>(v), -1 }); // the interface is set below for surface vertices
+      { static_cast<int>(v), -1, -1 }); // the interface is set below for surface vertices
   r.VAlive.assign(static_cast<size_t>(np), 1);
   r.VT.resize(static_cast<size_t>(np));
   std::map<std::pair<int, int>, int> sheetIds;
@@ -1297,7 +1396,7 @@ int amMetricRemeshing::RequestData(
   }
   for (vtkIdType v = 0; v < np; ++v)
     if (r.Kind[v] == amSurfaceMesh::Surface && !r.VT[v].empty())
-      r.Cluster[v][0].second = r.T[r.VT[v][0]].Sheet;
+      r.Cluster[v][0].Sheet = r.T[r.VT[v][0]].Sheet;
   // The input surface of every interface: locator and the samples of the final check.
   const int nSheets = static_cast<int>(sheetIds.size());
   r.Ref.resize(static_cast<size_t>(nSheets));
@@ -1358,13 +1457,17 @@ int amMetricRemeshing::RequestData(
   {
     r.RebuildBins();
     for (int pass = 0; pass < 8; ++pass)
+    {
+      if (pass > 0)
+        r.RebuildBins();
       if (r.CollapsePass() == 0)
         break;
+    }
     for (int pass = 0; pass < 3; ++pass)
       if (r.FlipPass() == 0)
         break;
-    r.RelaxPass();
-    this->UpdateProgress(0.05 + 0.75 * (it + 1) / this->NumberOfIterations);
+      r.RelaxPass();
+      this->UpdateProgress(0.05 + 0.75 * (it + 1) / this->NumberOfIterations);
   }
   r.FlipPass();
   // The guarantee: measure, insert where the bound is exceeded, measure again.
