@@ -192,10 +192,17 @@ double amTriangleLocator::ClosestPointFacing(
   return this->Closest(x, normal, closest, triangle);
 }
 
-double amTriangleLocator::Closest(const double x[3], const double* normal, double closest[3], vtkIdType& triangle) const
+double amTriangleLocator::ClosestPointWithin(
+  const double x[3], double bound2, double closest[3], vtkIdType& triangle) const
+{
+  return this->Closest(x, nullptr, closest, triangle, bound2);
+}
+
+double amTriangleLocator::Closest(
+  const double x[3], const double* normal, double closest[3], vtkIdType& triangle, double bound2) const
 {
   triangle = -1;
-  double best = std::numeric_limits<double>::infinity();
+  double best = bound2;
   if (this->Triangles.empty())
     return best;
   int c[3];

@@ -17,6 +17,7 @@
 #include "vtkType.h"
 
 #include <array>
+#include <limits>
 #include <vector>
 
 class ANATOMESHFILTERSCORE_EXPORT amTriangleLocator
@@ -29,6 +30,10 @@ public:
   /// Closest point of the triangle set to x: returns the squared distance, sets closest and the
   /// triangle index (-1 and +inf when there is no triangle).
   double ClosestPoint(const double x[3], double closest[3], vtkIdType& triangle) const;
+
+  /// The closest point if it is nearer than squared distance bound2 (else returns bound2 and
+  /// triangle -1): only the bins within that reach are searched, so a small bound is cheap.
+  double ClosestPointWithin(const double x[3], double bound2, double closest[3], vtkIdType& triangle) const;
 
   /// The same among the triangles whose normal (their orientation) has a positive component
   /// along 'normal': where a thin part of the surface has two sides close together, the point on
@@ -49,7 +54,8 @@ public:
     const double x[3], const double a[3], const double b[3], const double c[3], double closest[3]);
 
 private:
-  double Closest(const double x[3], const double* normal, double closest[3], vtkIdType& triangle) const;
+  double Closest(const double x[3], const double* normal, double closest[3], vtkIdType& triangle,
+    double bound2 = std::numeric_limits<double>::infinity()) const;
   /// Distance from x to the bounding sphere of triangle t (negative inside): a lower bound of the
   /// distance to the triangle.
   double SphereGap(vtkIdType t, const double x[3]) const;

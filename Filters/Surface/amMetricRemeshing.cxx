@@ -944,8 +944,8 @@ public:
         for (vtkIdType i = i0; i < i1; ++i)
           if (known && at[i] >= 0 && same[at[i]])
           {
-            const double q = changed[s].ClosestPoint(samples[i].data(), cl, a);
-            if (q < d2[i])
+            const double q = changed[s].ClosestPointWithin(samples[i].data(), d2[i], cl, a);
+            if (q < d2[i] && a >= 0)
             {
               d2[i] = q;
               at[i] = changedIds[s][a];
@@ -1046,6 +1046,33 @@ public:
     cache.Valid = true;
     upperBound = worst + gap;
     return worst;
+  }
+
+  /// A copy of the state the operations change, for an undo by Restore: the input (locators,
+  /// samples, curves), the bins and the Measure cache are not copied (the input never changes;
+  /// nothing but the output is made after a Restore).
+  Remesher Snapshot()
+  {
+    Remesher keep;
+    this->SwapUncopied(keep);
+    Remesher copy = *this;
+    this->SwapUncopied(keep);
+    return copy;
+  }
+  void Restore(Remesher&& snapshot)
+  {
+    this->SwapUncopied(snapshot);
+    *this = std::move(snapshot);
+  }
+  void SwapUncopied(Remesher& o)
+  {
+    std::swap(this->Ref, o.Ref);
+    std::swap(this->RefSamples, o.RefSamples);
+    std::swap(this->RefPoints, o.RefPoints);
+    std::swap(this->InputSheets, o.InputSheets);
+    std::swap(this->CurveNeighbours, o.CurveNeighbours);
+    std::swap(this->Bins, o.Bins);
+    std::swap(this->Cache, o.Cache);
   }
 
   /// Split edge k of triangle t (and every triangle on that edge) at x, unless the new triangles
@@ -1523,7 +1550,7 @@ int amMetricRemeshing::RequestData(
     r.AngleSummary(smallBefore, shortestBefore);
     if (smallBefore == 0)
       break; // nothing to clean: no copy of the remesher for an undo
-    Remesher before = r;
+    Remesher before = r.Snapshot();
     const double hBefore = h, upperBefore = upper;
     const vtkIdType insertedBefore = inserted;
     int cleaned = 0;
@@ -1540,7 +1567,7 @@ int amMetricRemeshing::RequestData(
     r.AngleSummary(smallAfter, shortestAfter);
     if (h > std::max(hBefore, this->Tolerance) || smallAfter >= smallBefore || shortestAfter < 0.5 * shortestBefore)
     {
-      r = std::move(before);
+      r.Restore(std::move(before));
       h = hBefore;
       upper = upperBefore;
       inserted = insertedBefore;
