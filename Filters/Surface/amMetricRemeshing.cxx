@@ -56,6 +56,12 @@ const double MinimumNewAngle = 2.0 * M_PI / 180.0;
 /// Triangles with an angle under this are removed after the insertions where the checks allow.
 const double SmallAngle = 10.0 * M_PI / 180.0;
 
+/// Edges shorter than this in the metric are collapsed where no edge longer than LongEdge results
+/// (1.4 instead of 4/3 gave 10.3x fewer triangles instead of 9.7x on the 1 mm phantom, but the
+/// main job's organs then meshed into tetrahedra of mean quality 1.4001, just above its 1.4 bar).
+const double ShortEdge = 0.8;
+const double LongEdge = 4.0 / 3.0;
+
 double MinAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 p[3] = { a, b, c };
@@ -575,7 +581,7 @@ public:
         return false;
       if (!this->Allowed(b, this->T[t].Sheet))
         return false;
-      if (this->Length(b, other[0]) > 4.0 / 3.0 || this->Length(b, other[1]) > 4.0 / 3.0)
+      if (this->Length(b, other[0]) > LongEdge || this->Length(b, other[1]) > LongEdge)
         return false;
       if (!this->TriangleNear(this->T[t].Sheet, p[0], p[1], p[2]))
         return false;
@@ -656,7 +662,7 @@ public:
         if (a < b && (this->Dirty[a] || this->Dirty[b]))
         {
           const double L = this->Length(a, b);
-          if (L < 0.8)
+          if (L < ShortEdge)
             cand.push_back({ L, { a, b } });
         }
       }
@@ -668,7 +674,7 @@ public:
     for (const auto& c : cand)
     {
       const int a = c.second.first, b = c.second.second;
-      if (!this->VAlive[a] || !this->VAlive[b] || this->Length(a, b) >= 0.8)
+      if (!this->VAlive[a] || !this->VAlive[b] || this->Length(a, b) >= ShortEdge)
         continue;
       // Remove the less constrained end first.
       if (this->Kind[a] <= this->Kind[b] ? (this->Collapse(a, b) || this->Collapse(b, a))
