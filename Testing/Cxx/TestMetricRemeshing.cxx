@@ -31,6 +31,31 @@
 
 namespace
 {
+/// The phantom at 'spacing' mm through label surface, smoothing, isotropic curvature metric
+/// (MinimumSize one voxel) and remeshing at tolerance eps, run.
+struct PhantomChain
+{
+  vtkNew<amThoraxPhantomSource> Source;
+  vtkNew<amLabelSurface> Surface;
+  vtkNew<amSurfaceSmoothing> Smooth;
+  vtkNew<amCurvatureMetric> Metric;
+  vtkNew<amMetricRemeshing> Remesh;
+  PhantomChain(double spacing, double eps)
+  {
+    this->Source->SetSpacing(spacing, spacing, spacing);
+    this->Surface->SetInputConnection(this->Source->GetOutputPort(1));
+    this->Surface->SetComputeTopology(false);
+    this->Smooth->SetInputConnection(this->Surface->GetOutputPort());
+    this->Metric->SetInputConnection(this->Smooth->GetOutputPort());
+    this->Metric->SetTolerance(eps);
+    this->Metric->SetMinimumSize(spacing);
+    this->Metric->SetAnisotropic(false);
+    this->Remesh->SetInputConnection(this->Metric->GetOutputPort());
+    this->Remesh->SetTolerance(eps);
+    this->Remesh->Update();
+  }
+};
+
 void ExpectClosedRegions(vtkPolyData* pd)
 {
   std::vector<amSurfaceTopology::Region> regions;
@@ -90,23 +115,9 @@ TEST(MetricRemeshing, TwoMaterialBallUniformSize)
 
 TEST(MetricRemeshing, PhantomWithCurvatureMetric)
 {
-  vtkNew<amThoraxPhantomSource> src;
-  src->SetSpacing(2, 2, 2);
-  vtkNew<amLabelSurface> ls;
-  ls->SetInputConnection(src->GetOutputPort(1));
-  ls->SetComputeTopology(false);
-  vtkNew<amSurfaceSmoothing> sm;
-  sm->SetInputConnection(ls->GetOutputPort());
-  vtkNew<amCurvatureMetric> cm;
-  cm->SetInputConnection(sm->GetOutputPort());
-  cm->SetTolerance(0.5);
-  cm->SetMinimumSize(2);
-  cm->SetAnisotropic(false);
-  vtkNew<amMetricRemeshing> rm;
-  rm->SetInputConnection(cm->GetOutputPort());
-  rm->SetTolerance(0.5);
-  rm->Update();
-  sm->Update();
+  PhantomChain chain(2, 0.5);
+  amMetricRemeshing* rm = chain.Remesh;
+  amSurfaceSmoothing* sm = chain.Smooth;
   vtkPolyData* out = rm->GetOutput();
   EXPECT_LT(out->GetNumberOfCells() * 5, sm->GetOutput()->GetNumberOfCells());
   // The bound holds (measured 0.49999; 0.52 before junction edges were split along the input
@@ -145,24 +156,10 @@ TEST(MetricRemeshing, PhantomAtOneMillimetreMeetsTheIssueTargets)
   // 99.53 % of the triangles with angles >= 20 degrees, shortest edge 0.25 mm. Before, junction
   // edges split at the curve vertex nearest their midpoint folded a curve back on itself (0.533 mm)
   // and short closed junction loops smoothed into edges of 0.004 mm.
-  vtkNew<amThoraxPhantomSource> src;
-  src->SetSpacing(1, 1, 1);
-  vtkNew<amLabelSurface> ls;
-  ls->SetInputConnection(src->GetOutputPort(1));
-  ls->SetComputeTopology(false);
-  vtkNew<amSurfaceSmoothing> sm;
-  sm->SetInputConnection(ls->GetOutputPort());
-  vtkNew<amCurvatureMetric> cm;
-  cm->SetInputConnection(sm->GetOutputPort());
-  cm->SetTolerance(0.2);
-  cm->SetMinimumSize(1);
-  cm->SetAnisotropic(false);
-  vtkNew<amMetricRemeshing> rm;
-  rm->SetInputConnection(cm->GetOutputPort());
-  rm->SetTolerance(0.2);
-  rm->Update();
+  PhantomChain chain(1, 0.2);
+  amMetricRemeshing* rm = chain.Remesh;
   vtkPolyData* out = rm->GetOutput();
-  const vtkIdType before = sm->GetOutput()->GetNumberOfCells(), after = out->GetNumberOfCells();
+  const vtkIdType before = chain.Smooth->GetOutput()->GetNumberOfCells(), after = out->GetNumberOfCells();
   std::printf("1 mm phantom: %lld -> %lld triangles (%.2fx), Hausdorff %.4f, %.2f %% >= 20 degrees\n",
     static_cast<long long>(before), static_cast<long long>(after), static_cast<double>(before) / after,
     rm->GetHausdorff(), 100 * amTest::AngleFraction(out, 20));
