@@ -1006,19 +1006,26 @@ public:
         double w = 0;
         Vec3 far = a, farSample = a;
         int onEdge = -1;
+        auto visit = [&](const Vec3& x, int edge) {
+          const double d = this->Ref[t.Sheet].ClosestPoint(x.data(), cl, tt);
+          if (d > w)
+          {
+            w = d;
+            far = Vec3(cl);
+            farSample = x;
+            onEdge = edge;
+          }
+        };
         for (int u = 0; u <= n; ++u)
           for (int v = 0; u + v <= n; ++v)
-          {
-            const Vec3 x = a + (b - a) * (static_cast<double>(u) / n) + (c - a) * (static_cast<double>(v) / n);
-            const double d = this->Ref[t.Sheet].ClosestPoint(x.data(), cl, tt);
-            if (d > w)
-            {
-              w = d;
-              far = Vec3(cl);
-              farSample = x;
-              onEdge = v == 0 ? 0 : (u + v == n ? 1 : (u == 0 ? 2 : -1));
-            }
-          }
+            visit(a + (b - a) * (static_cast<double>(u) / n) + (c - a) * (static_cast<double>(v) / n),
+              v == 0 ? 0 : (u + v == n ? 1 : (u == 0 ? 2 : -1)));
+        // Also the edge midpoints and the centroid, which the grid misses when n is odd or not a
+        // multiple of three (SurfaceDistance samples them: its figure can be no larger than ours).
+        visit(0.5 * (a + b), 0);
+        visit(0.5 * (b + c), 1);
+        visit(0.5 * (c + a), 2);
+        visit((a + b + c) / 3.0, -1);
         // The point to insert: on the side of the input facing the way the triangle faces.
         if (w > this->Eps * this->Eps)
         {
