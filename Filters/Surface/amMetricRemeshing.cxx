@@ -638,8 +638,9 @@ public:
   }
 
   /// Vertices whose neighbourhood changed since the last collapse pass began: only edges at one
-  /// of them are tried again (a refused collapse whose surroundings did not change would be
-  /// refused again).
+  /// of them are tried again (a refused collapse whose star did not change would be refused
+  /// again, unless it was refused for crossing a triangle elsewhere that has since moved: such an
+  /// edge waits until something changes next to it).
   std::vector<char> Dirty;
   void Touch(int v)
   {
