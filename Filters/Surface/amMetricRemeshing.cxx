@@ -364,6 +364,12 @@ public:
     return false;
   }
 
+  /// Metric length of the edge from x (metric mx) to vertex b.
+  double Length(const Vec3& x, const Mat3& mx, int b) const
+  {
+    const Vec3 e = this->P[b] - x;
+    return 0.5 * (std::sqrt(std::max(0.0, e.dot(mx * e))) + std::sqrt(std::max(0.0, e.dot(this->M[b] * e))));
+  }
   double Length(int a, int b) const
   {
     const Vec3 e = this->P[b] - this->P[a];
@@ -531,9 +537,12 @@ public:
     return id;
   }
 
-  /// Half-edge collapse: a disappears onto b.
-  bool Collapse(int a, int b)
+  /// Edge collapse: a disappears onto b, which stays where it is (half-edge collapse) or, given
+  /// 'to' (two surface vertices only), moves there: a point of the input between them.
+  bool Collapse(int a, int b, const Vec3* to = nullptr)
   {
+    if (to && (this->Kind[a] != amSurfaceMesh::Surface || this->Kind[b] != amSurfaceMesh::Surface))
+      return false;
     if (!this->VAlive[a] || !this->VAlive[b] || this->Kind[a] == amSurfaceMesh::Corner)
       return false;
     std::vector<int> edge;
@@ -561,18 +570,34 @@ public:
     // frog's thin organs: inverted bubbles whose labels then contradict the volume around them).
     if (na.size() < 5 && this->ComponentAtMost(a, 5)) // a and five neighbours are six already
       return false;
+    // The triangles that change: a's (a becomes b) and, when b moves, b's.
+    const Vec3 x = to ? *to : this->P[b];
+    const Mat3 mx = to ? Mat3(0.5 * (this->M[a] + this->M[b])) : this->M[b];
+    std::vector<int> changed, removed = this->VT[a];
     for (int t : this->VT[a])
+      if (std::find(edge.begin(), edge.end(), t) == edge.end())
+        changed.push_back(t);
+    if (to)
+      for (int t : this->VT[b])
+        if (std::find(edge.begin(), edge.end(), t) == edge.end())
+        {
+          changed.push_back(t);
+          removed.push_back(t);
+        }
+    std::vector<std::array<int, 3>> ids;
+    std::vector<std::array<Vec3, 3>> pos;
+    std::vector<int> sheets;
+    for (int t : changed)
     {
-      if (std::find(edge.begin(), edge.end(), t) != edge.end())
-        continue;
-      Vec3 p[3];
+      std::array<int, 3> v;
+      std::array<Vec3, 3> p;
       int other[2], o = 0;
       for (int k = 0; k < 3; ++k)
       {
-        const int v = this->T[t].V[k];
-        p[k] = v == a ? this->P[b] : this->P[v];
-        if (v != a)
-          other[o++] = v;
+        v[k] = this->T[t].V[k] == a ? b : this->T[t].V[k];
+        p[k] = v[k] == b ? x : this->P[v[k]];
+        if (v[k] != b)
+          other[o++] = v[k];
       }
       const Vec3 n0 = this->Normal(t), n1 = (p[1] - p[0]).cross(p[2] - p[0]);
       if (n1.norm() <= 1e-12 * n0.norm() || n0.normalized().dot(n1.normalized()) < 0.5)
@@ -581,39 +606,27 @@ public:
         return false;
       if (!this->Allowed(b, this->T[t].Sheet))
         return false;
-      if (this->Length(b, other[0]) > LongEdge || this->Length(b, other[1]) > LongEdge)
+      if (this->Length(x, mx, other[0]) > LongEdge || this->Length(x, mx, other[1]) > LongEdge)
         return false;
       if (!this->TriangleNear(this->T[t].Sheet, p[0], p[1], p[2]))
         return false;
+      ids.push_back(v);
+      pos.push_back(p);
+      sheets.push_back(this->T[t].Sheet);
     }
     {
-      std::vector<std::array<int, 3>> ids;
-      std::vector<std::array<Vec3, 3>> pos;
-      std::vector<int> sheets;
-      std::vector<int> newIds;
-      for (int t : this->VT[a])
-        if (std::find(edge.begin(), edge.end(), t) == edge.end())
-        {
-          std::array<int, 3> v;
-          std::array<Vec3, 3> x;
-          for (int k = 0; k < 3; ++k)
-          {
-            v[k] = this->T[t].V[k] == a ? b : this->T[t].V[k];
-            x[k] = this->P[v[k]];
-          }
-          ids.push_back(v);
-          pos.push_back(x);
-          sheets.push_back(this->T[t].Sheet);
-          newIds.push_back(t);
-        }
       // The input vertices a stood for must stay within Eps of the triangles of their interface
       // around b afterwards, and those of b and a's other neighbours within Eps of theirs (so no
       // patch of an interface can retract or vanish).
       std::vector<int> affected = na;
+      if (to)
+        affected.insert(affected.end(), nb.begin(), nb.end());
+      std::sort(affected.begin(), affected.end());
+      affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
       affected.erase(std::remove(affected.begin(), affected.end(), a), affected.end());
-      if (!this->ClustersStayNear(this->VT[a], ids, pos, sheets, newIds, affected, a, b))
+      if (!this->ClustersStayNear(removed, ids, pos, sheets, changed, affected, a, b))
         return false;
-      if (this->Crosses(ids, pos, this->VT[a]))
+      if (this->Crosses(ids, pos, removed))
         return false;
     }
     this->KeepHints();
@@ -627,14 +640,51 @@ public:
         if (this->T[t].V[k] == a)
           this->T[t].V[k] = b;
       this->VT[b].push_back(t);
-      this->BinTriangle(t);
     }
     this->VT[a].clear();
     this->VAlive[a] = 0;
+    this->P[b] = x;
+    this->M[b] = mx;
+    for (int t : changed)
+      this->BinTriangle(t);
     ++this->Collapses;
     for (int w : na)
       this->Touch(w);
+    if (to)
+      for (int w : nb)
+        this->Touch(w);
     return true;
+  }
+
+  /// Collapse of an edge between two surface vertices into the point of the input nearest its
+  /// middle (on the side its triangles face): where neither end can take the other's triangles
+  /// without an edge longer than LongEdge, the middle often can (on the 1 mm phantom 11.2x fewer
+  /// triangles than the input instead of 9.7x, at the same Hausdorff distance and angles).
+  bool CollapseToMiddle(int a, int b)
+  {
+    if (this->Kind[a] != amSurfaceMesh::Surface || this->Kind[b] != amSurfaceMesh::Surface)
+      return false;
+    Vec3 n = Vec3::Zero();
+    for (int v : { a, b })
+      for (int t : this->VT[v])
+      {
+        n += this->Normal(t);
+        // Not beside a junction curve: moving b there made needles across the crease that no
+        // insertion could bring back within Eps (2 mm phantom, uniform 4 mm: 0.61 for 0.5).
+        for (int k = 0; k < 3; ++k)
+          if (this->Kind[this->T[t].V[k]] != amSurfaceMesh::Surface)
+            return false;
+      }
+    if (n.norm() == 0)
+      return false;
+    const Vec3 m = 0.5 * (this->P[a] + this->P[b]);
+    double cl[3];
+    vtkIdType tri;
+    if (this->Ref[this->T[this->VT[a][0]].Sheet].ClosestPointFacing(m.data(), n.data(), cl, tri) ==
+      std::numeric_limits<double>::infinity())
+      return false;
+    const Vec3 x(cl);
+    return this->Collapse(a, b, &x);
   }
 
   /// Vertices whose neighbourhood changed since the last collapse pass began: only edges at one
@@ -680,6 +730,8 @@ public:
       // Remove the less constrained end first.
       if (this->Kind[a] <= this->Kind[b] ? (this->Collapse(a, b) || this->Collapse(b, a))
                                          : (this->Collapse(b, a) || this->Collapse(a, b)))
+        ++done;
+      else if (this->CollapseToMiddle(a, b))
         ++done;
     }
     return done;
@@ -1168,29 +1220,28 @@ public:
   {
     if (t < 0 || !this->T[t].Alive)
       return 0;
-    int k = 0;
-    double longest = -1;
+    // The longest edge first; a shorter one where that split is refused (a junction edge beside
+    // it can hold the input curve vertex that a split of the longest edge would fold over).
+    std::array<std::pair<double, int>, 3> order;
     for (int e = 0; e < 3; ++e)
-    {
-      const double l = (this->P[this->T[t].V[(e + 1) % 3]] - this->P[this->T[t].V[e]]).norm();
-      if (l > longest)
-      {
-        longest = l;
-        k = e;
-      }
-    }
-    const Vec3 mid = 0.5 * (this->P[this->T[t].V[k]] + this->P[this->T[t].V[(k + 1) % 3]]);
-    double cl[3];
-    vtkIdType tri;
+      order[e] = { -(this->P[this->T[t].V[(e + 1) % 3]] - this->P[this->T[t].V[e]]).norm(), e };
+    std::sort(order.begin(), order.end());
     // The input point on the side facing the way the triangle faces (in a thin part the nearest
     // input point can lie on the other side, and refining towards it crumples the surface).
     const Vec3 n = this->Normal(t);
-    if (this->Ref[this->T[t].Sheet].ClosestPointFacing(mid.data(), n.data(), cl, tri) == std::numeric_limits<double>::infinity())
-      return 0;
-    if (!this->SplitEdge(t, k, Vec3(cl)))
-      return 0;
-    this->FlipAround(static_cast<int>(this->P.size()) - 1);
-    return 1;
+    for (const auto& [length, k] : order)
+    {
+      const Vec3 mid = 0.5 * (this->P[this->T[t].V[k]] + this->P[this->T[t].V[(k + 1) % 3]]);
+      double cl[3];
+      vtkIdType tri;
+      if (this->Ref[this->T[t].Sheet].ClosestPointFacing(mid.data(), n.data(), cl, tri) ==
+          std::numeric_limits<double>::infinity() ||
+        !this->SplitEdge(t, k, Vec3(cl)))
+        continue;
+      this->FlipAround(static_cast<int>(this->P.size()) - 1);
+      return 1;
+    }
+    return 0;
   }
 
   /// Live triangles with an angle under SmallAngle, and the shortest live edge.
