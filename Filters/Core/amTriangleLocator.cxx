@@ -244,15 +244,8 @@ double amTriangleLocator::Closest(
             if (dc > 0 && dc * dc >= best)
               continue; // no point of this triangle can be closer than the best so far
             const auto& tri = this->Triangles[t];
-            if (normal)
-            {
-              const auto &a = this->Points[tri[0]], &b = this->Points[tri[1]], &c = this->Points[tri[2]];
-              const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-              const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-              const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
-              if (n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2] <= 0)
-                continue; // facing the other way: the other side of a thin part
-            }
+            if (normal && !this->Faces(t, normal))
+              continue; // facing the other way: the other side of a thin part
             const double d2 = ClosestPointOnTriangle(x, this->Points[tri[0]].data(),
               this->Points[tri[1]].data(), this->Points[tri[2]].data(), q);
             if (d2 < best)
@@ -284,7 +277,17 @@ double amTriangleLocator::Closest(
   return best;
 }
 
-bool amTriangleLocator::WithinDistance(const double x[3], double r2) const
+bool amTriangleLocator::Faces(vtkIdType t, const double normal[3]) const
+{
+  const auto& tri = this->Triangles[t];
+  const auto &a = this->Points[tri[0]], &b = this->Points[tri[1]], &c = this->Points[tri[2]];
+  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+  const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
+  return n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2] > 0;
+}
+
+bool amTriangleLocator::WithinDistance(const double x[3], double r2, const double* normal) const
 {
   if (this->Triangles.empty() || !(r2 >= 0))
     return false;
@@ -310,6 +313,8 @@ bool amTriangleLocator::WithinDistance(const double x[3], double r2) const
           if (dc > 0 && dc * dc > r2)
             continue;
           const auto& tri = this->Triangles[t];
+          if (normal && !this->Faces(t, normal))
+            continue;
           if (ClosestPointOnTriangle(x, this->Points[tri[0]].data(), this->Points[tri[1]].data(),
                 this->Points[tri[2]].data(), q) <= r2)
             return true;

@@ -42,8 +42,9 @@ public:
 
   /// Whether some triangle lies within squared distance r2 of x (the same answer as
   /// ClosestPoint(x) <= r2, but only the bins within reach are searched and the first triangle
-  /// found within reach ends the search).
-  bool WithinDistance(const double x[3], double r2) const;
+  /// found within reach ends the search). With 'normal', only the triangles facing that way
+  /// count, as in ClosestPointFacing.
+  bool WithinDistance(const double x[3], double r2, const double* normal = nullptr) const;
 
   /// A sphere about the centroid of (a, b, c) holding the triangle: centre and radius, the radius
   /// inflated by a relative 1e-9 so that rejections by it are safe against rounding.
@@ -59,6 +60,8 @@ private:
   /// Distance from x to the bounding sphere of triangle t (negative inside): a lower bound of the
   /// distance to the triangle.
   double SphereGap(vtkIdType t, const double x[3]) const;
+  /// Whether triangle t's orientation has a positive component along 'normal'.
+  bool Faces(vtkIdType t, const double normal[3]) const;
 
   std::vector<std::array<double, 3>> Points;
   std::vector<std::array<vtkIdType, 3>> Triangles;

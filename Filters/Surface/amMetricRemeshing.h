@@ -12,11 +12,17 @@
  *    of some region would become non-manifold), flip a triangle or give it an angle under 10
  *    degrees (on the exact organs at 1 mm, 5 degrees let caps through that no flip could mend
  *    later: the smallest dihedral of their tetrahedra fell to 7.6 degrees), make an edge
- *    longer than 4/3, or put a point of a new triangle (edge midpoints, centroid) farther than
- *    Tolerance from the input surface of the same interface, or leave an input vertex farther
+ *    longer than 4/3, or put a point of a new triangle (edge midpoints and quarter points,
+ *    centroid) farther than Tolerance from the input surface of the same interface (its input
+ *    triangles facing the same way), or leave an input vertex farther
  *    than Tolerance from the triangles of its interface around the vertex that stands for it
  *    (each input vertex is assigned to the vertex it collapsed into; flips and relaxation keep
  *    this too, so the input cannot drift away from the result between the distance checks);
+ *    where neither end of an edge can take the other's triangles, the edge is collapsed into the
+ *    input point nearest its middle (two surface vertices, not beside a junction curve). The
+ *    collapse passes run on two workers, one on each side of a plane through the median vertex:
+ *    a worker carries out a collapse only where both stars lie on its side, so neither reads what
+ *    the other changes; the rest follow serially. The result does not depend on the threads;
  * 2. edge flips inside an interface that raise the smaller of the two triangles' minimum angles,
  *    between nearly coplanar triangles, under the same distance check;
  * 3. tangential relaxation of surface vertices towards the centroid of their ring, projected back
@@ -40,9 +46,10 @@
  * its interface, and a grid of points on each remeshed triangle against the input), and wherever
  * it exceeds Tolerance the offending triangle (or the one nearest the offending input sample) is
  * bisected: its longest edge split at the point of the input nearest the edge's midpoint (a
- * junction edge at the input curve vertex nearest it), then flips around the new vertex. Where
- * that is refused, the offending point itself is inserted (or, on an edge, that edge split
- * there); an insertion refused because it would cross something refines the triangles in the way
+ * junction edge at the input curve vertex halfway along the input curve), then flips around the
+ * new vertex; where that is refused, a junction edge of the triangle is split instead. Where
+ * that is refused too, the offending point itself is inserted (on an edge: that edge split
+ * there, else inserted into the triangle); an insertion refused because it would cross something refines the triangles in the way
  * instead, up to 30 rounds. (Bisection keeps the angles; inserting the far points themselves left
  * slivers: 12 triangles under 8 degrees on the exact organs at 1 mm, 3 with bisection first.) The achieved value is stored in field data "Hausdorff" (and
  * "HausdorffUpperBound" with the sampling gap); a warning says so if the bound could not be
