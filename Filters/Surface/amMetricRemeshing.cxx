@@ -419,11 +419,7 @@ public:
     const Vec3 e = this->P[b] - x;
     return 0.5 * (std::sqrt(std::max(0.0, e.dot(mx * e))) + std::sqrt(std::max(0.0, e.dot(this->M[b] * e))));
   }
-  double Length(int a, int b) const
-  {
-    const Vec3 e = this->P[b] - this->P[a];
-    return 0.5 * (std::sqrt(std::max(0.0, e.dot(this->M[a] * e))) + std::sqrt(std::max(0.0, e.dot(this->M[b] * e))));
-  }
+  double Length(int a, int b) const { return this->Length(this->P[a], this->M[a], b); }
   bool Near(int sheet, const Vec3& x, const Vec3& normal) const
   {
     return this->Ref[sheet].WithinDistance(x.data(), this->Eps * this->Eps, normal.data());
