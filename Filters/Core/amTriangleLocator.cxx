@@ -8,22 +8,6 @@
 void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
   const std::vector<std::array<vtkIdType, 3>>& triangles)
 {
-  // Keep only the points the triangles use (a locator over a few triangles of a large mesh stays
-  // small), renumbered in the order of their ids.
-  std::vector<vtkIdType> used;
-  used.reserve(3 * triangles.size());
-  for (const auto& t : triangles)
-    used.insert(used.end(), t.begin(), t.end());
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
-  this->Points.resize(used.size());
-  for (size_t i = 0; i < used.size(); ++i)
-    this->Points[i] = points[used[i]];
-  this->Triangles.resize(triangles.size());
-  for (size_t t = 0; t < triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      this->Triangles[t][k] =
-        static_cast<vtkIdType>(std::lower_bound(used.begin(), used.end(), triangles[t][k]) - used.begin());
   const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
     std::numeric_limits<double>::max() };
@@ -42,6 +26,7 @@ void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
   }
   if (nt == 0)
   {
+    this->Triangles.clear();
     this->N[0] = this->N[1] = this->N[2] = 0;
     return;
   }
@@ -71,10 +56,27 @@ void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
       b1[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mx - this->Origin[d]) / h)));
     }
   };
-  this->Spheres.resize(static_cast<size_t>(nt));
+  this->Triangles.resize(static_cast<size_t>(nt));
   for (vtkIdType t = 0; t < nt; ++t)
-    this->Spheres[t] = BoundingSphere(
-      points[triangles[t][0]].data(), points[triangles[t][1]].data(), points[triangles[t][2]].data());
+  {
+    Record& r = this->Triangles[t];
+    const double *a = points[triangles[t][0]].data(), *b = points[triangles[t][1]].data(),
+                 *c = points[triangles[t][2]].data();
+    const std::array<double, 4> sphere = BoundingSphere(a, b, c);
+    std::copy(sphere.begin(), sphere.begin() + 3, r.Centre);
+    r.Radius = sphere[3];
+    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+    r.Normal[0] = u[1] * v[2] - u[2] * v[1];
+    r.Normal[1] = u[2] * v[0] - u[0] * v[2];
+    r.Normal[2] = u[0] * v[1] - u[1] * v[0];
+    for (int d = 0; d < 3; ++d)
+    {
+      r.Corner[0][d] = a[d];
+      r.Corner[1][d] = b[d];
+      r.Corner[2][d] = c[d];
+    }
+  }
   this->BinStart.assign(static_cast<size_t>(nb + 1), 0);
   int b0[3], b1[3];
   for (vtkIdType t = 0; t < nt; ++t)
@@ -111,12 +113,16 @@ std::array<double, 4> amTriangleLocator::BoundingSphere(const double a[3], const
   return s;
 }
 
-double amTriangleLocator::SphereGap(vtkIdType t, const double x[3]) const
+bool amTriangleLocator::SphereBeyond(const Record& t, const double x[3], double r) const
 {
-  const auto& sphere = this->Spheres[t];
-  return std::sqrt((x[0] - sphere[0]) * (x[0] - sphere[0]) + (x[1] - sphere[1]) * (x[1] - sphere[1]) +
-           (x[2] - sphere[2]) * (x[2] - sphere[2])) -
-    sphere[3];
+  const double dx = x[0] - t.Centre[0], dy = x[1] - t.Centre[1], dz = x[2] - t.Centre[2];
+  const double reach = t.Radius + r;
+  return dx * dx + dy * dy + dz * dz > reach * reach;
+}
+
+double amTriangleLocator::ClosestPointOn(const double x[3], const Record& t, double closest[3])
+{
+  return ClosestPointOnTriangle(x, t.Corner[0], t.Corner[1], t.Corner[2], closest);
 }
 
 double amTriangleLocator::ClosestPointOnTriangle(
@@ -210,6 +216,9 @@ double amTriangleLocator::Closest(
     c[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>(std::floor((x[d] - this->Origin[d]) / this->H))));
   const int maxR = std::max({ c[0], this->N[0] - 1 - c[0], c[1], this->N[1] - 1 - c[1], c[2], this->N[2] - 1 - c[2] });
   double q[3];
+  double reachBest = std::numeric_limits<double>::infinity(); // sqrt(best)
+  if (best < std::numeric_limits<double>::infinity())
+    reachBest = std::sqrt(best);
   for (int r = 0; r <= maxR; ++r)
   {
     for (int k = c[2] - r; k <= c[2] + r; ++k)
@@ -240,17 +249,16 @@ double amTriangleLocator::Closest(
           for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
           {
             const vtkIdType t = this->BinTriangles[s];
-            const double dc = this->SphereGap(t, x);
-            if (dc > 0 && dc * dc >= best)
+            const Record& tri = this->Triangles[t];
+            if (reachBest < std::numeric_limits<double>::infinity() && this->SphereBeyond(tri, x, reachBest))
               continue; // no point of this triangle can be closer than the best so far
-            const auto& tri = this->Triangles[t];
-            if (normal && !this->Faces(t, normal))
+            if (normal && !Faces(tri, normal))
               continue; // facing the other way: the other side of a thin part
-            const double d2 = ClosestPointOnTriangle(x, this->Points[tri[0]].data(),
-              this->Points[tri[1]].data(), this->Points[tri[2]].data(), q);
+            const double d2 = ClosestPointOn(x, tri, q);
             if (d2 < best)
             {
               best = d2;
+              reachBest = std::sqrt(best);
               triangle = t;
               closest[0] = q[0];
               closest[1] = q[1];
@@ -277,48 +285,43 @@ double amTriangleLocator::Closest(
   return best;
 }
 
-bool amTriangleLocator::Faces(vtkIdType t, const double normal[3]) const
-{
-  const auto& tri = this->Triangles[t];
-  const auto &a = this->Points[tri[0]], &b = this->Points[tri[1]], &c = this->Points[tri[2]];
-  const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-  const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-  const double n[3] = { u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0] };
-  return n[0] * normal[0] + n[1] * normal[1] + n[2] * normal[2] > 0;
-}
-
 bool amTriangleLocator::WithinDistance(const double x[3], double r2, const double* normal) const
 {
   if (this->Triangles.empty() || !(r2 >= 0))
     return false;
   const double r = std::sqrt(r2);
-  int b0[3], b1[3];
+  int b0[3], b1[3], c[3];
   for (int d = 0; d < 3; ++d)
   {
     b0[d] = std::max(0, static_cast<int>(std::floor((x[d] - r - this->Origin[d]) / this->H)));
     b1[d] = std::min(this->N[d] - 1, static_cast<int>(std::floor((x[d] + r - this->Origin[d]) / this->H)));
     if (b0[d] > b1[d])
       return false;
+    c[d] = std::min(b1[d], std::max(b0[d], static_cast<int>(std::floor((x[d] - this->Origin[d]) / this->H))));
   }
   double q[3];
+  auto inBin = [&](vtkIdType b) {
+    for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
+    {
+      const Record& tri = this->Triangles[this->BinTriangles[s]];
+      if (this->SphereBeyond(tri, x, r) || (normal && !Faces(tri, normal)))
+        continue;
+      if (ClosestPointOn(x, tri, q) <= r2)
+        return true;
+    }
+    return false;
+  };
+  // The bin holding x first: the nearest triangles are most likely there.
+  const vtkIdType centre = (static_cast<vtkIdType>(c[2]) * this->N[1] + c[1]) * this->N[0] + c[0];
+  if (inBin(centre))
+    return true;
   for (int k = b0[2]; k <= b1[2]; ++k)
     for (int j = b0[1]; j <= b1[1]; ++j)
       for (int i = b0[0]; i <= b1[0]; ++i)
       {
         const vtkIdType b = (static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i;
-        for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
-        {
-          const vtkIdType t = this->BinTriangles[s];
-          const double dc = this->SphereGap(t, x);
-          if (dc > 0 && dc * dc > r2)
-            continue;
-          const auto& tri = this->Triangles[t];
-          if (normal && !this->Faces(t, normal))
-            continue;
-          if (ClosestPointOnTriangle(x, this->Points[tri[0]].data(), this->Points[tri[1]].data(),
-                this->Points[tri[2]].data(), q) <= r2)
-            return true;
-        }
+        if (b != centre && inBin(b))
+          return true;
       }
   return false;
 }

@@ -23,7 +23,7 @@
 class ANATOMESHFILTERSCORE_EXPORT amTriangleLocator
 {
 public:
-  /// Bin the triangles (they and the points they use are copied).
+  /// Bin the triangles (their corners are copied).
   void Build(const std::vector<std::array<double, 3>>& points,
     const std::vector<std::array<vtkIdType, 3>>& triangles);
 
@@ -57,19 +57,30 @@ public:
 private:
   double Closest(const double x[3], const double* normal, double closest[3], vtkIdType& triangle,
     double bound2 = std::numeric_limits<double>::infinity()) const;
-  /// Distance from x to the bounding sphere of triangle t (negative inside): a lower bound of the
-  /// distance to the triangle.
-  double SphereGap(vtkIdType t, const double x[3]) const;
-  /// Whether triangle t's orientation has a positive component along 'normal'.
-  bool Faces(vtkIdType t, const double normal[3]) const;
+  /// What a query reads of one triangle, in one place (two cache lines): the bounding sphere and
+  /// the normal first, which reject most triangles, then the corners.
+  struct alignas(64) Record
+  {
+    double Centre[3];
+    double Radius; // about the centroid, slightly inflated (BoundingSphere)
+    double Normal[3]; // not normalised: only its sign along a query normal is used
+    double Corner[3][3];
+  };
+  /// Whether no point of triangle t lies within distance r of x (its bounding sphere is farther).
+  bool SphereBeyond(const Record& t, const double x[3], double r) const;
+  /// Closest point on the triangle of a record.
+  static double ClosestPointOn(const double x[3], const Record& t, double closest[3]);
+  /// Whether the triangle's orientation has a positive component along 'normal'.
+  static bool Faces(const Record& t, const double normal[3])
+  {
+    return t.Normal[0] * normal[0] + t.Normal[1] * normal[1] + t.Normal[2] * normal[2] > 0;
+  }
 
-  std::vector<std::array<double, 3>> Points;
-  std::vector<std::array<vtkIdType, 3>> Triangles;
+  std::vector<Record> Triangles;
   double Origin[3] = { 0, 0, 0 };
   double H = 1.0;
   int N[3] = { 0, 0, 0 };
   std::vector<vtkIdType> BinStart, BinTriangles;
-  std::vector<std::array<double, 4>> Spheres; // per triangle: centroid and (slightly inflated) radius
 };
 
 #endif
