@@ -122,6 +122,7 @@ public:
     int StampValue = 0;
     int LastHit = -1; // the live triangle the last refused operation would have crossed
     long long Collapses = 0;
+    std::vector<int> Removed; // per component (see FindComponents): vertices this worker removed
   };
   mutable std::array<Worker, 2> Workers;
   Worker& W() const { return this->Workers[CurrentWorker]; }
@@ -526,6 +527,61 @@ public:
     }
     return true;
   }
+  /// The connected components of the live triangles when a collapse pass begins, and each one's
+  /// number of vertices in zone 0, in zone 1 and in all. A collapse neither splits nor joins
+  /// components and removes one vertex, so a worker bounds the size of a component from below
+  /// without looking at it: what it had, less what this worker removed, less all it had on the
+  /// other worker's side (the other worker removes only vertices there).
+  std::vector<int> Component;
+  std::vector<std::array<int, 3>> ComponentCount;
+  void FindComponents()
+  {
+    std::vector<int> parent(this->P.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto root = [&parent](int v) {
+      while (parent[v] != v)
+        v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    for (const Tri& t : this->T)
+      if (t.Alive)
+        for (int k = 1; k < 3; ++k)
+        {
+          const int r0 = root(t.V[0]), r1 = root(t.V[k]);
+          if (r0 != r1)
+            parent[std::max(r0, r1)] = std::min(r0, r1);
+        }
+    this->Component.assign(this->P.size(), -1);
+    this->ComponentCount.clear();
+    std::vector<int> id(this->P.size(), -1);
+    for (size_t v = 0; v < this->P.size(); ++v)
+      if (this->VAlive[v] && !this->VT[v].empty())
+      {
+        int& c = id[root(static_cast<int>(v))];
+        if (c < 0)
+        {
+          c = static_cast<int>(this->ComponentCount.size());
+          this->ComponentCount.push_back({ 0, 0, 0 });
+        }
+        this->Component[v] = c;
+        const int zone = this->ZoneAt(this->P[v]);
+        if (zone < 2)
+          ++this->ComponentCount[c][zone];
+        ++this->ComponentCount[c][2];
+      }
+    for (Worker& w : this->Workers)
+      w.Removed.assign(this->ComponentCount.size(), 0);
+  }
+  /// For the worker of zone CurrentZone: whether v's component surely has more than n live
+  /// vertices, whatever the other worker has done meanwhile (see FindComponents).
+  bool SurelyMoreThan(int v, int n) const
+  {
+    const int c = this->Component[v];
+    if (c < 0)
+      return false;
+    const auto& count = this->ComponentCount[c];
+    return count[2] - this->W().Removed[c] - count[1 - CurrentZone] > n;
+  }
   /// Whether v's connected component has at most n vertices (searches no further than that).
   bool ComponentAtMost(int v, size_t n) const
   {
@@ -626,8 +682,9 @@ public:
     // A closed fragment of five vertices or fewer is not collapsed further: as a tetrahedron it
     // is flat enough to turn inside out when its vertices are moved onto the input (seen on the
     // frog's thin organs: inverted bubbles whose labels then contradict the volume around them).
-    if (na.size() < 5 && this->ComponentAtMost(a, 5)) // a and five neighbours are six already
-      return false;
+    // (A worker does not search: it only takes edges whose components are surely larger.)
+    if (na.size() < 5 && (CurrentZone < 0 ? this->ComponentAtMost(a, 5) : !this->SurelyMoreThan(a, 5)))
+      return false; // a and five neighbours are six already
     // The triangles that change: a's (a becomes b) and, when b moves, b's.
     const Vec3 x = to ? *to : this->P[b];
     const Mat3 mx = to ? Mat3(0.5 * (this->M[a] + this->M[b])) : this->M[b];
@@ -666,12 +723,15 @@ public:
         return false;
       if (this->Length(x, mx, other[0]) > LongEdge || this->Length(x, mx, other[1]) > LongEdge)
         return false;
-      if (!this->TriangleNear(this->T[t].Sheet, p[0], p[1], p[2]))
-        return false;
       ids.push_back(v);
       pos.push_back(p);
       sheets.push_back(this->T[t].Sheet);
     }
+    // The distance samples last: they cost most, and one of the checks above refuses a third of
+    // the collapses tried (outer phantom surface).
+    for (size_t n = 0; n < ids.size(); ++n)
+      if (!this->TriangleNear(sheets[n], pos[n][0], pos[n][1], pos[n][2]))
+        return false;
     {
       // The input vertices a stood for must stay within Eps of the triangles of their interface
       // around b afterwards, and those of b and a's other neighbours within Eps of theirs (so no
@@ -706,6 +766,8 @@ public:
     for (int t : changed)
       this->BinTriangle(t);
     ++this->W().Collapses;
+    if (CurrentZone >= 0)
+      ++this->W().Removed[this->Component[a]];
     for (int w : na)
       this->Touch(w);
     if (to)
@@ -790,7 +852,8 @@ public:
     // collapse changes, and the bins its crossing check reads) lie on that side too. A collapse
     // changes only triangles around a and b, so neither side ever reads what the other changes,
     // and each side's result does not depend on the other's timing. The rest (edges at the
-    // plane, stars reaching across it) follow serially, in order.
+    // plane, stars reaching across it, possibly small fragments) follow serially, in order.
+    this->FindComponents();
     std::array<std::vector<int>, 2> side;
     std::vector<char> later(cand.size(), 1);
     for (size_t i = 0; i < cand.size(); ++i)
@@ -810,7 +873,10 @@ public:
         for (int i : side[z])
         {
           const int a = cand[i].second.first, b = cand[i].second.second;
-          if (!this->StarsInZone(a, b, static_cast<int>(z)))
+          // Small fragments are left to the serial pass: there the test for them searches the
+          // whole component.
+          if (!this->StarsInZone(a, b, static_cast<int>(z)) || !this->SurelyMoreThan(a, 5) ||
+            !this->SurelyMoreThan(b, 5))
             continue;
           const int r = this->TryCollapse(a, b);
           if (r >= 0)
@@ -828,11 +894,10 @@ public:
     return done;
   }
 
-  /// Whether the stars of a and b lie in zone z's bins. Vertices with fewer than five triangles
-  /// are left to the serial pass: there the small-fragment test searches a's whole component.
+  /// Whether the stars of a and b lie in zone z's bins.
   bool StarsInZone(int a, int b, int z) const
   {
-    if (!this->VAlive[a] || !this->VAlive[b] || this->VT[a].size() < 5 || this->VT[b].size() < 5)
+    if (!this->VAlive[a] || !this->VAlive[b])
       return false;
     Vec3 lo = this->P[a], hi = this->P[a];
     for (int v : { a, b })
