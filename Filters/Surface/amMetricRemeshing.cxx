@@ -69,17 +69,18 @@ thread_local int CurrentZone = -1;
 
 double MinAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
+  // The largest cosine, then one arc cosine (it is monotonic).
   const Vec3 p[3] = { a, b, c };
-  double best = M_PI;
+  double largest = -1.0;
   for (int k = 0; k < 3; ++k)
   {
     const Vec3 u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
     const double nu = u.norm(), nv = v.norm();
     if (nu == 0 || nv == 0)
       return 0;
-    best = std::min(best, std::acos(std::max(-1.0, std::min(1.0, u.dot(v) / (nu * nv)))));
+    largest = std::max(largest, u.dot(v) / (nu * nv));
   }
-  return best;
+  return std::acos(std::max(-1.0, std::min(1.0, largest)));
 }
 
 class Remesher
@@ -121,7 +122,7 @@ public:
     std::vector<int> Stamp;         // per triangle: the last crossing check that saw it
     int StampValue = 0;
     int LastHit = -1; // the live triangle the last refused operation would have crossed
-    long long Collapses = 0;
+    long long Collapses = 0, Moves = 0;
     std::vector<int> Removed; // per component (see FindComponents): vertices this worker removed
   };
   mutable std::array<Worker, 2> Workers;
@@ -197,7 +198,7 @@ public:
     return best;
   }
   double Eps = 0.2;
-  long long Flips = 0, Moves = 0;
+  long long Flips = 0;
 
   // Bins of the live triangles (entries may be stale: a query checks the actual bounding box), so
   // that every local operation can refuse to make a triangle cross another one. The bins are
@@ -248,13 +249,43 @@ public:
           f(BinKey(i, j, k), this->ZoneOf(index[this->SplitAxis]));
         }
   }
-  void BinTriangle(int t)
+  /// Put live triangle t in the bins its box touches. A triangle changed since it was binned with
+  /// the box (oldLo, oldHi) goes only into the bins that box did not touch: it is in those already
+  /// (re-binning it whole at every collapse made six bin entries in seven duplicates or dead).
+  void BinTriangle(int t, const Vec3* oldLo = nullptr, const Vec3* oldHi = nullptr)
   {
     Vec3 p[3], lo, hi;
     for (int k = 0; k < 3; ++k)
       p[k] = this->P[this->T[t].V[k]];
     this->Box(p, lo, hi);
-    this->ForBins(lo, hi, [&](long long key, int zone) { this->Bins[zone][key].push_back(t); });
+    if (!oldLo)
+    {
+      this->ForBins(lo, hi, [&](long long key, int zone) { this->Bins[zone][key].push_back(t); });
+      return;
+    }
+    long long l[3], h[3], ol[3], oh[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      l[d] = static_cast<long long>(std::floor(lo[d] / this->BinSize));
+      h[d] = static_cast<long long>(std::floor(hi[d] / this->BinSize));
+      ol[d] = static_cast<long long>(std::floor((*oldLo)[d] / this->BinSize));
+      oh[d] = static_cast<long long>(std::floor((*oldHi)[d] / this->BinSize));
+    }
+    for (long long i = l[0]; i <= h[0]; ++i)
+      for (long long j = l[1]; j <= h[1]; ++j)
+        for (long long k = l[2]; k <= h[2]; ++k)
+        {
+          const long long index[3] = { i, j, k };
+          if (i >= ol[0] && i <= oh[0] && j >= ol[1] && j <= oh[1] && k >= ol[2] && k <= oh[2])
+            continue;
+          this->Bins[this->ZoneOf(index[this->SplitAxis])][BinKey(i, j, k)].push_back(t);
+        }
+  }
+  /// The box of triangle t as it is.
+  void BoxOf(int t, Vec3& lo, Vec3& hi) const
+  {
+    const Vec3 p[3] = { this->P[this->T[t].V[0]], this->P[this->T[t].V[1]], this->P[this->T[t].V[2]] };
+    this->Box(p, lo, hi);
   }
   void RebuildBins()
   {
@@ -292,15 +323,17 @@ public:
   /// Whether the vertices of q not shared with p lie strictly on one side of p's plane.
   static bool Separated(const Vec3* p, const int* ip, const Vec3* q, const int* iq)
   {
+    // The margin from sums of absolute values (no square roots): each is at least the length.
     const Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]);
-    const double scale = n.norm() * ((p[1] - p[0]).norm() + (p[2] - p[0]).norm());
+    const double nl = n.lpNorm<1>();
+    const double scale = nl * ((p[1] - p[0]).lpNorm<1>() + (p[2] - p[0]).lpNorm<1>());
     int side = 0;
     for (int j = 0; j < 3; ++j)
     {
       if (iq[j] == ip[0] || iq[j] == ip[1] || iq[j] == ip[2])
         continue;
       const double d = n.dot(q[j] - p[0]);
-      const double margin = 1e-9 * (scale + n.norm() * (q[j] - p[0]).norm());
+      const double margin = 1e-9 * (scale + nl * (q[j] - p[0]).lpNorm<1>());
       const int s = d > margin ? 1 : (d < -margin ? -1 : 0);
       if (s == 0 || (side != 0 && s != side))
         return false;
@@ -342,8 +375,10 @@ public:
         Vec3 u = pa[oa] - e0, w = pb[ob] - e0;
         u -= u.dot(e) * e;
         w -= w.dot(e) * e;
-        if (u.norm() > 0 && w.norm() > 0 && u.normalized().dot(w.normalized()) > 0.99985)
-          return true;
+        if (u.norm() > 0 && w.norm() > 0)
+          // Otherwise the triangles lie in two distinct half-planes bounded by the line of the
+          // shared edge, which meet only on that line: they meet only on the shared edge.
+          return u.normalized().dot(w.normalized()) > 0.99985;
       }
       // Most pairs are neighbours well apart: one triangle's other vertices all strictly on one
       // side of the other's plane (by a margin far above rounding) cannot cross it.
@@ -445,6 +480,46 @@ public:
         return false;
     return true;
   }
+  /// TriangleNear for the new triangles (ids, positions, sheets) around one vertex, 'centre' (a
+  /// collapse's b, a moved vertex). Their edges away from the centre are edges of the mesh
+  /// already, checked when they were made, and so are the spokes to the vertices 'kept' (sorted:
+  /// those whose edge to the centre is there already, unmoved). Each other spoke is sampled once
+  /// per interface, and each centroid. (Sampling every new triangle whole took a third of a
+  /// collapse's time, three times over for the same points.)
+  bool StarNear(const std::vector<std::array<int, 3>>& ids, const std::vector<std::array<Vec3, 3>>& pos,
+    const std::vector<int>& sheets, int centre, const std::vector<int>& kept) const
+  {
+    thread_local std::vector<std::pair<int, int>> sampled; // spokes done: far end, sheet
+    sampled.clear();
+    for (size_t n = 0; n < ids.size(); ++n)
+    {
+      const auto& p = pos[n];
+      const int k = ids[n][0] == centre ? 0 : (ids[n][1] == centre ? 1 : (ids[n][2] == centre ? 2 : -1));
+      if (k < 0)
+      {
+        if (!this->TriangleNear(sheets[n], p[0], p[1], p[2]))
+          return false;
+        continue;
+      }
+      const Vec3 normal = (p[1] - p[0]).cross(p[2] - p[0]);
+      if (!this->Near(sheets[n], (p[0] + p[1] + p[2]) / 3.0, normal))
+        return false;
+      for (int e : { 1, 2 })
+      {
+        const int o = ids[n][(k + e) % 3];
+        const std::pair<int, int> spoke(o, sheets[n]);
+        if (std::binary_search(kept.begin(), kept.end(), o) ||
+          std::find(sampled.begin(), sampled.end(), spoke) != sampled.end())
+          continue;
+        sampled.push_back(spoke);
+        const Vec3 &c = p[k], &q = p[(k + e) % 3];
+        for (double f : { 0.5, 0.25, 0.75 })
+          if (!this->Near(sheets[n], c + f * (q - c), normal))
+            return false;
+      }
+    }
+    return true;
+  }
   void Neighbours(int v, std::vector<int>& out) const
   {
     out.clear();
@@ -471,8 +546,8 @@ public:
       int Sheet, Id;
       std::array<Vec3, 3> X;
     };
-    std::vector<StarTriangle> star;
-    std::vector<int> starSheets;
+    thread_local std::vector<StarTriangle> star;
+    thread_local std::vector<int> starSheets;
     auto& pending = this->W().PendingHints;
     pending.clear();
     for (int w : affected)
@@ -659,7 +734,12 @@ public:
       return false;
     if (!this->VAlive[a] || !this->VAlive[b] || this->Kind[a] == amSurfaceMesh::Corner)
       return false;
-    std::vector<int> edge;
+    // Work vectors kept per thread (a collapse allocated a dozen vectors; none of them outlives
+    // the call, and nothing called from here collapses).
+    thread_local std::vector<int> edge, na, nb, common, apex, changed, removed, sheets, affected;
+    thread_local std::vector<std::array<int, 3>> ids;
+    thread_local std::vector<std::array<Vec3, 3>> pos;
+    thread_local std::vector<std::array<Vec3, 2>> oldBoxes;
     this->EdgeTriangles(a, b, edge);
     if (edge.empty())
       return false;
@@ -667,9 +747,10 @@ public:
     if ((this->Kind[a] == amSurfaceMesh::Curve) != feature)
       return false;
     // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
-    std::vector<int> na, nb, common, apex;
     this->Neighbours(a, na);
     this->Neighbours(b, nb);
+    common.clear();
+    apex.clear();
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
     for (int t : edge)
       for (int k = 0; k < 3; ++k)
@@ -688,7 +769,8 @@ public:
     // The triangles that change: a's (a becomes b) and, when b moves, b's.
     const Vec3 x = to ? *to : this->P[b];
     const Mat3 mx = to ? Mat3(0.5 * (this->M[a] + this->M[b])) : this->M[b];
-    std::vector<int> changed, removed = this->VT[a];
+    changed.clear();
+    removed = this->VT[a];
     for (int t : this->VT[a])
       if (std::find(edge.begin(), edge.end(), t) == edge.end())
         changed.push_back(t);
@@ -699,9 +781,9 @@ public:
           changed.push_back(t);
           removed.push_back(t);
         }
-    std::vector<std::array<int, 3>> ids;
-    std::vector<std::array<Vec3, 3>> pos;
-    std::vector<int> sheets;
+    ids.clear();
+    pos.clear();
+    sheets.clear();
     for (int t : changed)
     {
       std::array<int, 3> v;
@@ -728,15 +810,15 @@ public:
       sheets.push_back(this->T[t].Sheet);
     }
     // The distance samples last: they cost most, and one of the checks above refuses a third of
-    // the collapses tried (outer phantom surface).
-    for (size_t n = 0; n < ids.size(); ++n)
-      if (!this->TriangleNear(sheets[n], pos[n][0], pos[n][1], pos[n][2]))
-        return false;
+    // the collapses tried (outer phantom surface). Where b stays, its edges stay.
+    static const std::vector<int> none;
+    if (!this->StarNear(ids, pos, sheets, b, to ? none : nb))
+      return false;
     {
       // The input vertices a stood for must stay within Eps of the triangles of their interface
       // around b afterwards, and those of b and a's other neighbours within Eps of theirs (so no
       // patch of an interface can retract or vanish).
-      std::vector<int> affected = na;
+      affected = na;
       if (to)
         affected.insert(affected.end(), nb.begin(), nb.end());
       std::sort(affected.begin(), affected.end());
@@ -748,6 +830,9 @@ public:
         return false;
     }
     this->KeepHints();
+    oldBoxes.resize(changed.size());
+    for (size_t n = 0; n < changed.size(); ++n)
+      this->BoxOf(changed[n], oldBoxes[n][0], oldBoxes[n][1]);
     for (int t : edge)
       this->Detach(t);
     this->Cluster[b].insert(this->Cluster[b].end(), this->Cluster[a].begin(), this->Cluster[a].end());
@@ -763,8 +848,8 @@ public:
     this->VAlive[a] = 0;
     this->P[b] = x;
     this->M[b] = mx;
-    for (int t : changed)
-      this->BinTriangle(t);
+    for (size_t n = 0; n < changed.size(); ++n)
+      this->BinTriangle(changed[n], &oldBoxes[n][0], &oldBoxes[n][1]);
     ++this->W().Collapses;
     if (CurrentZone >= 0)
       ++this->W().Removed[this->Component[a]];
@@ -847,21 +932,47 @@ public:
     std::sort(cand.begin(), cand.end());
     cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
     std::fill(this->Dirty.begin(), this->Dirty.end(), 0);
-    // Two workers, one on each side of the split plane: each tries, in order, the edges whose
-    // ends lie on its side, and carries out a collapse only where both stars (everything the
-    // collapse changes, and the bins its crossing check reads) lie on that side too. A collapse
-    // changes only triangles around a and b, so neither side ever reads what the other changes,
-    // and each side's result does not depend on the other's timing. The rest (edges at the
-    // plane, stars reaching across it, possibly small fragments) follow serially, in order.
+    // Two workers, one on each side of the split plane (see OnTwoWorkers): a collapse changes
+    // only the triangles, links, positions and clusters of the stars of a and b.
     this->FindComponents();
-    std::array<std::vector<int>, 2> side;
-    std::vector<char> later(cand.size(), 1);
-    for (size_t i = 0; i < cand.size(); ++i)
+    return this->OnTwoWorkers(
+      cand.size(),
+      [&](size_t i) {
+        const int za = this->ZoneAt(this->P[cand[i].second.first]),
+                  zb = this->ZoneAt(this->P[cand[i].second.second]);
+        return za == zb ? za : 2;
+      },
+      [&](size_t i) {
+        const int a = cand[i].second.first, b = cand[i].second.second;
+        // Small fragments are left to the serial pass: there the test for them searches the
+        // whole component.
+        if (CurrentZone >= 0 &&
+          (!this->StarsInZone(a, b, CurrentZone) || !this->SurelyMoreThan(a, 5) || !this->SurelyMoreThan(b, 5)))
+          return this->VAlive[a] && this->VAlive[b] ? -1 : 0;
+        return this->TryCollapse(a, b);
+      });
+  }
+
+  /// Runs op on the items 0 .. n-1 on two workers, one on each side of the split plane, then
+  /// serially. Each worker takes, in order, the items whose zone (zoneOf) is its side's; op
+  /// returns 1 (done), 0 (refused) or -1 (left for the serial pass). A worker's op must change
+  /// and read only what lies in its side's bins (the stars it changes, and the bins its
+  /// crossing check reads): then neither worker reads what the other changes, and each side's
+  /// result does not depend on the other's timing. The items left, and those in no zone (2),
+  /// follow serially, in order. The bins must have been rebuilt since the last change outside a
+  /// worker's side (a stale entry could name a triangle the other worker changes).
+  template <typename ZoneOfItem, typename Op>
+  int OnTwoWorkers(size_t n, ZoneOfItem zoneOf, Op op)
+  {
+    if (this->Dirty.size() < this->P.size())
+      this->Dirty.resize(this->P.size(), 1); // Touch must not resize it on a worker
+    std::array<std::vector<size_t>, 2> side;
+    std::vector<char> later(n, 1);
+    for (size_t i = 0; i < n; ++i)
     {
-      const int a = cand[i].second.first, b = cand[i].second.second;
-      const int za = this->ZoneAt(this->P[a]), zb = this->ZoneAt(this->P[b]);
-      if (za == zb && za < 2)
-        side[za].push_back(static_cast<int>(i));
+      const int z = zoneOf(i);
+      if (z < 2)
+        side[z].push_back(i);
     }
     std::array<int, 2> doneBy = { 0, 0 };
     vtkSMPTools::For(0, 2, 1, [&](vtkIdType z0, vtkIdType z1) {
@@ -870,15 +981,9 @@ public:
         const int worker = CurrentWorker, zone = CurrentZone;
         CurrentWorker = static_cast<int>(z);
         CurrentZone = static_cast<int>(z);
-        for (int i : side[z])
+        for (size_t i : side[z])
         {
-          const int a = cand[i].second.first, b = cand[i].second.second;
-          // Small fragments are left to the serial pass: there the test for them searches the
-          // whole component.
-          if (!this->StarsInZone(a, b, static_cast<int>(z)) || !this->SurelyMoreThan(a, 5) ||
-            !this->SurelyMoreThan(b, 5))
-            continue;
-          const int r = this->TryCollapse(a, b);
+          const int r = op(i);
           if (r >= 0)
             later[i] = 0;
           doneBy[z] += r > 0;
@@ -888,9 +993,9 @@ public:
       }
     });
     int done = doneBy[0] + doneBy[1];
-    for (size_t i = 0; i < cand.size(); ++i)
+    for (size_t i = 0; i < n; ++i)
       if (later[i])
-        done += this->TryCollapse(cand[i].second.first, cand[i].second.second) > 0;
+        done += op(i) > 0;
     return done;
   }
 
@@ -1004,34 +1109,50 @@ public:
     return done;
   }
 
+  /// Every surface vertex moved halfway to the centroid of its neighbours, along the surface,
+  /// then onto the input (where Move allows it); on two workers (see OnTwoWorkers: a move
+  /// changes the triangles of v's star and the clusters of v and its neighbours).
   int RelaxPass()
   {
-    int done = 0;
-    std::vector<int> ring;
-    for (size_t v = 0; v < this->P.size(); ++v)
-    {
-      if (!this->VAlive[v] || this->Kind[v] != amSurfaceMesh::Surface || this->VT[v].empty())
-        continue;
-      this->Neighbours(static_cast<int>(v), ring);
-      Vec3 centroid = Vec3::Zero(), n = Vec3::Zero();
-      for (int q : ring)
-        centroid += this->P[q];
-      centroid /= static_cast<double>(ring.size());
-      for (int t : this->VT[v])
-        n += this->Normal(t);
-      if (n.norm() == 0)
-        continue;
-      n.normalize();
-      Vec3 x = this->P[v] + 0.5 * ((centroid - this->P[v]) - (centroid - this->P[v]).dot(n) * n);
-      const int sheet = this->T[this->VT[v][0]].Sheet;
-      double cl[3];
-      vtkIdType tri;
-      if (this->Ref[sheet].ClosestPointFacing(x.data(), n.data(), cl, tri) == std::numeric_limits<double>::infinity())
-        continue;
-      if (this->Move(static_cast<int>(v), Vec3(cl), true))
-        ++done;
-    }
-    return done;
+    this->RebuildBins();
+    return this->OnTwoWorkers(
+      this->P.size(),
+      [&](size_t v) {
+        return this->VAlive[v] && this->Kind[v] == amSurfaceMesh::Surface && !this->VT[v].empty()
+          ? this->ZoneAt(this->P[v])
+          : 2;
+      },
+      [&](size_t v) { return this->Relax(static_cast<int>(v)); });
+  }
+  /// One vertex of RelaxPass: 1 moved, 0 not, -1 left for the serial pass (a worker's vertex whose
+  /// star or new place is not all on its side).
+  int Relax(int v)
+  {
+    if (!this->VAlive[v] || this->Kind[v] != amSurfaceMesh::Surface || this->VT[v].empty())
+      return 0;
+    if (CurrentZone >= 0 && !this->StarsInZone(v, v, CurrentZone))
+      return -1;
+    thread_local std::vector<int> ring;
+    this->Neighbours(v, ring);
+    Vec3 centroid = Vec3::Zero(), n = Vec3::Zero();
+    for (int q : ring)
+      centroid += this->P[q];
+    centroid /= static_cast<double>(ring.size());
+    for (int t : this->VT[v])
+      n += this->Normal(t);
+    if (n.norm() == 0)
+      return 0;
+    n.normalize();
+    Vec3 x = this->P[v] + 0.5 * ((centroid - this->P[v]) - (centroid - this->P[v]).dot(n) * n);
+    const int sheet = this->T[this->VT[v][0]].Sheet;
+    double cl[3];
+    vtkIdType tri;
+    if (this->Ref[sheet].ClosestPointFacing(x.data(), n.data(), cl, tri) == std::numeric_limits<double>::infinity())
+      return 0;
+    x = Vec3(cl);
+    if (CurrentZone >= 0 && this->ZoneAt(x) != CurrentZone)
+      return -1;
+    return this->Move(v, x, true) ? 1 : 0;
   }
 
   /// Where the point x of the input is nearest to a surface vertex of triangle t (it lies above
@@ -1082,9 +1203,9 @@ public:
     }
     if (after < (relax ? before : std::min(before, SmallAngle)))
       return false;
-    for (size_t n = 0; n < pos.size(); ++n)
-      if (!this->TriangleNear(sheets[n], pos[n][0], pos[n][1], pos[n][2]))
-        return false;
+    static const std::vector<int> none;
+    if (!this->StarNear(ids, pos, sheets, v, none))
+      return false;
     std::vector<int> ring;
     this->Neighbours(v, ring);
     ring.push_back(v);
@@ -1092,10 +1213,13 @@ public:
       this->Crosses(ids, pos, this->VT[v]))
       return false;
     this->KeepHints();
+    std::vector<std::array<Vec3, 2>> oldBoxes(this->VT[v].size());
+    for (size_t n = 0; n < oldBoxes.size(); ++n)
+      this->BoxOf(this->VT[v][n], oldBoxes[n][0], oldBoxes[n][1]);
     this->P[v] = x;
-    for (int t : this->VT[v])
-      this->BinTriangle(t);
-    ++this->Moves;
+    for (size_t n = 0; n < oldBoxes.size(); ++n)
+      this->BinTriangle(this->VT[v][n], &oldBoxes[n][0], &oldBoxes[n][1]);
+    ++this->W().Moves;
     for (int w : ring)
       this->Touch(w);
     return true;
@@ -1877,7 +2001,7 @@ int amMetricRemeshing::RequestData(
   params << "Tolerance=" << this->Tolerance << " TargetSize=" << this->TargetSize
          << " NumberOfIterations=" << this->NumberOfIterations << " Hausdorff=" << h
          << " InsertedPoints=" << inserted << " Collapses=" << r.Workers[0].Collapses + r.Workers[1].Collapses << " Flips=" << r.Flips
-         << " Moves=" << r.Moves;
+         << " Moves=" << r.Workers[0].Moves + r.Workers[1].Moves;
   amProvenance::Record(output, input, "amMetricRemeshing", params.str());
   this->UpdateProgress(1.0);
   return 1;
