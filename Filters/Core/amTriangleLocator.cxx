@@ -268,18 +268,30 @@ double amTriangleLocator::Closest(
         }
       }
     }
-    // Everything not yet searched lies outside the box of bins c-r .. c+r.
-    double reach = std::numeric_limits<double>::infinity();
+    // Everything not yet searched lies in the grid outside the box of bins c-r .. c+r: in six
+    // slabs of the grid, before and after that box along each axis. The nearest of them bounds
+    // what is left (also for a point outside the grid, whose bin c is clamped: there the
+    // distance across the grid's own faces counts too).
+    double reach2 = std::numeric_limits<double>::infinity();
     for (int d = 0; d < 3; ++d)
-    {
-      if (c[d] - r > 0)
-        reach = std::min(reach, x[d] - (this->Origin[d] + (c[d] - r) * this->H));
-      if (c[d] + r < this->N[d] - 1)
-        reach = std::min(reach, this->Origin[d] + (c[d] + r + 1) * this->H - x[d]);
-    }
-    if (reach == std::numeric_limits<double>::infinity())
+      for (int side = 0; side < 2; ++side)
+      {
+        if (side == 0 ? c[d] - r <= 0 : c[d] + r >= this->N[d] - 1)
+          continue; // nothing left on that side
+        double g2 = 0;
+        for (int e = 0; e < 3; ++e)
+        {
+          double lo = this->Origin[e], hi = this->Origin[e] + this->N[e] * this->H;
+          if (e == d)
+            (side == 0 ? hi : lo) = this->Origin[d] + (side == 0 ? c[d] - r : c[d] + r + 1) * this->H;
+          const double g = x[e] < lo ? lo - x[e] : (x[e] > hi ? x[e] - hi : 0.0);
+          g2 += g * g;
+        }
+        reach2 = std::min(reach2, g2);
+      }
+    if (reach2 == std::numeric_limits<double>::infinity())
       break; // the whole grid is searched
-    if (reach > 0 && best <= reach * reach)
+    if (best <= reach2)
       break;
   }
   return best;
