@@ -30,9 +30,9 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 #include <sstream>
 #include <unordered_map>
-#include <unordered_set>
 
 vtkStandardNewMacro(amMetricRemeshing);
 
@@ -552,25 +552,46 @@ public:
     pending.clear();
     for (int w : affected)
     {
-      star.clear();
-      for (int t : this->VT[w])
-        if (std::find(removed.begin(), removed.end(), t) == removed.end())
-          star.push_back({ this->T[t].Sheet, t,
-            { this->P[this->T[t].V[0]], this->P[this->T[t].V[1]], this->P[this->T[t].V[2]] } });
-      for (size_t n = 0; n < ids.size(); ++n)
-        if (ids[n][0] == w || ids[n][1] == w || ids[n][2] == w)
-          star.push_back({ sheets[n], newIds[n], pos[n] });
-      starSheets.clear();
-      for (const auto& q : star)
-        starSheets.push_back(q.Sheet);
-      std::sort(starSheets.begin(), starSheets.end());
-      starSheets.erase(std::unique(starSheets.begin(), starSheets.end()), starSheets.end());
-      auto near = [&](const Vec3& x, int sheet) {
-        double cl[3];
+      // The star of w afterwards, gathered on the first search (most entries keep their hint).
+      bool gathered = false;
+      auto gather = [&]() {
+        if (gathered)
+          return;
+        gathered = true;
+        star.clear();
+        for (int t : this->VT[w])
+          if (std::find(removed.begin(), removed.end(), t) == removed.end())
+            star.push_back({ this->T[t].Sheet, t,
+              { this->P[this->T[t].V[0]], this->P[this->T[t].V[1]], this->P[this->T[t].V[2]] } });
+        for (size_t n = 0; n < ids.size(); ++n)
+          if (ids[n][0] == w || ids[n][1] == w || ids[n][2] == w)
+            star.push_back({ sheets[n], newIds[n], pos[n] });
+        starSheets.clear();
         for (const auto& q : star)
-          if (q.Sheet == sheet &&
+          starSheets.push_back(q.Sheet);
+        std::sort(starSheets.begin(), starSheets.end());
+        starSheets.erase(std::unique(starSheets.begin(), starSheets.end()), starSheets.end());
+      };
+      // A triangle of the star within Eps of x on the sheet (-1: none); 'first' is tried first: the
+      // triangle that replaces the entry's hint keeps its id, and is most often still near. (Any
+      // triangle within Eps will do: the order changes only the time taken.)
+      auto near = [&](const Vec3& x, int sheet, int first) {
+        double cl[3];
+        auto within = [&](const StarTriangle& q) {
+          return q.Sheet == sheet &&
             amTriangleLocator::ClosestPointOnTriangle(x.data(), q.X[0].data(), q.X[1].data(), q.X[2].data(), cl) <=
-              eps2)
+            eps2;
+        };
+        if (first >= 0)
+          for (const auto& q : star)
+            if (q.Id == first)
+            {
+              if (within(q))
+                return q.Id;
+              break;
+            }
+        for (const auto& q : star)
+          if (q.Id != first && within(q))
             return q.Id;
         return -1;
       };
@@ -588,15 +609,19 @@ public:
             if (owner == w && entry.Hint >= 0 && this->T[entry.Hint].Alive &&
               std::find(removed.begin(), removed.end(), entry.Hint) == removed.end())
               continue; // still within Eps of the same, untouched triangle
-            const int hit = near(x, entry.Sheet);
+            gather();
+            const int hit = near(x, entry.Sheet, entry.Hint);
             if (hit < 0)
               return false;
             pending.push_back({ owner, static_cast<int>(i), hit });
           }
           else
+          {
+            gather();
             for (int sheet : starSheets)
-              if (near(x, sheet) < 0)
+              if (near(x, sheet, -1) < 0)
                 return false;
+          }
         }
       }
     }
@@ -1373,6 +1398,9 @@ public:
         Vec3 far = a, farSample = a;
         int onEdge = -1;
         auto visit = [&](const Vec3& x, int edge) {
+          // Only a sample farther than the farthest so far changes anything: the cheap test first.
+          if (w > 0 && this->Ref[t.Sheet].WithinDistance(x.data(), w))
+            return;
           const double d = this->Ref[t.Sheet].ClosestPoint(x.data(), cl, tt);
           if (d > w)
           {
@@ -1812,15 +1840,20 @@ int amMetricRemeshing::RequestData(
   {
     std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets));
     std::vector<std::vector<char>> seen(static_cast<size_t>(nSheets));
-    std::vector<std::unordered_set<long long>> edgesSeen(static_cast<size_t>(nSheets));
+    // Each edge of an interface once: an edge inside one interface is flagged; a junction edge
+    // (few) is looked up with its interface.
+    std::vector<char> edgeSeen(mesh.Edges.size(), 0);
+    std::set<std::pair<vtkIdType, int>> junctionSeen;
     for (const Tri& t : r.T)
     {
       tris[t.Sheet].push_back({ t.V[0], t.V[1], t.V[2] });
       r.RefSamples[t.Sheet].push_back((r.P[t.V[0]] + r.P[t.V[1]] + r.P[t.V[2]]) / 3.0);
-      for (int k = 0; k < 3; ++k) // each edge of an interface once
+      for (int k = 0; k < 3; ++k)
       {
-        const long long a = std::min(t.V[k], t.V[(k + 1) % 3]), b = std::max(t.V[k], t.V[(k + 1) % 3]);
-        if (edgesSeen[t.Sheet].insert(a * static_cast<long long>(np) + b).second)
+        const vtkIdType e = mesh.FindEdge(t.V[k], t.V[(k + 1) % 3]);
+        const bool first = mesh.FeatureEdge[e] ? junctionSeen.insert({ e, t.Sheet }).second : !edgeSeen[e];
+        edgeSeen[e] = 1;
+        if (first)
           r.RefSamples[t.Sheet].push_back(0.5 * (r.P[t.V[k]] + r.P[t.V[(k + 1) % 3]]));
       }
       auto& s = seen[t.Sheet];
