@@ -113,8 +113,9 @@ public:
     std::array<int, 3> V;
     Vec3 X[3], Lo, Hi;
   };
-  /// What one worker's operations use besides the mesh.
-  struct Worker
+  /// What one worker's operations use besides the mesh (on a cache line of its own: the two
+  /// workers' counters must not share one).
+  struct alignas(64) Worker
   {
     // Hints found by the last ClustersStayNear (owner, entry, triangle), kept if the operation is.
     std::vector<std::array<int, 3>> PendingHints;
@@ -124,14 +125,24 @@ public:
     int LastHit = -1; // the live triangle the last refused operation would have crossed
     long long Collapses = 0, Moves = 0;
     std::vector<int> Removed; // per component (see FindComponents): vertices this worker removed
+    // Collapse's work vectors, kept (a collapse allocated a dozen vectors; none outlives the
+    // call, and nothing called from Collapse collapses).
+    struct
+    {
+      std::vector<int> Edge, Na, Nb, Common, Apex, Changed, Removed, Sheets, Affected;
+      std::vector<std::array<int, 3>> Ids;
+      std::vector<std::array<Vec3, 3>> Pos;
+      std::vector<std::array<Vec3, 2>> OldBoxes;
+    } C;
   };
   mutable std::array<Worker, 2> Workers;
   Worker& W() const { return this->Workers[CurrentWorker]; }
   void KeepHints()
   {
-    for (const auto& h : this->W().PendingHints)
+    auto& pending = this->W().PendingHints;
+    for (const auto& h : pending)
       this->Cluster[h[0]][h[1]].Hint = h[2];
-    this->W().PendingHints.clear();
+    pending.clear();
   }
   // Per input vertex on a junction curve or corner: the interfaces around it (sorted) and its
   // neighbours along the curves (with the edge lengths). Every curve vertex of the result sits on
@@ -759,12 +770,13 @@ public:
       return false;
     if (!this->VAlive[a] || !this->VAlive[b] || this->Kind[a] == amSurfaceMesh::Corner)
       return false;
-    // Work vectors kept per thread (a collapse allocated a dozen vectors; none of them outlives
-    // the call, and nothing called from here collapses).
-    thread_local std::vector<int> edge, na, nb, common, apex, changed, removed, sheets, affected;
-    thread_local std::vector<std::array<int, 3>> ids;
-    thread_local std::vector<std::array<Vec3, 3>> pos;
-    thread_local std::vector<std::array<Vec3, 2>> oldBoxes;
+    Worker& worker = this->W();
+    auto &edge = worker.C.Edge, &na = worker.C.Na, &nb = worker.C.Nb, &common = worker.C.Common,
+         &apex = worker.C.Apex, &changed = worker.C.Changed, &removed = worker.C.Removed,
+         &sheets = worker.C.Sheets, &affected = worker.C.Affected;
+    auto& ids = worker.C.Ids;
+    auto& pos = worker.C.Pos;
+    auto& oldBoxes = worker.C.OldBoxes;
     this->EdgeTriangles(a, b, edge);
     if (edge.empty())
       return false;
@@ -875,9 +887,9 @@ public:
     this->M[b] = mx;
     for (size_t n = 0; n < changed.size(); ++n)
       this->BinTriangle(changed[n], &oldBoxes[n][0], &oldBoxes[n][1]);
-    ++this->W().Collapses;
+    ++worker.Collapses;
     if (CurrentZone >= 0)
-      ++this->W().Removed[this->Component[a]];
+      ++worker.Removed[this->Component[a]];
     for (int w : na)
       this->Touch(w);
     if (to)
@@ -991,8 +1003,8 @@ public:
   {
     if (this->Dirty.size() < this->P.size())
       this->Dirty.resize(this->P.size(), 1); // Touch must not resize it on a worker
-    std::array<std::vector<size_t>, 2> side;
     std::vector<char> later(n, 1);
+    std::array<std::vector<size_t>, 2> side, taken; // taken: what each worker did not leave
     for (size_t i = 0; i < n; ++i)
     {
       const int z = zoneOf(i);
@@ -1006,17 +1018,22 @@ public:
         const int worker = CurrentWorker, zone = CurrentZone;
         CurrentWorker = static_cast<int>(z);
         CurrentZone = static_cast<int>(z);
+        int done = 0; // counted here, written once (the workers' items interleave)
         for (size_t i : side[z])
         {
           const int r = op(i);
           if (r >= 0)
-            later[i] = 0;
-          doneBy[z] += r > 0;
+            taken[z].push_back(i);
+          done += r > 0;
         }
+        doneBy[z] = done;
         CurrentWorker = worker;
         CurrentZone = zone;
       }
     });
+    for (const auto& list : taken)
+      for (size_t i : list)
+        later[i] = 0;
     int done = doneBy[0] + doneBy[1];
     for (size_t i = 0; i < n; ++i)
       if (later[i])
