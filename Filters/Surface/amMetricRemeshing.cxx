@@ -123,7 +123,7 @@ public:
     std::vector<int> Stamp;         // per triangle: the last crossing check that saw it
     int StampValue = 0;
     int LastHit = -1; // the live triangle the last refused operation would have crossed
-    long long Collapses = 0, Moves = 0;
+    long long Collapses = 0, Moves = 0, Flips = 0;
     std::vector<int> Removed; // per component (see FindComponents): vertices this worker removed
     // Collapse's work vectors, kept (a collapse allocated a dozen vectors; none outlives the
     // call, and nothing called from Collapse collapses).
@@ -209,7 +209,6 @@ public:
     return best;
   }
   double Eps = 0.2;
-  long long Flips = 0;
 
   // Bins of the live triangles (entries may be stale: a query checks the actual bounding box), so
   // that every local operation can refuse to make a triangle cross another one. The bins are
@@ -1115,24 +1114,40 @@ public:
     const int sheet = this->T[t1].Sheet;
     if (!this->TriangleNear(sheet, pa, pd, pc) || !this->TriangleNear(sheet, pd, pb, pc))
       return false;
-    const int next = static_cast<int>(this->T.size()); // the ids of the two new triangles
+    // The two triangles keep their ids (a worker must not add triangles): t1 becomes (a, d, c)
+    // and t2 (d, b, c), with t1's labels.
     if (!this->ClustersStayNear({ t1, t2 }, { { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } },
-          { sheet, sheet }, { next, next + 1 }, { a, b, c, d }))
+          { sheet, sheet }, { t1, t2 }, { a, b, c, d }))
       return false;
     if (this->Crosses({ { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } }, { t1, t2 }))
       return false;
     this->KeepHints();
-    const Tri like = this->T[t1];
-    this->Detach(t1);
-    this->Detach(t2);
-    this->AddTriangle(a, d, c, like);
-    this->AddTriangle(d, b, c, like);
-    ++this->Flips;
+    Vec3 oldLo[2], oldHi[2];
+    this->BoxOf(t1, oldLo[0], oldHi[0]);
+    this->BoxOf(t2, oldLo[1], oldHi[1]);
+    auto drop = [this](int v, int t) {
+      auto& l = this->VT[v];
+      l.erase(std::remove(l.begin(), l.end(), t), l.end());
+    };
+    drop(a, t2);
+    drop(b, t1);
+    this->VT[c].push_back(t2);
+    this->VT[d].push_back(t1);
+    const int v1[3] = { a, d, c }, v2[3] = { d, b, c };
+    std::copy(v1, v1 + 3, this->T[t1].V);
+    std::copy(v2, v2 + 3, this->T[t2].V);
+    std::copy(this->T[t1].Labels, this->T[t1].Labels + 2, this->T[t2].Labels);
+    this->BinTriangle(t1, &oldLo[0], &oldHi[0]);
+    this->BinTriangle(t2, &oldLo[1], &oldHi[1]);
+    ++this->W().Flips;
     for (int w : { a, b, c, d })
       this->Touch(w);
     return true;
   }
 
+  /// Every edge flipped where that makes the smallest angle of its two triangles larger; on two
+  /// workers (see OnTwoWorkers: a flip changes the two triangles of the edge, in the stars of its
+  /// ends).
   int FlipPass()
   {
     std::vector<std::pair<int, int>> edges;
@@ -1145,10 +1160,19 @@ public:
         }
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    int done = 0;
-    for (const auto& e : edges)
-      done += this->Flip(e.first, e.second);
-    return done;
+    this->RebuildBins();
+    return this->OnTwoWorkers(
+      edges.size(),
+      [&](size_t i) {
+        const int za = this->ZoneAt(this->P[edges[i].first]), zb = this->ZoneAt(this->P[edges[i].second]);
+        return za == zb ? za : 2;
+      },
+      [&](size_t i) {
+        const int a = edges[i].first, b = edges[i].second;
+        if (CurrentZone >= 0 && !this->StarsInZone(a, b, CurrentZone))
+          return this->VAlive[a] && this->VAlive[b] ? -1 : 0;
+        return this->Flip(a, b) ? 1 : 0;
+      });
   }
 
   /// Every surface vertex moved halfway to the centroid of its neighbours, along the surface,
@@ -2050,7 +2074,7 @@ int amMetricRemeshing::RequestData(
   std::ostringstream params;
   params << "Tolerance=" << this->Tolerance << " TargetSize=" << this->TargetSize
          << " NumberOfIterations=" << this->NumberOfIterations << " Hausdorff=" << h
-         << " InsertedPoints=" << inserted << " Collapses=" << r.Workers[0].Collapses + r.Workers[1].Collapses << " Flips=" << r.Flips
+         << " InsertedPoints=" << inserted << " Collapses=" << r.Workers[0].Collapses + r.Workers[1].Collapses << " Flips=" << r.Workers[0].Flips + r.Workers[1].Flips
          << " Moves=" << r.Workers[0].Moves + r.Workers[1].Moves;
   amProvenance::Record(output, input, "amMetricRemeshing", params.str());
   this->UpdateProgress(1.0);
