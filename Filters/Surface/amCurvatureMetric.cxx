@@ -55,15 +55,38 @@ Curvature Fit(const Vec3& p, const Vec3& n, const std::vector<Vec3>& nbrs)
   scale = std::sqrt(scale / nbrs.size()); // condition the system: unit-size coordinates
   if (!(scale > 0))
     return c;
+  // The normal equations of the rows (u^2, uv, v^2, u, v) from the 12 moments they need (the
+  // 5x5 outer product per point was most of this filter's time).
+  double s4[5] = { 0, 0, 0, 0, 0 }, s3[4] = { 0, 0, 0, 0 }, s2[3] = { 0, 0, 0 };
+  const double inverse = 1.0 / scale;
   for (const Vec3& q : nbrs)
   {
-    const Vec3 d = (q - p) / scale;
+    const Vec3 d = (q - p) * inverse;
     const double u = d.dot(t1), v = d.dot(t2), w = d.dot(n);
-    Eigen::Matrix<double, 5, 1> row;
-    row << u * u, u * v, v * v, u, v;
-    A += row * row.transpose();
-    b += row * w;
+    const double uu = u * u, uv = u * v, vv = v * v;
+    s4[0] += uu * uu;
+    s4[1] += uu * uv;
+    s4[2] += uu * vv;
+    s4[3] += uv * vv;
+    s4[4] += vv * vv;
+    s3[0] += uu * u;
+    s3[1] += uu * v;
+    s3[2] += uv * v;
+    s3[3] += vv * v;
+    s2[0] += uu;
+    s2[1] += uv;
+    s2[2] += vv;
+    b(0) += uu * w;
+    b(1) += uv * w;
+    b(2) += vv * w;
+    b(3) += u * w;
+    b(4) += v * w;
   }
+  A << s4[0], s4[1], s4[2], s3[0], s3[1], //
+    s4[1], s4[2], s4[3], s3[1], s3[2],    //
+    s4[2], s4[3], s4[4], s3[2], s3[3],    //
+    s3[0], s3[1], s3[2], s2[0], s2[1],    //
+    s3[1], s3[2], s3[3], s2[1], s2[2];
   Eigen::LDLT<Eigen::Matrix<double, 5, 5>> ldlt(A);
   if (ldlt.info() != Eigen::Success || std::fabs(A.determinant()) < 1e-14)
     return c;
