@@ -1363,7 +1363,7 @@ public:
     double worst = 0, gap = 0;
     insert.clear();
     std::vector<char> used(nt, 0);
-    const double eps2 = this->Eps * this->Eps;
+    const double eps2 = this->Eps * this->Eps, near2 = 16.0 * eps2;
     // Input -> remeshed.
     for (int s = 0; s < nSheets; ++s)
     {
@@ -1391,7 +1391,10 @@ public:
           }
           else
           {
-            d2[i] = cur[s].ClosestPoint(samples[i].data(), cl, a);
+            // Within a bound first (only the bins within reach are searched), then everywhere.
+            d2[i] = cur[s].ClosestPointWithin(samples[i].data(), near2, cl, a);
+            if (a < 0)
+              d2[i] = cur[s].ClosestPoint(samples[i].data(), cl, a);
             at[i] = a >= 0 ? ids[s][a] : -1;
           }
       });
@@ -1442,7 +1445,9 @@ public:
           // Only a sample farther than the farthest so far changes anything: the cheap test first.
           if (w > 0 && this->Ref[t.Sheet].WithinDistance(x.data(), w))
             return;
-          const double d = this->Ref[t.Sheet].ClosestPoint(x.data(), cl, tt);
+          double d = this->Ref[t.Sheet].ClosestPointWithin(x.data(), 16.0 * this->Eps * this->Eps, cl, tt);
+          if (tt < 0)
+            d = this->Ref[t.Sheet].ClosestPoint(x.data(), cl, tt);
           if (d > w)
           {
             w = d;
