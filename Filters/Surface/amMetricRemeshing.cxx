@@ -98,8 +98,9 @@ public:
   // Input vertices each vertex stands for, with the interface they must stay near (-1: every
   // interface around the vertex, for junction-curve points).
   // Each entry also keeps a triangle of the vertex's star found within Eps of it (-1: none yet):
-  // while that triangle is alive and untouched (every operation that changes a triangle's
-  // vertices or their positions passes it as removed, or kills it), the entry needs no search.
+  // while that triangle is still in the vertex's star and untouched (every operation that
+  // changes a triangle's vertices or their positions passes it as removed), the entry needs no
+  // search.
   struct ClusterEntry
   {
     int Point;
@@ -616,8 +617,11 @@ public:
           const Vec3& x = this->RefPoints[entry.Point];
           if (entry.Sheet >= 0)
           {
-            if (owner == w && entry.Hint >= 0 && this->T[entry.Hint].Alive &&
-              std::find(removed.begin(), removed.end(), entry.Hint) == removed.end())
+            // (Membership of w's star, not the triangle's own record: a hint may be stale, and a
+            // stale hint's triangle may lie on the other worker's side.)
+            if (owner == w && entry.Hint >= 0 &&
+              std::find(removed.begin(), removed.end(), entry.Hint) == removed.end() &&
+              std::find(this->VT[w].begin(), this->VT[w].end(), entry.Hint) != this->VT[w].end())
               continue; // still within Eps of the same, untouched triangle
             gather();
             const int hit = near(x, entry.Sheet, entry.Hint);
