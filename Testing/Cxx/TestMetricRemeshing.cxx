@@ -20,6 +20,7 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSphereSource.h"
 
 #include <cmath>
@@ -260,6 +261,46 @@ TEST(MetricRemeshing, AnisotropicTubeStretchesAlongTheAxis)
   EXPECT_LT(aniso.Triangles, 0.6 * iso.Triangles);
   EXPECT_GT(aniso.Along, 1.5 * aniso.Across);
   EXPECT_LT(iso.Along, 1.2 * iso.Across);
+}
+
+TEST(MetricRemeshing, SameMeshWhateverTheThreads)
+{
+  // Collapses, flips and relaxation run on two workers, one on each side of a plane: the mesh
+  // must not depend on the number of threads or on their timing (3 mm phantom, all labels).
+  PhantomChain chain(3, 0.5);
+  auto run = [&chain]() {
+    vtkNew<amMetricRemeshing> remesh;
+    remesh->SetInputConnection(chain.Metric->GetOutputPort());
+    remesh->SetTolerance(0.5);
+    remesh->Update();
+    vtkPolyData* out = remesh->GetOutput();
+    std::vector<double> points(static_cast<size_t>(3 * out->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      out->GetPoint(i, &points[static_cast<size_t>(3 * i)]);
+    std::vector<vtkIdType> cells;
+    auto it = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      cells.insert(cells.end(), ids, ids + n);
+    }
+    return std::make_pair(points, cells);
+  };
+  const auto two = run();
+  vtkSMPTools::Initialize(1);
+  const auto one = run();
+  const std::string backend = vtkSMPTools::GetBackend();
+  vtkSMPTools::SetBackend("Sequential");
+  const auto sequential = run();
+  vtkSMPTools::SetBackend(backend.c_str());
+  vtkSMPTools::Initialize(2);
+  const auto again = run();
+  ASSERT_GT(two.second.size(), 3000u);
+  EXPECT_TRUE(two == one) << "one thread gave another mesh";
+  EXPECT_TRUE(two == sequential) << "the Sequential backend gave another mesh";
+  EXPECT_TRUE(two == again) << "a second run with two threads gave another mesh";
 }
 
 TEST(MetricRemeshing, BadInput)
