@@ -1102,14 +1102,15 @@ public:
     }
     if (c == d)
       return false;
-    std::vector<int> nc;
-    this->Neighbours(c, nc);
-    if (std::binary_search(nc.begin(), nc.end(), d))
-      return false;
+    // The angles first: they refuse most edges, and cost less than the link test.
     const Vec3 &pa = this->P[a], &pb = this->P[b], &pc = this->P[c], &pd = this->P[d];
     const double before = std::min(MinAngle(pa, pb, pc), MinAngle(pb, pa, pd));
     const double after = std::min(MinAngle(pa, pd, pc), MinAngle(pd, pb, pc));
     if (after <= before + 1e-3)
+      return false;
+    std::vector<int> nc;
+    this->Neighbours(c, nc);
+    if (std::binary_search(nc.begin(), nc.end(), d))
       return false;
     const Vec3 n0 = (this->Normal(t1).normalized() + this->Normal(t2).normalized()).normalized();
     const Vec3 n1 = (pd - pa).cross(pc - pa), n2 = (pb - pd).cross(pc - pd);
