@@ -20,9 +20,10 @@
  *    this too, so the input cannot drift away from the result between the distance checks);
  *    where neither end of an edge can take the other's triangles, the edge is collapsed into the
  *    input point nearest its middle (two surface vertices, not beside a junction curve). The
- *    collapse passes run on two workers, one on each side of a plane through the median vertex:
- *    a worker carries out a collapse only where both stars lie on its side, so neither reads what
- *    the other changes; the rest follow serially. The result does not depend on the threads;
+ *    collapse passes (and the flip and relaxation passes below) run on two workers, one on each
+ *    side of a plane through the median vertex: a worker carries out an operation only where the
+ *    stars it changes lie on its side, so neither reads what the other changes; the rest follow
+ *    serially. The result does not depend on the threads;
  * 2. edge flips inside an interface that raise the smaller of the two triangles' minimum angles,
  *    between nearly coplanar triangles, under the same distance check;
  * 3. tangential relaxation of surface vertices towards the centroid of their ring, projected back
