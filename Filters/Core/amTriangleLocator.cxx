@@ -297,10 +297,17 @@ double amTriangleLocator::Closest(
   return best;
 }
 
-bool amTriangleLocator::WithinDistance(const double x[3], double r2, const double* normal) const
+bool amTriangleLocator::WithinDistance(const double x[3], double r2, const double* normal, vtkIdType* hint) const
 {
   if (this->Triangles.empty() || !(r2 >= 0))
     return false;
+  double q[3];
+  if (hint && *hint >= 0 && *hint < static_cast<vtkIdType>(this->Triangles.size()))
+  {
+    const Record& tri = this->Triangles[*hint];
+    if ((!normal || Faces(tri, normal)) && ClosestPointOn(x, tri, q) <= r2)
+      return true;
+  }
   const double r = std::sqrt(r2);
   int b0[3], b1[3], c[3];
   for (int d = 0; d < 3; ++d)
@@ -311,7 +318,6 @@ bool amTriangleLocator::WithinDistance(const double x[3], double r2, const doubl
       return false;
     c[d] = std::min(b1[d], std::max(b0[d], static_cast<int>(std::floor((x[d] - this->Origin[d]) / this->H))));
   }
-  double q[3];
   auto inBin = [&](vtkIdType b) {
     for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
     {
@@ -319,7 +325,11 @@ bool amTriangleLocator::WithinDistance(const double x[3], double r2, const doubl
       if (this->SphereBeyond(tri, x, r) || (normal && !Faces(tri, normal)))
         continue;
       if (ClosestPointOn(x, tri, q) <= r2)
+      {
+        if (hint)
+          *hint = this->BinTriangles[s];
         return true;
+      }
     }
     return false;
   };

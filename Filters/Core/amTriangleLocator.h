@@ -43,8 +43,10 @@ public:
   /// Whether some triangle lies within squared distance r2 of x (the same answer as
   /// ClosestPoint(x) <= r2, but only the bins within reach are searched and the first triangle
   /// found within reach ends the search). With 'normal', only the triangles facing that way
-  /// count, as in ClosestPointFacing.
-  bool WithinDistance(const double x[3], double r2, const double* normal = nullptr) const;
+  /// count, as in ClosestPointFacing. 'hint' (in and out, may be null): a triangle tried
+  /// first (-1: none), and the triangle found within reach (unchanged when there is none);
+  /// queries at nearby points that pass on the hint mostly end at it, without a bin search.
+  bool WithinDistance(const double x[3], double r2, const double* normal = nullptr, vtkIdType* hint = nullptr) const;
 
   /// A sphere about the centroid of (a, b, c) holding the triangle: centre and radius, the radius
   /// inflated by a relative 1e-9 so that rejections by it are safe against rounding.

@@ -484,7 +484,12 @@ public:
   double Length(int a, int b) const { return this->Length(this->P[a], this->M[a], b); }
   bool Near(int sheet, const Vec3& x, const Vec3& normal) const
   {
-    return this->Ref[sheet].WithinDistance(x.data(), this->Eps * this->Eps, normal.data());
+    // The input triangle the last query (on this thread) found: queries come in runs at nearby
+    // points, and most end there.
+    thread_local std::pair<int, vtkIdType> hint(-1, -1);
+    if (hint.first != sheet)
+      hint = { sheet, -1 };
+    return this->Ref[sheet].WithinDistance(x.data(), this->Eps * this->Eps, normal.data(), &hint.second);
   }
   /// Edge midpoints, quarter points and centroid of a (new) triangle lie within Eps of its
   /// interface, of the part of it facing the way the triangle faces (a triangle across a thin
@@ -1452,13 +1457,15 @@ public:
         double w = 0;
         Vec3 far = a, farSample = a;
         int onEdge = -1;
+        vtkIdType hint = -1; // the input triangle the last sample found near
         auto visit = [&](const Vec3& x, int edge) {
           // Only a sample farther than the farthest so far changes anything: the cheap test first.
-          if (w > 0 && this->Ref[t.Sheet].WithinDistance(x.data(), w))
+          if (w > 0 && this->Ref[t.Sheet].WithinDistance(x.data(), w, nullptr, &hint))
             return;
           double d = this->Ref[t.Sheet].ClosestPointWithin(x.data(), near2, cl, tt);
           if (tt < 0)
             d = this->Ref[t.Sheet].ClosestPoint(x.data(), cl, tt);
+          hint = tt;
           if (d > w)
           {
             w = d;

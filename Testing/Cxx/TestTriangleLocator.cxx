@@ -1,0 +1,79 @@
+#include "amTriangleLocator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace
+{
+/// A bumpy height field z = 0.3 sin(x) cos(y) over [0, 10]^2, n x n quads split in two.
+void Terrain(int n, std::vector<std::array<double, 3>>& points, std::vector<std::array<vtkIdType, 3>>& tris)
+{
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+    {
+      const double x = 10.0 * i / n, y = 10.0 * j / n;
+      points.push_back({ x, y, 0.3 * std::sin(x) * std::cos(y) });
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+    {
+      const vtkIdType a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      tris.push_back({ a, b, d });
+      tris.push_back({ a, d, c });
+    }
+}
+}
+
+// WithinDistance answers as ClosestPoint does, with or without a hint (a good one, a stale one,
+// one out of range), and a hint it is given comes back as a triangle within reach.
+TEST(TriangleLocator, WithinDistanceAgreesWithClosestPointWhateverTheHint)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<vtkIdType, 3>> tris;
+  Terrain(40, points, tris);
+  amTriangleLocator locator;
+  locator.Build(points, tris);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> xy(-0.5, 10.5), z(-0.6, 0.6), radius(0.0, 0.3);
+  vtkIdType hint = -1;
+  int agreedWithin = 0, hintsKept = 0;
+  for (int q = 0; q < 4000; ++q)
+  {
+    const double x[3] = { xy(random), xy(random), z(random) };
+    const double r = radius(random), r2 = r * r;
+    double closest[3];
+    vtkIdType t;
+    const bool within = locator.ClosestPoint(x, closest, t) <= r2;
+    ASSERT_EQ(within, locator.WithinDistance(x, r2));
+    const vtkIdType before = hint;
+    ASSERT_EQ(within, locator.WithinDistance(x, r2, nullptr, &hint)) << "query " << q << " hint " << before;
+    if (within)
+    {
+      ++agreedWithin;
+      ASSERT_GE(hint, 0);
+      ASSERT_LT(hint, static_cast<vtkIdType>(tris.size()));
+      double c2[3];
+      const auto& tri = tris[hint];
+      EXPECT_LE(amTriangleLocator::ClosestPointOnTriangle(x, points[tri[0]].data(), points[tri[1]].data(),
+                  points[tri[2]].data(), c2),
+        r2);
+    }
+    else
+    {
+      hintsKept += hint == before;
+      EXPECT_EQ(hint, before); // nothing within reach: the hint stays
+    }
+    if (q % 97 == 0)
+      hint = static_cast<vtkIdType>(tris.size()) + 5; // out of range: ignored
+  }
+  EXPECT_GT(agreedWithin, 500); // both answers occur
+  EXPECT_GT(4000 - agreedWithin, 500);
+  // With a normal: only the triangles facing that way count, hint or not.
+  const double up[3] = { 0, 0, 1 }, down[3] = { 0, 0, -1 }, x[3] = { 5.0, 5.0, 1.0 };
+  hint = -1;
+  EXPECT_TRUE(locator.WithinDistance(x, 4.0, up, &hint));
+  EXPECT_GE(hint, 0);
+  EXPECT_FALSE(locator.WithinDistance(x, 4.0, down, &hint)); // every triangle faces up
+}
