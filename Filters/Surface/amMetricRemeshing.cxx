@@ -133,7 +133,6 @@ public:
       std::vector<int> Edge, Na, Nb, Common, Apex, Changed, Removed, Sheets, Affected;
       std::vector<std::array<int, 3>> Ids;
       std::vector<std::array<Vec3, 3>> Pos;
-      std::vector<std::array<Vec3, 2>> OldBoxes;
     } C;
   };
   mutable std::array<Worker, 2> Workers;
@@ -260,55 +259,98 @@ public:
           f(BinKey(i, j, k), this->ZoneOf(index[this->SplitAxis]));
         }
   }
-  /// Put live triangle t in the bins its box touches. A triangle changed since it was binned with
-  /// the box (oldLo, oldHi) goes only into the bins that box did not touch: it is in those already
-  /// (re-binned whole, the crossing checks on the outer phantom surface scanned 73 M entries for
-  /// 12.5 M distinct live triangles; 41 M this way).
-  void BinTriangle(int t, const Vec3* oldLo = nullptr, const Vec3* oldHi = nullptr)
+  /// Per triangle slot: the range of bins (index box lo 0..2, hi 3..5) it is in (lo > hi: none).
+  /// The bins stay exact: every change of a triangle moves it to the bins of its new box, and a
+  /// triangle that dies leaves them (stale entries had to be purged by rebuilding the bins before
+  /// each pass, so that no entry names a triangle the other worker changes).
+  std::vector<std::array<int, 6>> BinnedIn;
+  std::array<int, 6> BinRange(int t) const
   {
     Vec3 p[3], lo, hi;
     for (int k = 0; k < 3; ++k)
       p[k] = this->P[this->T[t].V[k]];
     this->Box(p, lo, hi);
-    if (!oldLo)
-    {
-      this->ForBins(lo, hi, [&](long long key, int zone) { this->Bins[zone][key].push_back(t); });
-      return;
-    }
-    long long l[3], h[3], ol[3], oh[3];
+    std::array<int, 6> r;
     for (int d = 0; d < 3; ++d)
     {
-      l[d] = static_cast<long long>(std::floor(lo[d] / this->BinSize));
-      h[d] = static_cast<long long>(std::floor(hi[d] / this->BinSize));
-      ol[d] = static_cast<long long>(std::floor((*oldLo)[d] / this->BinSize));
-      oh[d] = static_cast<long long>(std::floor((*oldHi)[d] / this->BinSize));
+      r[d] = static_cast<int>(std::floor(lo[d] / this->BinSize));
+      r[d + 3] = static_cast<int>(std::floor(hi[d] / this->BinSize));
     }
-    for (long long i = l[0]; i <= h[0]; ++i)
-      for (long long j = l[1]; j <= h[1]; ++j)
-        for (long long k = l[2]; k <= h[2]; ++k)
+    return r;
+  }
+  /// Calls f(key, zone) for the bins of range r outside range 'except' (null: none).
+  template <typename F>
+  void ForRange(const std::array<int, 6>& r, const std::array<int, 6>* except, F f) const
+  {
+    for (long long i = r[0]; i <= r[3]; ++i)
+      for (long long j = r[1]; j <= r[4]; ++j)
+        for (long long k = r[2]; k <= r[5]; ++k)
         {
-          const long long index[3] = { i, j, k };
-          if (i >= ol[0] && i <= oh[0] && j >= ol[1] && j <= oh[1] && k >= ol[2] && k <= oh[2])
+          if (except && i >= (*except)[0] && i <= (*except)[3] && j >= (*except)[1] && j <= (*except)[4] &&
+            k >= (*except)[2] && k <= (*except)[5])
             continue;
-          this->Bins[this->ZoneOf(index[this->SplitAxis])][BinKey(i, j, k)].push_back(t);
+          const long long index[3] = { i, j, k };
+          f(BinKey(i, j, k), this->ZoneOf(index[this->SplitAxis]));
         }
   }
-  /// The boxes of the triangles ts as they are, for Rebin once they have changed.
-  void BoxesOf(const std::vector<int>& ts, std::vector<std::array<Vec3, 2>>& boxes) const
+  void RemoveFromBins(int t, const std::array<int, 6>& r, const std::array<int, 6>* except)
   {
-    boxes.resize(ts.size());
-    for (size_t n = 0; n < ts.size(); ++n)
-    {
-      const int* v = this->T[ts[n]].V;
-      const Vec3 p[3] = { this->P[v[0]], this->P[v[1]], this->P[v[2]] };
-      this->Box(p, boxes[n][0], boxes[n][1]);
-    }
+    this->ForRange(r, except, [&](long long key, int zone) {
+      auto it = this->Bins[zone].find(key);
+      if (it == this->Bins[zone].end())
+        return;
+      auto& list = it->second;
+      auto at = std::find(list.begin(), list.end(), t);
+      if (at != list.end())
+      {
+        *at = list.back();
+        list.pop_back();
+      }
+    });
   }
-  /// The triangles ts binned again after a change, given their boxes before it (BoxesOf).
-  void Rebin(const std::vector<int>& ts, const std::vector<std::array<Vec3, 2>>& boxes)
+  /// Live triangle t (new, or changed since it was last binned) into the bins its box touches,
+  /// and out of those it no longer touches.
+  void BinTriangle(int t)
   {
-    for (size_t n = 0; n < ts.size(); ++n)
-      this->BinTriangle(ts[n], &boxes[n][0], &boxes[n][1]);
+    if (this->BinnedIn.size() <= static_cast<size_t>(t))
+      this->BinnedIn.resize(this->T.size(), { 0, 0, 0, -1, -1, -1 });
+    const std::array<int, 6> r = this->BinRange(t), old = this->BinnedIn[t];
+    const bool had = old[0] <= old[3];
+    if (had && r == old)
+      return;
+    if (had)
+      this->RemoveFromBins(t, old, &r);
+    this->ForRange(r, had ? &old : nullptr, [&](long long key, int zone) { this->Bins[zone][key].push_back(t); });
+    this->BinnedIn[t] = r;
+  }
+  /// Triangle t out of every bin (it dies).
+  void Unbin(int t)
+  {
+    if (static_cast<size_t>(t) >= this->BinnedIn.size() || this->BinnedIn[t][0] > this->BinnedIn[t][3])
+      return;
+    this->RemoveFromBins(t, this->BinnedIn[t], nullptr);
+    this->BinnedIn[t] = { 0, 0, 0, -1, -1, -1 };
+  }
+  /// The triangles ts binned again after a change.
+  void Rebin(const std::vector<int>& ts)
+  {
+    for (int t : ts)
+      this->BinTriangle(t);
+  }
+  /// RebuildBins where the bins no longer fit the triangles: their size (twice the mean edge
+  /// length) off by more than a quarter. (The bins stay exact without it, and the split plane
+  /// stays where it was.)
+  void RebuildBinsIfStale()
+  {
+    double sum = 0;
+    long long n = 0;
+    for (const Tri& t : this->T)
+      if (t.Alive)
+        for (int k = 0; k < 3; ++k, ++n)
+          sum += (this->P[t.V[(k + 1) % 3]] - this->P[t.V[k]]).norm();
+    const double size = n ? std::max(2.0 * sum / n, 1e-6) : 1.0;
+    if (size > 1.25 * this->BinSize || size < 0.8 * this->BinSize || this->BinnedIn.size() != this->T.size())
+      this->RebuildBins();
   }
   void RebuildBins()
   {
@@ -339,6 +381,7 @@ public:
     }
     for (auto& bins : this->Bins)
       bins.clear();
+    this->BinnedIn.assign(this->T.size(), { 0, 0, 0, -1, -1, -1 });
     for (size_t t = 0; t < this->T.size(); ++t)
       if (this->T[t].Alive)
         this->BinTriangle(static_cast<int>(t));
@@ -759,6 +802,7 @@ public:
   }
   void Detach(int t)
   {
+    this->Unbin(t);
     this->T[t].Alive = false;
     for (int k = 0; k < 3; ++k)
     {
@@ -796,7 +840,6 @@ public:
          &sheets = worker.C.Sheets, &affected = worker.C.Affected;
     auto& ids = worker.C.Ids;
     auto& pos = worker.C.Pos;
-    auto& oldBoxes = worker.C.OldBoxes;
     this->EdgeTriangles(a, b, edge);
     if (edge.empty())
       return false;
@@ -887,7 +930,6 @@ public:
         return false;
     }
     this->KeepHints();
-    this->BoxesOf(changed, oldBoxes);
     for (int t : edge)
       this->Detach(t);
     this->Cluster[b].insert(this->Cluster[b].end(), this->Cluster[a].begin(), this->Cluster[a].end());
@@ -903,7 +945,7 @@ public:
     this->VAlive[a] = 0;
     this->P[b] = x;
     this->M[b] = mx;
-    this->Rebin(changed, oldBoxes);
+    this->Rebin(changed);
     ++worker.Collapses;
     if (CurrentZone >= 0)
       ++worker.Removed[this->Component[a]];
@@ -1142,8 +1184,6 @@ public:
       return false;
     this->KeepHints();
     const std::vector<int> pair = { t1, t2 };
-    std::vector<std::array<Vec3, 2>> oldBoxes;
-    this->BoxesOf(pair, oldBoxes);
     auto drop = [this](int v, int t) {
       auto& l = this->VT[v];
       l.erase(std::remove(l.begin(), l.end(), t), l.end());
@@ -1156,7 +1196,7 @@ public:
     std::copy(v1, v1 + 3, this->T[t1].V);
     std::copy(v2, v2 + 3, this->T[t2].V);
     std::copy(this->T[t1].Labels, this->T[t1].Labels + 2, this->T[t2].Labels);
-    this->Rebin(pair, oldBoxes);
+    this->Rebin(pair);
     ++this->W().Flips;
     for (int w : { a, b, c, d })
       this->Touch(w);
@@ -1178,7 +1218,7 @@ public:
         }
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    this->RebuildBins();
+    this->RebuildBinsIfStale();
     return this->OnTwoWorkers(
       edges.size(),
       [&](size_t i) {
@@ -1198,7 +1238,7 @@ public:
   /// changes the triangles of v's star and the clusters of v and its neighbours).
   int RelaxPass()
   {
-    this->RebuildBins();
+    this->RebuildBinsIfStale();
     return this->OnTwoWorkers(
       this->P.size(),
       [&](size_t v) {
@@ -1297,10 +1337,8 @@ public:
       this->Crosses(ids, pos, this->VT[v]))
       return false;
     this->KeepHints();
-    std::vector<std::array<Vec3, 2>> oldBoxes;
-    this->BoxesOf(this->VT[v], oldBoxes);
     this->P[v] = x;
-    this->Rebin(this->VT[v], oldBoxes);
+    this->Rebin(this->VT[v]);
     ++this->W().Moves;
     for (int w : ring)
       this->Touch(w);
@@ -1543,6 +1581,7 @@ public:
     std::swap(this->InputSheets, o.InputSheets);
     std::swap(this->CurveNeighbours, o.CurveNeighbours);
     std::swap(this->Bins, o.Bins);
+    std::swap(this->BinnedIn, o.BinnedIn);
     std::swap(this->Cache, o.Cache);
   }
 
@@ -1964,7 +2003,7 @@ int amMetricRemeshing::RequestData(
     for (int pass = 0; pass < 8; ++pass)
     {
       if (pass > 0)
-        r.RebuildBins();
+        r.RebuildBinsIfStale();
       if (r.CollapsePass() == 0)
         break;
     }
