@@ -1055,8 +1055,8 @@ public:
   /// and read only what lies in its side's bins (the stars it changes, and the bins its
   /// crossing check reads): then neither worker reads what the other changes, and each side's
   /// result does not depend on the other's timing. The items left, and those in no zone (2),
-  /// follow serially, in order. The bins must have been rebuilt since the last change outside a
-  /// worker's side (a stale entry could name a triangle the other worker changes).
+  /// follow serially, in order. (The bins are exact, see BinnedIn: an entry in a worker's side
+  /// names a triangle touching that side, which the other worker cannot change.)
   template <typename ZoneOfItem, typename Op>
   int OnTwoWorkers(size_t n, ZoneOfItem zoneOf, Op op)
   {
