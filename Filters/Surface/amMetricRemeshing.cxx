@@ -1017,11 +1017,18 @@ public:
   /// again, unless it was refused for crossing a triangle elsewhere that has since moved: such an
   /// edge waits until something changes next to it).
   std::vector<char> Dirty;
+  /// The same since the last flip pass began: a flip pass after another tries only the edges at
+  /// one of them (an edge whose two triangles did not change keeps its angles, and the angles
+  /// refuse most flips).
+  std::vector<char> FlipDirty;
   void Touch(int v)
   {
     if (static_cast<size_t>(v) >= this->Dirty.size())
       this->Dirty.resize(this->P.size(), 1);
+    if (static_cast<size_t>(v) >= this->FlipDirty.size())
+      this->FlipDirty.resize(this->P.size(), 1);
     this->Dirty[v] = 1;
+    this->FlipDirty[v] = 1;
   }
   int CollapsePass()
   {
@@ -1096,7 +1103,9 @@ public:
   int OnTwoWorkers(size_t n, ZoneOfItem zoneOf, Op op)
   {
     if (this->Dirty.size() < this->P.size())
-      this->Dirty.resize(this->P.size(), 1); // Touch must not resize it on a worker
+      this->Dirty.resize(this->P.size(), 1); // Touch must not resize them on a worker
+    if (this->FlipDirty.size() < this->P.size())
+      this->FlipDirty.resize(this->P.size(), 1);
     std::vector<char> later(n, 1);
     std::array<std::vector<size_t>, 2> side, taken; // taken: what each worker did not leave
     for (size_t i = 0; i < n; ++i)
@@ -1240,17 +1249,21 @@ public:
 
   /// Every edge flipped where that makes the smallest angle of its two triangles larger; on two
   /// workers (see OnTwoWorkers: a flip changes the two triangles of the edge, in the stars of its
-  /// ends).
-  int FlipPass()
+  /// ends). 'onlyTouched': only the edges at a vertex touched since the last flip pass began.
+  int FlipPass(bool onlyTouched = false)
   {
+    if (this->FlipDirty.size() < this->P.size())
+      this->FlipDirty.resize(this->P.size(), 1);
     std::vector<std::pair<int, int>> edges;
     for (size_t t = 0; t < this->T.size(); ++t)
       if (this->T[t].Alive)
         for (int k = 0; k < 3; ++k)
         {
           const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
-          edges.push_back({ std::min(a, b), std::max(a, b) });
+          if (!onlyTouched || this->FlipDirty[a] || this->FlipDirty[b])
+            edges.push_back({ std::min(a, b), std::max(a, b) });
         }
+    std::fill(this->FlipDirty.begin(), this->FlipDirty.end(), 0);
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     this->RebuildBinsIfStale();
@@ -1894,7 +1907,7 @@ public:
 amMetricRemeshing::amMetricRemeshing()
   : Tolerance(0.2)
   , TargetSize(0.0)
-  , NumberOfIterations(4)
+  , NumberOfIterations(3)
   , Hausdorff(0)
   , HausdorffUpperBound(0)
   , InsertedPoints(0)
@@ -2054,9 +2067,9 @@ int amMetricRemeshing::RequestData(
         break;
     }
     for (int pass = 0; pass < 3; ++pass)
-      if (r.FlipPass() == 0)
+      if (r.FlipPass(pass > 0) == 0)
         break;
-      r.RelaxPass();
+    r.RelaxPass();
       this->UpdateProgress(0.05 + 0.75 * (it + 1) / this->NumberOfIterations);
   }
   r.FlipPass();

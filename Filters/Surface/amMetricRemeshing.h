@@ -89,7 +89,7 @@ public:
   ///@}
 
   ///@{
-  /// Collapse/flip/relax iterations (default 4).
+  /// Collapse/flip/relax iterations (default 3).
   vtkSetClampMacro(NumberOfIterations, int, 1, 100);
   vtkGetMacro(NumberOfIterations, int);
   ///@}
