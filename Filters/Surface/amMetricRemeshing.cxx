@@ -1571,16 +1571,18 @@ public:
             onEdge = edge;
           }
         };
+        // The centroid and the edge midpoints first, which the grid misses when n is odd or not a
+        // multiple of three (SurfaceDistance samples them: its figure can be no larger than ours).
+        // The distance is largest inside a triangle, mostly near its centroid, and least at its
+        // vertices (on the input): from there, most grid points pass the cheap test.
+        visit((a + b + c) / 3.0, -1);
+        visit(0.5 * (a + b), 0);
+        visit(0.5 * (b + c), 1);
+        visit(0.5 * (c + a), 2);
         for (int u = 0; u <= n; ++u)
           for (int v = 0; u + v <= n; ++v)
             visit(a + (b - a) * (static_cast<double>(u) / n) + (c - a) * (static_cast<double>(v) / n),
               v == 0 ? 0 : (u + v == n ? 1 : (u == 0 ? 2 : -1)));
-        // Also the edge midpoints and the centroid, which the grid misses when n is odd or not a
-        // multiple of three (SurfaceDistance samples them: its figure can be no larger than ours).
-        visit(0.5 * (a + b), 0);
-        visit(0.5 * (b + c), 1);
-        visit(0.5 * (c + a), 2);
-        visit((a + b + c) / 3.0, -1);
         // The point to insert: on the side of the input facing the way the triangle faces.
         if (w > this->Eps * this->Eps)
         {
