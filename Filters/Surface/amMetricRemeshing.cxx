@@ -20,6 +20,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <Eigen/Dense>
@@ -399,10 +400,23 @@ public:
     }
     for (auto& bins : this->Bins)
       bins.clear();
+    // Filled on two threads, one for the bins before the split plane and on it, one for those
+    // after it (each bin lists its triangles in their order, as BinTriangle would one by one).
     this->BinnedIn.assign(this->T.size(), { 0, 0, 0, -1, -1, -1 });
-    for (size_t t = 0; t < this->T.size(); ++t)
-      if (this->T[t].Alive)
-        this->BinTriangle(static_cast<int>(t));
+    vtkSMPTools::For(0, 2, 1, [&](vtkIdType z0, vtkIdType z1) {
+      for (vtkIdType z = z0; z < z1; ++z)
+        for (size_t t = 0; t < this->T.size(); ++t)
+          if (this->T[t].Alive)
+          {
+            const std::array<int, 6> r = this->BinRange(static_cast<int>(t));
+            if (z == 0)
+              this->BinnedIn[t] = r;
+            this->ForRange(r, nullptr, [&](long long key, int zone) {
+              if ((zone == 1) == (z == 1))
+                this->Bins[zone][key].push_back(static_cast<int>(t));
+            });
+          }
+    });
   }
   /// Whether the vertices of q not shared with p lie strictly on one side of p's plane.
   static bool Separated(const Vec3* p, const int* ip, const Vec3* q, const int* iq)
@@ -1051,23 +1065,31 @@ public:
       }
       bool operator==(const Candidate& o) const { return this->A == o.A && this->B == o.B; }
     };
-    std::vector<Candidate> cand;
-    for (size_t t = 0; t < this->T.size(); ++t)
-    {
-      if (!this->T[t].Alive)
-        continue;
-      for (int k = 0; k < 3; ++k)
+    // Gathered on the threads (each edge once from one of its triangles, as the half-edge
+    // a -> b with a < b; a junction edge maybe more than once), sorted whole.
+    vtkSMPThreadLocal<std::vector<Candidate>> found;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(this->T.size()), [&](vtkIdType t0, vtkIdType t1) {
+      auto& local = found.Local();
+      for (vtkIdType t = t0; t < t1; ++t)
       {
-        const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
-        if (a < b && (this->Dirty[a] || this->Dirty[b]))
+        if (!this->T[t].Alive)
+          continue;
+        for (int k = 0; k < 3; ++k)
         {
-          const double L = this->Length(a, b);
-          if (L < ShortEdge)
-            cand.push_back({ static_cast<long long>(L * 10.0),
-              this->MortonCode(0.5 * (this->P[a] + this->P[b]), this->BinSize), L, a, b });
+          const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
+          if (a < b && (this->Dirty[a] || this->Dirty[b]))
+          {
+            const double L = this->Length(a, b);
+            if (L < ShortEdge)
+              local.push_back({ static_cast<long long>(L * 10.0),
+                this->MortonCode(0.5 * (this->P[a] + this->P[b]), this->BinSize), L, a, b });
+          }
         }
       }
-    }
+    });
+    std::vector<Candidate> cand;
+    for (const auto& local : found)
+      cand.insert(cand.end(), local.begin(), local.end());
     std::sort(cand.begin(), cand.end());
     cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
     std::fill(this->Dirty.begin(), this->Dirty.end(), 0);
@@ -1254,29 +1276,27 @@ public:
   {
     if (this->FlipDirty.size() < this->P.size())
       this->FlipDirty.resize(this->P.size(), 1);
-    std::vector<std::pair<int, int>> edges;
+    this->RebuildBinsIfStale();
+    // Each edge once, in the Morton order of its midpoint (see CollapsePass): an edge of two
+    // triangles of one orientation is the half-edge a -> b with a < b of one of them; a junction
+    // edge may come more than once, and then its copies are neighbours in that order.
+    std::vector<std::pair<unsigned long long, std::pair<int, int>>> order;
     for (size_t t = 0; t < this->T.size(); ++t)
       if (this->T[t].Alive)
         for (int k = 0; k < 3; ++k)
         {
           const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
-          if (!onlyTouched || this->FlipDirty[a] || this->FlipDirty[b])
-            edges.push_back({ std::min(a, b), std::max(a, b) });
+          if ((a < b || this->Kind[a] != amSurfaceMesh::Surface || this->Kind[b] != amSurfaceMesh::Surface) &&
+            (!onlyTouched || this->FlipDirty[a] || this->FlipDirty[b]))
+            order.push_back({ this->MortonCode(0.5 * (this->P[a] + this->P[b]), this->BinSize),
+              { std::min(a, b), std::max(a, b) } });
         }
     std::fill(this->FlipDirty.begin(), this->FlipDirty.end(), 0);
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    this->RebuildBinsIfStale();
-    {
-      // In the Morton order of their midpoints (see CollapsePass).
-      std::vector<std::pair<unsigned long long, std::pair<int, int>>> order(edges.size());
-      for (size_t i = 0; i < edges.size(); ++i)
-        order[i] = { this->MortonCode(0.5 * (this->P[edges[i].first] + this->P[edges[i].second]), this->BinSize),
-          edges[i] };
-      std::sort(order.begin(), order.end());
-      for (size_t i = 0; i < edges.size(); ++i)
-        edges[i] = order[i].second;
-    }
+    std::sort(order.begin(), order.end());
+    order.erase(std::unique(order.begin(), order.end()), order.end());
+    std::vector<std::pair<int, int>> edges(order.size());
+    for (size_t i = 0; i < order.size(); ++i)
+      edges[i] = order[i].second;
     return this->OnTwoWorkers(
       edges.size(),
       [&](size_t i) {
