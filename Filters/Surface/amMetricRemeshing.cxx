@@ -43,6 +43,64 @@ namespace
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 
+/// A coarse grid over a set of points, its cells flagged where they come within Reach of a
+/// triangle of a set: a point whose cell is not flagged is farther than Reach from all of them.
+class NearCells
+{
+public:
+  void Build(const std::vector<Vec3>& points, double reach, const std::vector<std::array<double, 3>>& pts,
+    const std::vector<std::array<vtkIdType, 3>>& tris)
+  {
+    this->Reach = reach;
+    this->Lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 hi = -this->Lo;
+    for (const Vec3& x : points)
+    {
+      this->Lo = this->Lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+    if (points.empty())
+      return;
+    // Cells at least twice the reach, at most 128 along the longest side.
+    this->G = std::max({ 2.0 * reach, (hi - this->Lo).maxCoeff() / 128.0, 1e-9 });
+    for (int d = 0; d < 3; ++d)
+      this->N[d] = static_cast<int>((hi[d] - this->Lo[d]) / this->G) + 1;
+    this->Cell.assign(static_cast<size_t>(this->N[0]) * this->N[1] * this->N[2], 0);
+    for (const auto& t : tris)
+    {
+      int lo[3], up[3];
+      for (int d = 0; d < 3; ++d)
+      {
+        const double a = std::min({ pts[t[0]][d], pts[t[1]][d], pts[t[2]][d] }) - reach,
+                     b = std::max({ pts[t[0]][d], pts[t[1]][d], pts[t[2]][d] }) + reach;
+        lo[d] = std::max(0, static_cast<int>(std::floor((a - this->Lo[d]) / this->G)));
+        up[d] = std::min(this->N[d] - 1, static_cast<int>(std::floor((b - this->Lo[d]) / this->G)));
+      }
+      for (int k = lo[2]; k <= up[2]; ++k)
+        for (int j = lo[1]; j <= up[1]; ++j)
+          for (int i = lo[0]; i <= up[0]; ++i)
+            this->Cell[(static_cast<size_t>(k) * this->N[1] + j) * this->N[0] + i] = 1;
+    }
+  }
+  /// Whether a point of the set, at squared distance d2 from its nearest triangle, may have one
+  /// of the set's triangles nearer than that.
+  bool MayComeNearer(const Vec3& x, double d2) const
+  {
+    if (d2 > this->Reach * this->Reach || this->Cell.empty())
+      return true;
+    int c[3];
+    for (int d = 0; d < 3; ++d)
+      c[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((x[d] - this->Lo[d]) / this->G)));
+    return this->Cell[(static_cast<size_t>(c[2]) * this->N[1] + c[1]) * this->N[0] + c[0]] != 0;
+  }
+
+private:
+  double Reach = 0, G = 1;
+  Vec3 Lo = Vec3::Zero();
+  int N[3] = { 0, 0, 0 };
+  std::vector<char> Cell;
+};
+
 struct Tri
 {
   int V[3];
@@ -1465,6 +1523,9 @@ public:
     });
     // Per sheet: the whole current surface, and the triangles changed since the last Measure.
     std::vector<amTriangleLocator> cur(static_cast<size_t>(nSheets)), changed(static_cast<size_t>(nSheets));
+    // Where the changed triangles are: an input sample elsewhere keeps its distance (the later
+    // measures change a few triangles; querying every sample cost a tenth of a second each).
+    std::vector<NearCells> changedNear(static_cast<size_t>(nSheets));
     std::vector<std::vector<int>> ids(static_cast<size_t>(nSheets)), changedIds(static_cast<size_t>(nSheets));
     {
       std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets)),
@@ -1488,6 +1549,8 @@ public:
       {
         cur[s].Build(pts, tris[s]);
         changed[s].Build(pts, changedTris[s]);
+        if (this->Cache.Valid)
+          changedNear[s].Build(this->RefSamples[s], 2.0 * this->Eps, pts, changedTris[s]);
       }
     }
     MeasureCache& cache = this->Cache;
@@ -1515,6 +1578,8 @@ public:
         for (vtkIdType i = i0; i < i1; ++i)
           if (known && at[i] >= 0 && same[at[i]])
           {
+            if (!changedNear[s].MayComeNearer(samples[i], d2[i]))
+              continue;
             const double q = changed[s].ClosestPointWithin(samples[i].data(), d2[i], cl, a);
             if (q < d2[i] && a >= 0)
             {
