@@ -402,13 +402,7 @@ public:
   /// stays where it was.)
   void RebuildBinsIfStale()
   {
-    double sum = 0;
-    long long n = 0;
-    for (const Tri& t : this->T)
-      if (t.Alive)
-        for (int k = 0; k < 3; ++k, ++n)
-          sum += (this->P[t.V[(k + 1) % 3]] - this->P[t.V[k]]).norm();
-    const double size = n ? std::max(2.0 * sum / n, 1e-6) : 1.0;
+    const double size = this->FittingBinSize();
     if (size > 1.25 * this->BinSize || size < 0.8 * this->BinSize || this->BinnedIn.size() != this->T.size())
       this->RebuildBins();
   }
@@ -429,7 +423,8 @@ public:
       code |= spread(static_cast<unsigned long long>(static_cast<long long>(std::floor(x[d] / cell)) + (1 << 20))) << d;
     return code;
   }
-  void RebuildBins()
+  /// The bin size that fits the triangles now: twice their mean edge length.
+  double FittingBinSize() const
   {
     double sum = 0;
     long long n = 0;
@@ -437,7 +432,11 @@ public:
       if (t.Alive)
         for (int k = 0; k < 3; ++k, ++n)
           sum += (this->P[t.V[(k + 1) % 3]] - this->P[t.V[k]]).norm();
-    this->BinSize = n ? std::max(2.0 * sum / n, 1e-6) : 1.0;
+    return n ? std::max(2.0 * sum / n, 1e-6) : 1.0;
+  }
+  void RebuildBins()
+  {
+    this->BinSize = this->FittingBinSize();
     // The split: across the longest side of the bounding box, at the median vertex.
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     std::vector<double> along;
