@@ -61,8 +61,9 @@ public:
     }
     if (points.empty())
       return;
-    // Cells at least twice the reach, at most 128 along the longest side.
-    this->G = std::max({ 2.0 * reach, (hi - this->Lo).maxCoeff() / 128.0, 1e-9 });
+    // Cells at least twice the reach, at most 64 along the longest side (a few hundred thousand
+    // bytes per interface, cleared at every measure).
+    this->G = std::max({ 2.0 * reach, (hi - this->Lo).maxCoeff() / 64.0, 1e-9 });
     for (int d = 0; d < 3; ++d)
       this->N[d] = static_cast<int>((hi[d] - this->Lo[d]) / this->G) + 1;
     this->Cell.assign(static_cast<size_t>(this->N[0]) * this->N[1] * this->N[2], 0);
