@@ -1337,7 +1337,8 @@ public:
     this->RebuildBinsIfStale();
     // Each edge once, in the Morton order of its midpoint (see CollapsePass): an edge of two
     // triangles of one orientation is the half-edge a -> b with a < b of one of them; a junction
-    // edge may come more than once, and then its copies are neighbours in that order.
+    // edge may come more than once, and then its copies are neighbours in that order. (An edge
+    // whose two triangles disagree on their orientation may be missed: Flip leaves those.)
     std::vector<std::pair<unsigned long long, std::pair<int, int>>> order;
     for (size_t t = 0; t < this->T.size(); ++t)
       if (this->T[t].Alive)
