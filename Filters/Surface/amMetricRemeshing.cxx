@@ -1093,19 +1093,25 @@ public:
   /// one of them (an edge whose two triangles did not change keeps its angles, and the angles
   /// refuse most flips).
   std::vector<char> FlipDirty;
+  /// Both flags for every vertex (new vertices count as touched). Not on a worker: OnTwoWorkers
+  /// calls it first.
+  void SizeDirty()
+  {
+    if (this->Dirty.size() < this->P.size())
+      this->Dirty.resize(this->P.size(), 1);
+    if (this->FlipDirty.size() < this->P.size())
+      this->FlipDirty.resize(this->P.size(), 1);
+  }
   void Touch(int v)
   {
-    if (static_cast<size_t>(v) >= this->Dirty.size())
-      this->Dirty.resize(this->P.size(), 1);
-    if (static_cast<size_t>(v) >= this->FlipDirty.size())
-      this->FlipDirty.resize(this->P.size(), 1);
+    if (static_cast<size_t>(v) >= std::min(this->Dirty.size(), this->FlipDirty.size()))
+      this->SizeDirty();
     this->Dirty[v] = 1;
     this->FlipDirty[v] = 1;
   }
   int CollapsePass()
   {
-    if (this->Dirty.size() < this->P.size())
-      this->Dirty.resize(this->P.size(), 1);
+    this->SizeDirty();
     // Shortest first, by classes of metric length a tenth wide, and within a class in the Morton
     // order of the edges' midpoints (cells the size of the bins): consecutive collapses then
     // read and change the same part of memory. (Edges in order of length alone were scattered
@@ -1182,10 +1188,7 @@ public:
   template <typename ZoneOfItem, typename Op>
   int OnTwoWorkers(size_t n, ZoneOfItem zoneOf, Op op)
   {
-    if (this->Dirty.size() < this->P.size())
-      this->Dirty.resize(this->P.size(), 1); // Touch must not resize them on a worker
-    if (this->FlipDirty.size() < this->P.size())
-      this->FlipDirty.resize(this->P.size(), 1);
+    this->SizeDirty(); // Touch must not resize them on a worker
     std::vector<char> later(n, 1);
     std::array<std::vector<size_t>, 2> side, taken; // taken: what each worker did not leave
     for (size_t i = 0; i < n; ++i)
@@ -1332,8 +1335,7 @@ public:
   /// ends). 'onlyTouched': only the edges at a vertex touched since the last flip pass began.
   int FlipPass(bool onlyTouched = false)
   {
-    if (this->FlipDirty.size() < this->P.size())
-      this->FlipDirty.resize(this->P.size(), 1);
+    this->SizeDirty();
     this->RebuildBinsIfStale();
     // Each edge once, in the Morton order of its midpoint (see CollapsePass): an edge of two
     // triangles of one orientation is the half-edge a -> b with a < b of one of them; a junction
@@ -2158,7 +2160,7 @@ int amMetricRemeshing::RequestData(
       if (r.FlipPass(pass > 0) == 0)
         break;
     r.RelaxPass();
-      this->UpdateProgress(0.05 + 0.75 * (it + 1) / this->NumberOfIterations);
+    this->UpdateProgress(0.05 + 0.75 * (it + 1) / this->NumberOfIterations);
   }
   r.FlipPass();
   // The guarantee: measure, insert where the bound is exceeded, measure again.
