@@ -325,12 +325,23 @@ public:
   /// triangle that dies leaves them (stale entries had to be purged by rebuilding the bins before
   /// each pass, so that no entry names a triangle the other worker changes).
   std::vector<std::array<int, 6>> BinnedIn;
-  std::array<int, 6> BinRange(int t) const
+  /// Per triangle slot: its bounding box when it was last binned (lo 0..2, hi 3..5), rounded
+  /// outwards to floats: the crossing check's first test reads this one small record instead of
+  /// the triangle and its three corners (which took most of that check's time).
+  std::vector<std::array<float, 6>> BinnedBox;
+  std::array<int, 6> BinRange(int t, std::array<float, 6>* box = nullptr) const
   {
     Vec3 p[3], lo, hi;
     for (int k = 0; k < 3; ++k)
       p[k] = this->P[this->T[t].V[k]];
     this->Box(p, lo, hi);
+    if (box)
+      for (int d = 0; d < 3; ++d)
+      {
+        float l = static_cast<float>(lo[d]), h = static_cast<float>(hi[d]);
+        (*box)[d] = l > lo[d] ? std::nextafter(l, -std::numeric_limits<float>::infinity()) : l;
+        (*box)[d + 3] = h < hi[d] ? std::nextafter(h, std::numeric_limits<float>::infinity()) : h;
+      }
     std::array<int, 6> r;
     for (int d = 0; d < 3; ++d)
     {
@@ -374,8 +385,11 @@ public:
   void BinTriangle(int t)
   {
     if (this->BinnedIn.size() <= static_cast<size_t>(t))
+    {
       this->BinnedIn.resize(this->T.size(), { 0, 0, 0, -1, -1, -1 });
-    const std::array<int, 6> r = this->BinRange(t), old = this->BinnedIn[t];
+      this->BinnedBox.resize(this->T.size(), { 1, 1, 1, 0, 0, 0 });
+    }
+    const std::array<int, 6> r = this->BinRange(t, &this->BinnedBox[t]), old = this->BinnedIn[t];
     const bool had = old[0] <= old[3];
     if (had && r == old)
       return;
@@ -391,6 +405,7 @@ public:
       return;
     this->RemoveFromBins(t, this->BinnedIn[t], nullptr);
     this->BinnedIn[t] = { 0, 0, 0, -1, -1, -1 };
+    this->BinnedBox[t] = { 1, 1, 1, 0, 0, 0 };
   }
   /// The triangles ts binned again after a change.
   void Rebin(const std::vector<int>& ts)
@@ -461,12 +476,13 @@ public:
     // Filled on two threads, one for the bins before the split plane and on it, one for those
     // after it (each bin lists its triangles in their order, as BinTriangle would one by one).
     this->BinnedIn.assign(this->T.size(), { 0, 0, 0, -1, -1, -1 });
+    this->BinnedBox.assign(this->T.size(), { 1, 1, 1, 0, 0, 0 });
     vtkSMPTools::For(0, 2, 1, [&](vtkIdType z0, vtkIdType z1) {
       for (vtkIdType z = z0; z < z1; ++z)
         for (size_t t = 0; t < this->T.size(); ++t)
           if (this->T[t].Alive)
           {
-            const std::array<int, 6> r = this->BinRange(static_cast<int>(t));
+            const std::array<int, 6> r = this->BinRange(static_cast<int>(t), z == 0 ? &this->BinnedBox[t] : nullptr);
             if (z == 0)
               this->BinnedIn[t] = r;
             this->ForRange(r, nullptr, [&](long long key, int zone) {
@@ -578,9 +594,13 @@ public:
         return;
       for (int t : it->second)
       {
-        if (worker.Stamp[t] == stamp || !this->T[t].Alive)
+        const std::array<float, 6>& b = this->BinnedBox[t];
+        if (b[0] > hi[0] || b[1] > hi[1] || b[2] > hi[2] || b[3] < lo[0] || b[4] < lo[1] || b[5] < lo[2] ||
+          worker.Stamp[t] == stamp)
           continue;
         worker.Stamp[t] = stamp;
+        if (!this->T[t].Alive)
+          continue;
         NearTriangle c;
         c.Id = t;
         for (int k = 0; k < 3; ++k)
@@ -1731,6 +1751,7 @@ public:
     std::swap(this->CurveNeighbours, o.CurveNeighbours);
     std::swap(this->Bins, o.Bins);
     std::swap(this->BinnedIn, o.BinnedIn);
+    std::swap(this->BinnedBox, o.BinnedBox);
     std::swap(this->Cache, o.Cache);
   }
 
