@@ -1687,10 +1687,15 @@ public:
         visit(0.5 * (a + b), 0);
         visit(0.5 * (b + c), 1);
         visit(0.5 * (c + a), 2);
+        // Row by row, every other row backwards: each sample next to the last one, whose input
+        // triangle (the hint) is then mostly the one the cheap test needs.
         for (int u = 0; u <= n; ++u)
-          for (int v = 0; u + v <= n; ++v)
+          for (int i = 0; u + i <= n; ++i)
+          {
+            const int v = u % 2 ? n - u - i : i;
             visit(a + (b - a) * (static_cast<double>(u) / n) + (c - a) * (static_cast<double>(v) / n),
               v == 0 ? 0 : (u + v == n ? 1 : (u == 0 ? 2 : -1)));
+          }
         // The point to insert: on the side of the input facing the way the triangle faces.
         if (w > this->Eps * this->Eps)
         {
