@@ -31,6 +31,25 @@ public:
     else
       vtkSMPTools::For(first, last, std::max<vtkIdType>(8192, (last - first) / 64), f);
   }
+
+  /// std::sort with both halves sorted at once on the threads, then merged (VTK's STDThread
+  /// backend sorts on one thread). Elements that compare equal may come out in another order
+  /// than std::sort would leave them: for orders where equal elements are alike.
+  template <typename Iterator>
+  static void Sort(Iterator first, Iterator last)
+  {
+    if (last - first < 100000)
+    {
+      std::sort(first, last);
+      return;
+    }
+    const Iterator middle = first + (last - first) / 2;
+    vtkSMPTools::For(0, 2, 1, [&](vtkIdType h0, vtkIdType h1) {
+      for (vtkIdType h = h0; h < h1; ++h)
+        std::sort(h == 0 ? first : middle, h == 0 ? middle : last);
+    });
+    std::inplace_merge(first, middle, last);
+  }
 };
 
 #endif

@@ -1174,7 +1174,7 @@ public:
     std::vector<Candidate> cand;
     for (const auto& local : found)
       cand.insert(cand.end(), local.begin(), local.end());
-    std::sort(cand.begin(), cand.end());
+    amThreading::Sort(cand.begin(), cand.end());
     cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
     std::fill(this->Dirty.begin(), this->Dirty.end(), 0);
     // Two workers, one on each side of the split plane (see OnTwoWorkers): a collapse changes
@@ -1361,19 +1361,27 @@ public:
     // triangles of one orientation is the half-edge a -> b with a < b of one of them; a junction
     // edge may come more than once, and then its copies are neighbours in that order. (An edge
     // whose two triangles disagree on their orientation may be missed: Flip leaves those.)
-    std::vector<std::pair<unsigned long long, std::pair<int, int>>> order;
-    for (size_t t = 0; t < this->T.size(); ++t)
-      if (this->T[t].Alive)
-        for (int k = 0; k < 3; ++k)
-        {
-          const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
-          if ((a < b || this->Kind[a] != amSurfaceMesh::Surface || this->Kind[b] != amSurfaceMesh::Surface) &&
-            (!onlyTouched || this->FlipDirty[a] || this->FlipDirty[b]))
-            order.push_back({ this->MortonCode(0.5 * (this->P[a] + this->P[b]), this->BinSize),
-              { std::min(a, b), std::max(a, b) } });
-        }
+    // (Gathered on the threads, sorted whole.)
+    using Edge = std::pair<unsigned long long, std::pair<int, int>>;
+    vtkSMPThreadLocal<std::vector<Edge>> found;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(this->T.size()), [&](vtkIdType t0, vtkIdType t1) {
+      auto& local = found.Local();
+      for (vtkIdType t = t0; t < t1; ++t)
+        if (this->T[t].Alive)
+          for (int k = 0; k < 3; ++k)
+          {
+            const int a = this->T[t].V[k], b = this->T[t].V[(k + 1) % 3];
+            if ((a < b || this->Kind[a] != amSurfaceMesh::Surface || this->Kind[b] != amSurfaceMesh::Surface) &&
+              (!onlyTouched || this->FlipDirty[a] || this->FlipDirty[b]))
+              local.push_back({ this->MortonCode(0.5 * (this->P[a] + this->P[b]), this->BinSize),
+                { std::min(a, b), std::max(a, b) } });
+          }
+    });
+    std::vector<Edge> order;
+    for (const auto& local : found)
+      order.insert(order.end(), local.begin(), local.end());
     std::fill(this->FlipDirty.begin(), this->FlipDirty.end(), 0);
-    std::sort(order.begin(), order.end());
+    amThreading::Sort(order.begin(), order.end());
     order.erase(std::unique(order.begin(), order.end()), order.end());
     std::vector<std::pair<int, int>> edges(order.size());
     for (size_t i = 0; i < order.size(); ++i)
@@ -1403,7 +1411,7 @@ public:
     for (size_t v = 0; v < this->P.size(); ++v)
       if (this->VAlive[v] && this->Kind[v] == amSurfaceMesh::Surface && !this->VT[v].empty())
         order.push_back({ this->MortonCode(this->P[v], this->BinSize), static_cast<int>(v) });
-    std::sort(order.begin(), order.end());
+    amThreading::Sort(order.begin(), order.end());
     return this->OnTwoWorkers(
       order.size(), [&](size_t i) { return this->ZoneAt(this->P[order[i].second]); },
       [&](size_t i) { return this->Relax(order[i].second); });
@@ -1568,13 +1576,19 @@ public:
             changedIds[this->T[t].Sheet].push_back(static_cast<int>(t));
           }
         }
-      for (int s = 0; s < nSheets; ++s)
-      {
-        cur[s].Build(pts, tris[s]);
-        changed[s].Build(pts, changedTris[s]);
-        if (this->Cache.Valid)
-          changedNear[s].Build(this->RefSamples[s], 2.0 * this->Eps, pts, changedTris[s]);
-      }
+      // The whole surface on one thread, what changed on the other (read only where the cache
+      // is valid: the first Measure queries the whole surface everywhere).
+      vtkSMPTools::For(0, 2, 1, [&](vtkIdType j0, vtkIdType j1) {
+        for (vtkIdType j = j0; j < j1; ++j)
+          for (int s = 0; s < nSheets; ++s)
+            if (j == 0)
+              cur[s].Build(pts, tris[s]);
+            else if (this->Cache.Valid)
+            {
+              changed[s].Build(pts, changedTris[s]);
+              changedNear[s].Build(this->RefSamples[s], 2.0 * this->Eps, pts, changedTris[s]);
+            }
+      });
     }
     MeasureCache& cache = this->Cache;
     cache.D2.resize(static_cast<size_t>(nSheets));
@@ -2117,36 +2131,44 @@ int amMetricRemeshing::RequestData(
   r.RefSamples.resize(static_cast<size_t>(nSheets));
   {
     std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets));
-    std::vector<std::vector<char>> seen(static_cast<size_t>(nSheets));
-    // Each edge of an interface once: an edge inside one interface is flagged; a junction edge
-    // (few) is looked up with its interface.
-    std::vector<char> edgeSeen(mesh.Edges.size(), 0);
-    std::set<std::pair<vtkIdType, int>> junctionSeen;
     for (const Tri& t : r.T)
-    {
       tris[t.Sheet].push_back({ t.V[0], t.V[1], t.V[2] });
-      r.RefSamples[t.Sheet].push_back((r.P[t.V[0]] + r.P[t.V[1]] + r.P[t.V[2]]) / 3.0);
-      for (int k = 0; k < 3; ++k)
+    // The locators on one thread, the samples on the other.
+    auto samples = [&]() {
+      std::vector<std::vector<char>> seen(static_cast<size_t>(nSheets));
+      // Each edge of an interface once: an edge inside one interface is flagged; a junction edge
+      // (few) is looked up with its interface.
+      std::vector<char> edgeSeen(mesh.Edges.size(), 0);
+      std::set<std::pair<vtkIdType, int>> junctionSeen;
+      for (const Tri& t : r.T)
       {
-        const vtkIdType e = mesh.FindEdge(t.V[k], t.V[(k + 1) % 3]);
-        const bool first = mesh.FeatureEdge[e] ? junctionSeen.insert({ e, t.Sheet }).second : !edgeSeen[e];
-        edgeSeen[e] = 1;
-        if (first)
-          r.RefSamples[t.Sheet].push_back(0.5 * (r.P[t.V[k]] + r.P[t.V[(k + 1) % 3]]));
-      }
-      auto& s = seen[t.Sheet];
-      if (s.empty())
-        s.assign(static_cast<size_t>(np), 0);
-      for (int k = 0; k < 3; ++k)
-        if (!s[t.V[k]])
+        r.RefSamples[t.Sheet].push_back((r.P[t.V[0]] + r.P[t.V[1]] + r.P[t.V[2]]) / 3.0);
+        for (int k = 0; k < 3; ++k)
         {
-          s[t.V[k]] = 1;
-          r.RefSamples[t.Sheet].push_back(r.P[t.V[k]]);
+          const vtkIdType e = mesh.FindEdge(t.V[k], t.V[(k + 1) % 3]);
+          const bool first = mesh.FeatureEdge[e] ? junctionSeen.insert({ e, t.Sheet }).second : !edgeSeen[e];
+          edgeSeen[e] = 1;
+          if (first)
+            r.RefSamples[t.Sheet].push_back(0.5 * (r.P[t.V[k]] + r.P[t.V[(k + 1) % 3]]));
         }
-    }
-    vtkSMPTools::For(0, nSheets, [&](vtkIdType s0, vtkIdType s1) {
-      for (vtkIdType s = s0; s < s1; ++s)
-        r.Ref[s].Build(mesh.Points, tris[s]);
+        auto& s = seen[t.Sheet];
+        if (s.empty())
+          s.assign(static_cast<size_t>(np), 0);
+        for (int k = 0; k < 3; ++k)
+          if (!s[t.V[k]])
+          {
+            s[t.V[k]] = 1;
+            r.RefSamples[t.Sheet].push_back(r.P[t.V[k]]);
+          }
+      }
+    };
+    vtkSMPTools::For(0, 2, 1, [&](vtkIdType j0, vtkIdType j1) {
+      for (vtkIdType j = j0; j < j1; ++j)
+        if (j == 0)
+          for (int s = 0; s < nSheets; ++s)
+            r.Ref[s].Build(mesh.Points, tris[s]);
+        else
+          samples();
     });
   }
   r.InputSheets.resize(static_cast<size_t>(np));
