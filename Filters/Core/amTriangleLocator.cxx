@@ -1,5 +1,6 @@
 #include "amTriangleLocator.h"
 
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,62 +44,70 @@ void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
     this->N[d] = std::max(1, static_cast<int>(std::floor((hi[d] - this->Origin[d]) / h)) + 1);
   }
   const vtkIdType nb = static_cast<vtkIdType>(this->N[0]) * this->N[1] * this->N[2];
-  auto binRange = [&](vtkIdType t, int b0[3], int b1[3]) {
-    for (int d = 0; d < 3; ++d)
-    {
-      double mn = std::numeric_limits<double>::max(), mx = -mn;
-      for (vtkIdType v : triangles[t])
-      {
-        mn = std::min(mn, points[v][d]);
-        mx = std::max(mx, points[v][d]);
-      }
-      b0[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mn - this->Origin[d]) / h)));
-      b1[d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mx - this->Origin[d]) / h)));
-    }
-  };
+  // Per triangle (on the threads): its record and its range of bins (lo 0..2, hi 3..5).
+  std::vector<std::array<int, 6>> range(static_cast<size_t>(nt));
   this->Triangles.resize(static_cast<size_t>(nt));
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    Record& r = this->Triangles[t];
-    const double *a = points[triangles[t][0]].data(), *b = points[triangles[t][1]].data(),
-                 *c = points[triangles[t][2]].data();
-    const std::array<double, 4> sphere = BoundingSphere(a, b, c);
-    std::copy(sphere.begin(), sphere.begin() + 3, r.Centre);
-    r.Radius = sphere[3];
-    const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-    const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-    r.Normal[0] = u[1] * v[2] - u[2] * v[1];
-    r.Normal[1] = u[2] * v[0] - u[0] * v[2];
-    r.Normal[2] = u[0] * v[1] - u[1] * v[0];
-    for (int d = 0; d < 3; ++d)
+  vtkSMPTools::For(0, nt, [&](vtkIdType t0, vtkIdType t1) {
+    for (vtkIdType t = t0; t < t1; ++t)
     {
-      r.Corner[0][d] = a[d];
-      r.Corner[1][d] = b[d];
-      r.Corner[2][d] = c[d];
+      for (int d = 0; d < 3; ++d)
+      {
+        double mn = std::numeric_limits<double>::max(), mx = -mn;
+        for (vtkIdType v : triangles[t])
+        {
+          mn = std::min(mn, points[v][d]);
+          mx = std::max(mx, points[v][d]);
+        }
+        range[t][d] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mn - this->Origin[d]) / h)));
+        range[t][d + 3] = std::min(this->N[d] - 1, std::max(0, static_cast<int>((mx - this->Origin[d]) / h)));
+      }
+      Record& r = this->Triangles[t];
+      const double *a = points[triangles[t][0]].data(), *b = points[triangles[t][1]].data(),
+                   *c = points[triangles[t][2]].data();
+      const std::array<double, 4> sphere = BoundingSphere(a, b, c);
+      std::copy(sphere.begin(), sphere.begin() + 3, r.Centre);
+      r.Radius = sphere[3];
+      const double u[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double v[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      r.Normal[0] = u[1] * v[2] - u[2] * v[1];
+      r.Normal[1] = u[2] * v[0] - u[0] * v[2];
+      r.Normal[2] = u[0] * v[1] - u[1] * v[0];
+      for (int d = 0; d < 3; ++d)
+      {
+        r.Corner[0][d] = a[d];
+        r.Corner[1][d] = b[d];
+        r.Corner[2][d] = c[d];
+      }
     }
-  }
+  });
+  // Counted and filled on the threads, each for a slab of bins along z (the bins of a slab
+  // are consecutive; each thread takes the triangles in order, so every bin lists them in
+  // order whatever the number of threads).
   this->BinStart.assign(static_cast<size_t>(nb + 1), 0);
-  int b0[3], b1[3];
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    binRange(t, b0, b1);
-    for (int k = b0[2]; k <= b1[2]; ++k)
-      for (int j = b0[1]; j <= b1[1]; ++j)
-        for (int i = b0[0]; i <= b1[0]; ++i)
-          ++this->BinStart[(static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i + 1];
-  }
+  const int slabs = std::min(this->N[2], std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()));
+  auto forSlabs = [&](auto&& visit) {
+    vtkSMPTools::For(0, slabs, 1, [&](vtkIdType s0, vtkIdType s1) {
+      for (vtkIdType slab = s0; slab < s1; ++slab)
+      {
+        const int k0 = static_cast<int>(slab * this->N[2] / slabs),
+                  k1 = static_cast<int>((slab + 1) * this->N[2] / slabs);
+        for (vtkIdType t = 0; t < nt; ++t)
+        {
+          const std::array<int, 6>& b = range[t];
+          for (int k = std::max(b[2], k0); k <= std::min(b[5], k1 - 1); ++k)
+            for (int j = b[1]; j <= b[4]; ++j)
+              for (int i = b[0]; i <= b[3]; ++i)
+                visit((static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i, t);
+        }
+      }
+    });
+  };
+  forSlabs([&](vtkIdType bin, vtkIdType) { ++this->BinStart[bin + 1]; });
   for (vtkIdType b = 0; b < nb; ++b)
     this->BinStart[b + 1] += this->BinStart[b];
   this->BinTriangles.resize(static_cast<size_t>(this->BinStart.back()));
   std::vector<vtkIdType> fill(this->BinStart.begin(), this->BinStart.end() - 1);
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    binRange(t, b0, b1);
-    for (int k = b0[2]; k <= b1[2]; ++k)
-      for (int j = b0[1]; j <= b1[1]; ++j)
-        for (int i = b0[0]; i <= b1[0]; ++i)
-          this->BinTriangles[fill[(static_cast<vtkIdType>(k) * this->N[1] + j) * this->N[0] + i]++] = t;
-  }
+  forSlabs([&](vtkIdType bin, vtkIdType t) { this->BinTriangles[fill[bin]++] = t; });
 }
 
 std::array<double, 4> amTriangleLocator::BoundingSphere(const double a[3], const double b[3], const double c[3])

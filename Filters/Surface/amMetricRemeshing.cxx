@@ -442,12 +442,26 @@ public:
   /// The bin size that fits the triangles now: twice their mean edge length.
   double FittingBinSize() const
   {
+    // Summed in blocks of a fixed size on the threads, then the blocks in order: the same sum
+    // whatever the number of threads (every pass asks: serially this took a tenth of a second
+    // in all on the outer surface).
+    const size_t block = 1 << 14, nBlocks = (this->T.size() + block - 1) / block;
+    std::vector<double> sums(nBlocks, 0.0);
+    std::vector<long long> counts(nBlocks, 0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(nBlocks), [&](vtkIdType b0, vtkIdType b1) {
+      for (vtkIdType b = b0; b < b1; ++b)
+        for (size_t i = b * block; i < std::min(this->T.size(), static_cast<size_t>(b + 1) * block); ++i)
+          if (this->T[i].Alive)
+            for (int k = 0; k < 3; ++k, ++counts[b])
+              sums[b] += (this->P[this->T[i].V[(k + 1) % 3]] - this->P[this->T[i].V[k]]).norm();
+    });
     double sum = 0;
     long long n = 0;
-    for (const Tri& t : this->T)
-      if (t.Alive)
-        for (int k = 0; k < 3; ++k, ++n)
-          sum += (this->P[t.V[(k + 1) % 3]] - this->P[t.V[k]]).norm();
+    for (size_t b = 0; b < nBlocks; ++b)
+    {
+      sum += sums[b];
+      n += counts[b];
+    }
     return n ? std::max(2.0 * sum / n, 1e-6) : 1.0;
   }
   void RebuildBins()
@@ -471,14 +485,17 @@ public:
       std::nth_element(along.begin(), along.begin() + along.size() / 2, along.end());
       this->SplitIndex = static_cast<long long>(std::floor(along[along.size() / 2] / this->BinSize));
     }
-    for (auto& bins : this->Bins)
-      bins.clear();
-    // Filled on two threads, one for the bins before the split plane and on it, one for those
-    // after it (each bin lists its triangles in their order, as BinTriangle would one by one).
+    // Emptied and filled on two threads, one for the bins before the split plane and on it, one
+    // for those after it (each bin lists its triangles in their order, as BinTriangle would one
+    // by one).
     this->BinnedIn.assign(this->T.size(), { 0, 0, 0, -1, -1, -1 });
     this->BinnedBox.assign(this->T.size(), { 1, 1, 1, 0, 0, 0 });
     vtkSMPTools::For(0, 2, 1, [&](vtkIdType z0, vtkIdType z1) {
       for (vtkIdType z = z0; z < z1; ++z)
+      {
+        for (int zone : { 0, 1, 2 })
+          if ((zone == 1) == (z == 1))
+            this->Bins[zone].clear();
         for (size_t t = 0; t < this->T.size(); ++t)
           if (this->T[t].Alive)
           {
@@ -490,6 +507,7 @@ public:
                 this->Bins[zone][key].push_back(static_cast<int>(t));
             });
           }
+      }
     });
   }
   /// Whether the vertices of q not shared with p lie strictly on one side of p's plane.
