@@ -77,7 +77,8 @@ void amSurfaceMesh::BuildTopology()
   const vtkIdType nt = this->NumberOfTriangles(), np = this->NumberOfPoints();
   // Edges: the half-edges (a, b, triangle), a < b, in the order of (a, b, triangle): counted
   // into buckets by a in triangle order, then each bucket (a vertex's few edges) sorted by b
-  // with a stable insertion sort. (A comparison sort of them all took half of this.)
+  // with a stable insertion sort. (A comparison sort of them all took half of this function's
+  // time on a 570 k-triangle surface.)
   std::vector<vtkIdType> bucket(static_cast<size_t>(np + 1), 0);
   for (const auto& t : this->Triangles)
     for (int k = 0; k < 3; ++k)

@@ -326,8 +326,8 @@ public:
   /// each pass, so that no entry names a triangle the other worker changes).
   std::vector<std::array<int, 6>> BinnedIn;
   /// Per triangle slot: its bounding box when it was last binned (lo 0..2, hi 3..5), rounded
-  /// outwards to floats: the crossing check's first test reads this one small record instead of
-  /// the triangle and its three corners (which took most of that check's time).
+  /// outwards to floats: the crossing check's first test reads this one small record; the
+  /// triangle and its three corners are read only for the triangles that pass it.
   std::vector<std::array<float, 6>> BinnedBox;
   std::array<int, 6> BinRange(int t, std::array<float, 6>* box = nullptr) const
   {
@@ -443,8 +443,7 @@ public:
   double FittingBinSize() const
   {
     // Summed in blocks of a fixed size on the threads, then the blocks in order: the same sum
-    // whatever the number of threads (every pass asks: serially this took a tenth of a second
-    // in all on the outer surface).
+    // whatever the number of threads (every pass asks, and most slots are dead ones).
     const size_t block = 1 << 14, nBlocks = (this->T.size() + block - 1) / block;
     std::vector<double> sums(nBlocks, 0.0);
     std::vector<long long> counts(nBlocks, 0);
