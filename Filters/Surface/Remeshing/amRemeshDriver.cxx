@@ -1,0 +1,114 @@
+// The remesher's driver: iterations of collapses, flips and relaxation, then the Hausdorff bound
+// enforced by insertions and the small angles cleaned where that keeps it.
+#include "amRemesher.h"
+
+#include <algorithm>
+
+namespace amRemesh
+{
+Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>& progress)
+{
+  auto report = [&progress](double fraction) {
+    if (progress)
+      progress(fraction);
+  };
+  for (int it = 0; it < iterations; ++it)
+  {
+    this->Grid.Rebuild();
+    for (int pass = 0; pass < 8; ++pass)
+    {
+      if (pass > 0)
+        this->Grid.RebuildIfStale();
+      if (this->CollapsePass() == 0)
+        break;
+    }
+    for (int pass = 0; pass < 3; ++pass)
+      if (this->FlipPass(pass > 0) == 0)
+        break;
+    this->RelaxPass();
+    report(0.05 + 0.75 * (it + 1) / iterations);
+  }
+  this->FlipPass();
+  Result result;
+  double& h = result.Hausdorff;
+  double& upper = result.UpperBound;
+  long long& inserted = result.Inserted;
+  h = this->Enforce(upper, inserted);
+  report(0.85);
+  // Triangles with small angles that the insertions left (no tetrahedron on them can be good):
+  // removed where a flip or collapse allows it, then the bound enforced again. Kept only if the
+  // distance ends no worse than before (or within the tolerance), fewer triangles have small
+  // angles and no edge got much shorter (where the bound cannot be met, more insertion rounds
+  // would only refine towards a point).
+  for (int attempt = 0; attempt < 3; ++attempt)
+  {
+    long long smallBefore, smallAfter;
+    double shortestBefore, shortestAfter;
+    this->Mesh.AngleSummary(smallBefore, shortestBefore);
+    if (smallBefore == 0)
+      break; // nothing to clean: no copy of the surface for an undo
+    Snapshot before = this->Save();
+    const double hBefore = h, upperBefore = upper;
+    const long long insertedBefore = inserted;
+    int cleaned = 0;
+    for (int round = 0; round < 3; ++round)
+    {
+      const int n = this->SmallAngleCleanup();
+      cleaned += n;
+      if (n == 0)
+        break;
+    }
+    if (cleaned == 0)
+      break;
+    h = this->Enforce(upper, inserted);
+    this->Mesh.AngleSummary(smallAfter, shortestAfter);
+    if (h > std::max(hBefore, this->In.Eps) || smallAfter >= smallBefore || shortestAfter < 0.5 * shortestBefore)
+    {
+      this->Restore(std::move(before));
+      h = hBefore;
+      upper = upperBefore;
+      inserted = insertedBefore;
+      break;
+    }
+  }
+  return result;
+}
+
+double Remesher::Enforce(double& upper, long long& inserted)
+{
+  std::vector<std::pair<int, Vec3>> insert;
+  std::vector<int> edgeOf;
+  double h = this->Hausdorff.Measure(this->Mesh, this->In, upper, insert, edgeOf);
+  this->Grid.Rebuild();
+  for (int round = 0; round < 30 && !insert.empty(); ++round)
+  {
+    long long done = 0;
+    std::vector<int> blocked;
+    for (size_t i = 0; i < insert.size(); ++i)
+    {
+      const int t = insert[i].first;
+      // Longest-edge bisection towards the input first (it keeps the angles: the far point
+      // itself, inserted, often lands near a corner or an edge and leaves slivers), the far
+      // point itself where the bisection is refused (its edge split there when it lies on one,
+      // else or where that is refused inserted, or a vertex moved onto it).
+      const bool ok = this->Refine(t) > 0 || (edgeOf[i] >= 0 && this->SplitEdge(t, edgeOf[i], insert[i].second)) ||
+        this->Insert(t, insert[i].second) || this->MoveVertexNearest(t, insert[i].second);
+      done += ok;
+      if (!ok)
+      {
+        blocked.push_back(insert[i].first);
+        blocked.push_back(this->W().LastHit);
+      }
+    }
+    // Refused where a triangle is in the way (or the new ones would fold): refine both, towards
+    // the input where nothing crosses.
+    for (int t : blocked)
+      done += this->Refine(t);
+    inserted += done;
+    h = this->Hausdorff.Measure(this->Mesh, this->In, upper, insert, edgeOf);
+    if (done == 0)
+      break;
+  }
+  return h;
+}
+}

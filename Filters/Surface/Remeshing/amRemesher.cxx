@@ -1,0 +1,117 @@
+#include "amRemesher.h"
+
+#include <map>
+#include <utility>
+
+namespace amRemesh
+{
+Remesher::Remesher()
+  : Grid(Mesh)
+  , Crossing(Mesh, Grid)
+  , Approximation(Mesh, In)
+{
+}
+
+void Remesher::Setup(const amSurfaceMesh& mesh, const std::vector<Mat3>& metric, double eps)
+{
+  Surface& S = this->Mesh;
+  this->In.Eps = eps;
+  const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
+  S.P.resize(static_cast<size_t>(np));
+  for (vtkIdType v = 0; v < np; ++v)
+    S.P[v] = Vec3(mesh.Points[v].data());
+  S.M = metric;
+  S.Kind = mesh.Kind;
+  // Each vertex stands for itself; the interface is set below for surface vertices.
+  S.Cluster.resize(static_cast<size_t>(np));
+  for (vtkIdType v = 0; v < np; ++v)
+    S.Cluster[v].assign(1, { static_cast<int>(v), -1, -1 });
+  S.VAlive.assign(static_cast<size_t>(np), 1);
+  S.VT.resize(static_cast<size_t>(np));
+  // One sheet per interface: per pair of labels (unordered).
+  std::map<std::pair<int, int>, int> sheetIds;
+  const bool labelled = !mesh.Labels.empty();
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    Triangle tri;
+    for (int k = 0; k < 3; ++k)
+      tri.V[k] = static_cast<int>(mesh.Triangles[t][k]);
+    tri.Labels[0] = labelled ? mesh.Labels[t][0] : 0;
+    tri.Labels[1] = labelled ? mesh.Labels[t][1] : 0;
+    const std::pair<int, int> key(std::min(tri.Labels[0], tri.Labels[1]), std::max(tri.Labels[0], tri.Labels[1]));
+    auto it = sheetIds.emplace(key, static_cast<int>(sheetIds.size())).first;
+    tri.Sheet = it->second;
+    tri.Alive = true;
+    S.T.push_back(tri);
+    for (int k = 0; k < 3; ++k)
+      S.VT[tri.V[k]].push_back(static_cast<int>(t));
+  }
+  for (vtkIdType v = 0; v < np; ++v)
+    if (S.Kind[v] == amSurfaceMesh::Surface && !S.VT[v].empty())
+      S.Cluster[v][0].Sheet = S.T[S.VT[v][0]].Sheet;
+  this->In.Build(mesh, S.T, static_cast<int>(sheetIds.size()));
+  this->Curves.Build(mesh, S);
+}
+
+Remesher::Snapshot Remesher::Save() const
+{
+  Snapshot s{ this->Mesh, {} };
+  for (int w = 0; w < 2; ++w)
+    s.Counters[w] = { this->Workers[w].Collapses, this->Workers[w].Moves, this->Workers[w].Flips };
+  return s;
+}
+
+void Remesher::Restore(Snapshot&& snapshot)
+{
+  this->Mesh = std::move(snapshot.Mesh);
+  for (int w = 0; w < 2; ++w)
+  {
+    this->Workers[w].Collapses = snapshot.Counters[w][0];
+    this->Workers[w].Moves = snapshot.Counters[w][1];
+    this->Workers[w].Flips = snapshot.Counters[w][2];
+  }
+}
+
+void Remesher::Detach(int t)
+{
+  this->Grid.Remove(t);
+  this->Mesh.T[t].Alive = false;
+  for (int k = 0; k < 3; ++k)
+  {
+    auto& l = this->Mesh.VT[this->Mesh.T[t].V[k]];
+    l.erase(std::remove(l.begin(), l.end(), t), l.end());
+  }
+}
+
+int Remesher::AddTriangle(int a, int b, int c, const Triangle& like)
+{
+  Triangle t = like;
+  t.V[0] = a;
+  t.V[1] = b;
+  t.V[2] = c;
+  t.Alive = true;
+  this->Mesh.T.push_back(t);
+  const int id = static_cast<int>(this->Mesh.T.size()) - 1;
+  this->Mesh.VT[a].push_back(id);
+  this->Mesh.VT[b].push_back(id);
+  this->Mesh.VT[c].push_back(id);
+  this->Grid.Add(id);
+  return id;
+}
+
+/// Whether the stars of a and b lie in zone z's bins.
+bool Remesher::StarsInZone(int a, int b, int z) const
+{
+  if (!this->Mesh.VAlive[a] || !this->Mesh.VAlive[b])
+    return false;
+  Vec3 lo = this->Mesh.P[a], hi = this->Mesh.P[a];
+  for (int v : { a, b })
+    for (int t : this->Mesh.VT[v])
+      for (int k = 0; k < 3; ++k)
+      {
+        lo = lo.cwiseMin(this->Mesh.P[this->Mesh.T[t].V[k]]);
+        hi = hi.cwiseMax(this->Mesh.P[this->Mesh.T[t].V[k]]);
+      }
+  return this->Grid.BoxInZone(lo, hi, z);
+}
+}
