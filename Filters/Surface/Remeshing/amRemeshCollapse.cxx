@@ -43,8 +43,8 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
   if (apex != common || apex.size() != edge.size())
     return false;
   // A closed fragment of five vertices or fewer is not collapsed further: as a tetrahedron it
-  // is flat enough to turn inside out when its vertices are moved onto the input (seen on the
-  // frog's thin organs: inverted bubbles whose labels then contradict the volume around them).
+  // is flat enough to turn inside out when its vertices are moved onto the input (an inverted
+  // bubble whose labels contradict the volume around it, which Tetrahedralize refuses).
   // (A worker does not search: it only takes edges whose components are surely larger.)
   if (na.size() < 5 && (CurrentZone() < 0 ? this->Mesh.ComponentAtMost(a, 5) : !this->Parts.SurelyMoreThan(a, 5, this->W(), CurrentZone())))
     return false; // a and five neighbours are six already
@@ -91,8 +91,8 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
     pos.push_back(p);
     sheets.push_back(this->Mesh.T[t].Sheet);
   }
-  // The distance samples last: they cost most, and one of the checks above refuses a third of
-  // the collapses tried (outer phantom surface). Where b stays, its edges stay.
+  // The distance samples last: they cost most, and the cheaper checks above refuse many
+  // collapses first. Where b stays, its edges stay.
   static const std::vector<int> none;
   if (!this->Approximation.StarNear(ids, pos, sheets, b, to ? none : nb))
     return false;
@@ -141,8 +141,8 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
 
 /// Collapse of an edge between two surface vertices into the point of the input nearest its
 /// middle (on the side its triangles face): where neither end can take the other's triangles
-/// without an edge longer than LongEdge, the middle often can (on the 1 mm phantom 11.1x fewer
-/// triangles than the input instead of 9.7x, at the same Hausdorff distance and angles).
+/// without an edge longer than LongEdge, the middle often can: fewer triangles at the same
+/// Hausdorff distance and angles.
 bool Remesher::CollapseToMiddle(int a, int b, bool& outside)
 {
   outside = false;
@@ -153,8 +153,8 @@ bool Remesher::CollapseToMiddle(int a, int b, bool& outside)
     for (int t : this->Mesh.VT[v])
     {
       n += this->Mesh.Normal(t);
-      // Not beside a junction curve: moving b there made needles across the crease that no
-      // insertion could bring back within Eps (2 mm phantom, uniform 4 mm: 0.61 for 0.5).
+      // Not beside a junction curve: moving b there makes needles across the crease that no
+      // insertion can bring back within Eps.
       for (int k = 0; k < 3; ++k)
         if (this->Mesh.Kind[this->Mesh.T[t].V[k]] != amSurfaceMesh::Surface)
           return false;
