@@ -4,7 +4,7 @@
 Nine clicks (world coordinates, mm), slice by slice with ContourModel Polar, as
 Examples/Pipelines/cardiac_aorta.xml does; the Dice coefficient against the provided TotalSegmentator
 mask (compared in world coordinates) is printed, and the label map written. Exits non-zero if Dice is
-below MIN_DICE; exits 0 with a message when the scan is absent.
+below MIN_DICE; exits 77 (skipped) with a message when the scan is absent.
 
 Usage: /usr/bin/python3 Examples/Python/segment_real_aorta.py [OUTPUT_DIR] [SHARED_DATA_DIR]
 """
@@ -20,7 +20,7 @@ scan = os.path.join(shared, "totalseg_cardiac_ct", "aorta_report", "ct_cropped.n
 mask_file = os.path.join(shared, "totalseg_cardiac_ct", "aorta_report", "aorta.nii.gz")
 if not (os.path.exists(scan) and os.path.exists(mask_file)):
     print("skipped: the cardiac CT is absent (%s)" % scan)
-    sys.exit(0)
+    sys.exit(77)
 os.makedirs(out, exist_ok=True)
 
 ct = anatomesh.amImageReader()

@@ -116,7 +116,7 @@ TEST(ImageReader, FrogUnderstatedCompressedSizeIsRepaired)
   // the shorter part and leaves the last ~1 M voxels undefined. Figures from an independent
   // zlib inflate of the .zraw: sum of all voxels, voxels of label 13 (skeleton) overall and in
   // the last million.
-  AM_REQUIRE_SHARED(path, "vtk_frog_tissue_labels/frogtissue.mhd");
+  AM_REQUIRE_SHARED(path, amTest::FrogLabels);
   vtkNew<amTest::ErrorCatcher> messages;
   vtkNew<amImageReader> reader;
   messages->Watch(reader);

@@ -255,9 +255,7 @@ TEST(LabelSurface, PhantomEveryLabelClosedAndExactVolumes)
 
 TEST(LabelSurface, FrogAllOrgansClosed)
 {
-  const std::string path = amTest::SharedData("vtk_frog_tissue_labels/frogtissue.mhd");
-  if (path.empty())
-    GTEST_SKIP() << "../shared/data/vtk_frog_tissue_labels is absent";
+  AM_REQUIRE_SHARED(path, amTest::FrogLabels);
   vtkNew<amImageReader> reader;
   reader->SetFileName(path.c_str());
   vtkNew<amLabelSurface> ls;

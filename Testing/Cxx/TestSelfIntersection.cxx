@@ -155,9 +155,7 @@ TEST(SelfIntersection, Remeshed)
 
 TEST(SelfIntersection, Frog)
 {
-  const std::string path = amTest::SharedData("vtk_frog_tissue_labels/frogtissue.mhd");
-  if (path.empty())
-    GTEST_SKIP() << "../shared/data/vtk_frog_tissue_labels is absent";
+  AM_REQUIRE_SHARED(path, amTest::FrogLabels);
   vtkNew<amImageReader> reader;
   reader->SetFileName(path.c_str());
   vtkNew<amLabelSurface> ls;
@@ -171,9 +169,7 @@ TEST(SelfIntersection, FrogSmoothedAcrossInterfaces)
 {
   // The frog's voxel-thin structures put two interfaces a voxel apart; smoothing moves them into
   // each other unless the untangling looks at the whole surface, not region by region.
-  const std::string path = amTest::SharedData("vtk_frog_tissue_labels/frogtissue.mhd");
-  if (path.empty())
-    GTEST_SKIP() << "../shared/data/vtk_frog_tissue_labels is absent";
+  AM_REQUIRE_SHARED(path, amTest::FrogLabels);
   vtkNew<amImageReader> reader;
   reader->SetFileName(path.c_str());
   vtkNew<amLabelSurface> ls;

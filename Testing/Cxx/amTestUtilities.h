@@ -55,6 +55,9 @@ inline std::string SharedData(const std::string& relative)
   return Exists(path) ? path : std::string();
 }
 
+/// The frog's tissue label map (15 organs) in ../shared/data.
+constexpr const char* FrogLabels = "vtk_frog_tissue_labels/frogtissue.mhd";
+
 inline std::string TempPath(const std::string& name)
 {
   return std::string(ANATOMESH_TEST_TMP) + "/" + name;

@@ -12,18 +12,43 @@ pipelines::
 ``anatomesh.pipeline`` runs pipeline XML files (also the ``anatomesh`` command), and
 ``anatomesh.catalogue`` reads the filter catalogue (the ParaView server-manager XML).
 """
-import importlib as _importlib
-import os as _os
-import pkgutil as _pkgutil
-
 # The wrapped modules import ParaView's (or VTK's) vtkmodules themselves.
+from .AnatomeshFiltersCleaning import amMorphologyCleaning
+from .AnatomeshFiltersSegmentation import amIntensityClassifier, amLabelOverlap, amSnakeSegmentation
+from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential
+from .AnatomeshFiltersSources import amThoraxPhantomSource
+from .AnatomeshFiltersSurface import (
+    amCurvatureMetric,
+    amLabelSurface,
+    amMetricRemeshing,
+    amSurfaceDistance,
+    amSurfaceSmoothing,
+)
+from .AnatomeshFiltersVolume import amLabelMapTetrahedralize, amMeshQuality, amTetrahedralize
+from .AnatomeshIOImage import amImageReader, amImageWriter
+from .AnatomeshIOMesh import amGmshWriter, amMeditReader, amMeditWriter
+
 __version__ = "0.1.0"
 
-_here = _os.path.dirname(__file__)
-for _info in sorted(_pkgutil.iter_modules([_here]), key=lambda m: m.name):
-    if _info.name.startswith("Anatomesh"):
-        _module = _importlib.import_module("." + _info.name, __name__)
-        for _name in dir(_module):
-            if _name.startswith("am"):
-                globals()[_name] = getattr(_module, _name)
-del _info, _module, _name
+__all__ = [
+    "amCurvatureMetric",
+    "amFitzHughNagumoSolver",
+    "amGmshWriter",
+    "amImageReader",
+    "amImageWriter",
+    "amIntensityClassifier",
+    "amLabelMapTetrahedralize",
+    "amLabelOverlap",
+    "amLabelSurface",
+    "amMeditReader",
+    "amMeditWriter",
+    "amMeshQuality",
+    "amMetricRemeshing",
+    "amMorphologyCleaning",
+    "amSnakeSegmentation",
+    "amSurfaceDistance",
+    "amSurfaceSmoothing",
+    "amTetrahedralize",
+    "amThoraxPhantomSource",
+    "amTorsoPotential",
+]

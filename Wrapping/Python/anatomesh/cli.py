@@ -13,11 +13,6 @@ import sys
 import time
 
 
-def _default_pipeline():
-    here = os.path.dirname(os.path.abspath(__file__))
-    return os.path.join(here, "pipelines", "thorax.xml")
-
-
 class _Progress:
     """One line per filter on a terminal (\\r-updated), every 25 % otherwise."""
 
