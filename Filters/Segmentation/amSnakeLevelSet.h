@@ -1,0 +1,144 @@
+/**
+ * @file    amSnakeLevelSet.h
+ * @brief   The level-set steps of the snake tracker (ITK): a threshold level set evolved from an
+ *          initial contour, signed distances, component filtering and the half-contrast refinement
+ *          of a section. Private to FiltersSegmentation; included by the tracker's sources only.
+ */
+#ifndef amSnakeLevelSet_h
+#define amSnakeLevelSet_h
+
+#include <itkConnectedComponentImageFilter.h>
+#include <itkSignedMaurerDistanceMapImageFilter.h>
+#include <itkThresholdSegmentationLevelSetImageFilter.h>
+
+#include <algorithm>
+#include <functional>
+#include <set>
+
+namespace amSnakeLevelSet
+{
+template <unsigned D>
+using FloatImage = itk::Image<float, D>;
+template <unsigned D>
+using MaskImage = itk::Image<unsigned char, D>;
+
+struct Parameters
+{
+  double Propagation, Curvature, Edge, RMS;
+};
+
+/// Evolve a threshold level set (ITK's ThresholdSegmentationLevelSetImageFilter) from phi0
+/// (negative inside) on 'feature'; returns the inside mask.
+template <unsigned D>
+typename MaskImage<D>::Pointer Evolve(FloatImage<D>* feature, FloatImage<D>* phi0, double lo, double hi,
+  const Parameters& p, int iterations, const std::function<void(double)>& progress)
+{
+  using Filter = itk::ThresholdSegmentationLevelSetImageFilter<FloatImage<D>, FloatImage<D>>;
+  auto ls = Filter::New();
+  ls->SetInput(phi0);
+  ls->SetFeatureImage(feature);
+  ls->SetLowerThreshold(lo);
+  ls->SetUpperThreshold(hi);
+  ls->SetPropagationScaling(p.Propagation);
+  ls->SetCurvatureScaling(p.Curvature);
+  ls->SetEdgeWeight(p.Edge);
+  ls->SetMaximumRMSError(p.RMS);
+  ls->SetNumberOfIterations(iterations);
+  if (progress)
+    ls->AddObserver(itk::ProgressEvent(), [&](const itk::EventObject&) { progress(ls->GetProgress()); });
+  ls->Update();
+  auto mask = MaskImage<D>::New();
+  mask->SetRegions(ls->GetOutput()->GetLargestPossibleRegion());
+  mask->CopyInformation(ls->GetOutput());
+  mask->Allocate();
+  const float* phi = ls->GetOutput()->GetBufferPointer();
+  unsigned char* m = mask->GetBufferPointer();
+  const size_t n = ls->GetOutput()->GetLargestPossibleRegion().GetNumberOfPixels();
+  for (size_t i = 0; i < n; ++i)
+    m[i] = phi[i] <= 0.0f ? 1 : 0;
+  return mask;
+}
+
+/// Signed distance (mm) to the mask's boundary, negative inside.
+template <unsigned D>
+typename FloatImage<D>::Pointer SignedDistance(MaskImage<D>* mask)
+{
+  auto dist = itk::SignedMaurerDistanceMapImageFilter<MaskImage<D>, FloatImage<D>>::New();
+  dist->SetInput(mask);
+  dist->SetUseImageSpacing(true);
+  dist->SetSquaredDistance(false);
+  dist->SetInsideIsPositive(false);
+  dist->SetBackgroundValue(0);
+  dist->Update();
+  return dist->GetOutput();
+}
+
+template <unsigned D>
+size_t Count(const MaskImage<D>* m)
+{
+  const size_t n = m->GetLargestPossibleRegion().GetNumberOfPixels();
+  return static_cast<size_t>(std::count(m->GetBufferPointer(), m->GetBufferPointer() + n, 1));
+}
+
+/// Keep the connected components of 'mask' that overlap 'reference'.
+template <unsigned D>
+void KeepOverlapping(MaskImage<D>* mask, const MaskImage<D>* reference)
+{
+  using LabelImage = itk::Image<unsigned int, D>;
+  auto cc = itk::ConnectedComponentImageFilter<MaskImage<D>, LabelImage>::New();
+  cc->SetInput(mask);
+  cc->SetFullyConnected(false);
+  cc->Update();
+  const unsigned* c = cc->GetOutput()->GetBufferPointer();
+  const size_t n = mask->GetLargestPossibleRegion().GetNumberOfPixels();
+  std::set<unsigned> keep;
+  for (size_t i = 0; i < n; ++i)
+    if (reference->GetBufferPointer()[i] && c[i])
+      keep.insert(c[i]);
+  unsigned char* m = mask->GetBufferPointer();
+  for (size_t i = 0; i < n; ++i)
+    m[i] = (c[i] && keep.count(c[i])) ? 1 : 0;
+}
+
+/// Slice-by-slice refinement: move the interval's edge that faces the section's surroundings
+/// half-way between the section's mean and that of a ring 2..4 pixels outside it, and evolve
+/// again from the section. Returns the refined mask (or the input when nothing changes).
+inline MaskImage<2>::Pointer RefineSection(FloatImage<2>* feature, MaskImage<2>* section, double& lo, double& hi,
+  const Parameters& p, int iterations)
+{
+  auto dist = SignedDistance<2>(section);
+  const double px = std::max(feature->GetSpacing()[0], feature->GetSpacing()[1]);
+  const size_t n = feature->GetLargestPossibleRegion().GetNumberOfPixels();
+  const float* f = feature->GetBufferPointer();
+  const float* d = dist->GetBufferPointer();
+  double in = 0, out = 0;
+  long ni = 0, no = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (section->GetBufferPointer()[i])
+    {
+      in += f[i];
+      ++ni;
+    }
+    else if (d[i] > 2.0 * px && d[i] <= 4.0 * px)
+    {
+      out += f[i];
+      ++no;
+    }
+  }
+  if (!ni || !no)
+    return section;
+  const double mi = in / ni, mo = out / no, mid = 0.5 * (mi + mo);
+  if (mo < mi && mid < lo)
+    lo = mid;
+  else if (mo > mi && mid > hi)
+    hi = mid;
+  else
+    return section;
+  auto refined = Evolve<2>(feature, dist, lo, hi, p, iterations, nullptr);
+  KeepOverlapping<2>(refined, section);
+  return refined;
+}
+}
+
+#endif

@@ -1,0 +1,226 @@
+#include "amSnakeTracker.h"
+
+#include "amSnakeLevelSet.h"
+
+#include "vtkSMPTools.h"
+
+#include <itkSmoothingRecursiveGaussianImageFilter.h>
+
+#include <algorithm>
+
+using namespace amSnakeLevelSet;
+
+namespace
+{
+/// An ITK image of the region's size and spacing.
+template <typename Image>
+typename Image::Pointer NewImage(const int size[3], const double spacing[3])
+{
+  auto image = Image::New();
+  typename Image::RegionType region;
+  typename Image::SizeType s = { { static_cast<itk::SizeValueType>(size[0]), static_cast<itk::SizeValueType>(size[1]),
+    static_cast<itk::SizeValueType>(size[2]) } };
+  region.SetSize(s);
+  image->SetRegions(region);
+  typename Image::SpacingType sp;
+  for (int a = 0; a < 3; ++a)
+    sp[a] = spacing[a];
+  image->SetSpacing(sp);
+  image->Allocate();
+  return image;
+}
+}
+
+amSnakeTracker::amSnakeTracker(const Parameters& parameters, const double spacing[3])
+  : P(parameters)
+{
+  std::copy(spacing, spacing + 3, this->Spacing);
+  // The initial contour must span a few voxels, or curvature collapses it before it can grow.
+  this->InitialRadius = std::max(this->P.SeedRadius, 2.5 * std::max(spacing[0], std::max(spacing[1], spacing[2])));
+}
+
+void amSnakeTracker::SetRegion(const int lo[3], const int size[3], const std::vector<float>& intensities)
+{
+  std::copy(lo, lo + 3, this->Lo);
+  std::copy(size, size + 3, this->Size);
+  if (this->P.SmoothingSigma > 0)
+  {
+    auto roi = NewImage<FloatImage<3>>(size, this->Spacing);
+    std::copy(intensities.begin(), intensities.end(), roi->GetBufferPointer());
+    auto smooth = itk::SmoothingRecursiveGaussianImageFilter<FloatImage<3>, FloatImage<3>>::New();
+    smooth->SetInput(roi);
+    smooth->SetSigma(this->P.SmoothingSigma);
+    smooth->Update();
+    const float* f = smooth->GetOutput()->GetBufferPointer();
+    this->Feature.assign(f, f + intensities.size());
+  }
+  else
+    this->Feature = intensities;
+}
+
+void amSnakeTracker::MeasureSeeds(const std::vector<std::array<double, 3>>& seeds)
+{
+  this->Seeds = seeds;
+  this->SeedStats.clear();
+  const int* rd = this->Size;
+  const float* fv = this->Feature.data();
+  double sum = 0, sum2 = 0;
+  long count = 0;
+  for (size_t s = 0; s < seeds.size(); ++s)
+  {
+    const int r[3] = { static_cast<int>(std::ceil(this->P.SeedRadius / this->Spacing[0])),
+      static_cast<int>(std::ceil(this->P.SeedRadius / this->Spacing[1])),
+      static_cast<int>(std::ceil(this->P.SeedRadius / this->Spacing[2])) };
+    const int c[3] = { static_cast<int>(std::lround(seeds[s][0])) - this->Lo[0],
+      static_cast<int>(std::lround(seeds[s][1])) - this->Lo[1], static_cast<int>(std::lround(seeds[s][2])) - this->Lo[2] };
+    double ssum = 0, ssum2 = 0;
+    long scount = 0;
+    for (int k = std::max(0, c[2] - r[2]); k <= std::min(rd[2] - 1, c[2] + r[2]); ++k)
+      for (int j = std::max(0, c[1] - r[1]); j <= std::min(rd[1] - 1, c[1] + r[1]); ++j)
+        for (int i = std::max(0, c[0] - r[0]); i <= std::min(rd[0] - 1, c[0] + r[0]); ++i)
+          if (this->BallDistance(s, i, j, k) <= this->P.SeedRadius)
+          {
+            const double v = fv[this->At(i, j, k)];
+            sum += v;
+            sum2 += v * v;
+            ssum += v;
+            ssum2 += v * v;
+            ++count;
+            ++scount;
+          }
+    if (scount == 0)
+    {
+      const double v = fv[this->At(c[0], c[1], c[2])];
+      sum += v;
+      sum2 += v * v;
+      ssum = v;
+      ssum2 = v * v;
+      scount = 1;
+      ++count;
+    }
+    this->SeedStats.push_back(
+      { ssum / scount, std::sqrt(std::max(0.0, ssum2 / scount - (ssum / scount) * (ssum / scount))) });
+  }
+  this->Mean = sum / count;
+  this->Deviation = std::sqrt(std::max(0.0, sum2 / count - this->Mean * this->Mean));
+}
+
+bool amSnakeTracker::Segment(
+  double imageMax, const std::function<void(double)>& progress, const std::function<bool()>& abort)
+{
+  this->Progress = progress;
+  this->Abort = abort;
+  this->Error.clear();
+  double tlo = this->P.LowerThreshold, thi = this->P.UpperThreshold;
+  if (this->P.AutomaticThresholds)
+  {
+    const double half = std::max(this->P.IntensityTolerance * this->Deviation, this->P.MinimumIntensityWindow);
+    tlo = this->Mean - half;
+    thi = this->Mean + half;
+  }
+  this->InsideMask.assign(static_cast<size_t>(this->Size[0]) * this->Size[1] * this->Size[2], 0);
+  if (!this->Run(tlo, thi, nullptr, 0.15, 0.55))
+    return false;
+  // Refinement: the contour should stop half-way between the organ's intensity and that of its
+  // surroundings (where partial volume puts the true boundary), not at the edge of the
+  // statistical interval. Sample a 2-voxel shell outside (beyond the smoothing's blur), move the
+  // facing threshold there (never narrowing the interval) and evolve again.
+  if (this->P.ContourModel == Parameters::Polar)
+  {
+    tlo = this->P.OutsideThreshold;
+    thi = imageMax;
+  }
+  else if (this->P.AutomaticThresholds && this->P.RefineToHalfContrast)
+  {
+    const std::vector<unsigned char> first = this->InsideMask;
+    auto mask3 = NewImage<MaskImage<3>>(this->Size, this->Spacing);
+    std::copy(first.begin(), first.end(), mask3->GetBufferPointer());
+    auto dist = SignedDistance<3>(mask3);
+    const float* dv = dist->GetBufferPointer();
+    const float* fv = this->Feature.data();
+    // Beyond the blur of the smoothing, two voxels thick.
+    const double voxel = std::max(this->Spacing[0], std::max(this->Spacing[1], this->Spacing[2]));
+    const double shellIn = std::max(2.0 * voxel, 2.0 * this->P.SmoothingSigma), shellOut = shellIn + 2.0 * voxel;
+    double osum = 0;
+    long ocount = 0;
+    for (size_t i = 0; i < first.size(); ++i)
+      if (dv[i] > shellIn && dv[i] <= shellOut)
+      {
+        osum += fv[i];
+        ++ocount;
+      }
+    if (ocount > 0 && std::count(first.begin(), first.end(), 1) > 0)
+    {
+      const double outside = osum / ocount, mid = 0.5 * (this->Mean + outside);
+      bool changed = false;
+      if (outside < this->Mean && mid < tlo)
+      {
+        tlo = mid;
+        changed = true;
+      }
+      else if (outside > this->Mean && mid > thi)
+      {
+        thi = mid;
+        changed = true;
+      }
+      if (changed && !this->Run(tlo, thi, this->P.Mode == Parameters::ThreeD ? &first : nullptr, 0.7, 0.3))
+        return false;
+    }
+  }
+  this->Low = tlo;
+  this->High = thi;
+  return true;
+}
+
+bool amSnakeTracker::Run(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb)
+{
+  std::fill(this->InsideMask.begin(), this->InsideMask.end(), 0);
+  if (this->P.Mode == Parameters::ThreeD)
+    return this->RunThreeD(lo, hi, initial, pa, pb);
+  if (this->P.ContourModel == Parameters::Polar)
+    return this->RunPolar();
+  return this->RunSlices(lo, hi);
+}
+
+bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb)
+{
+  const int* rd = this->Size;
+  auto phi = NewImage<FloatImage<3>>(rd, this->Spacing);
+  float* pv = phi->GetBufferPointer();
+  vtkSMPTools::For(0, rd[2], [&](vtkIdType k0, vtkIdType k1) {
+    for (vtkIdType k = k0; k < k1; ++k)
+      for (int j = 0; j < rd[1]; ++j)
+        for (int i = 0; i < rd[0]; ++i)
+        {
+          double d = 1e30;
+          for (size_t s = 0; s < this->Seeds.size(); ++s)
+            d = std::min(d, this->BallDistance(s, i, j, static_cast<double>(k)));
+          pv[this->At(i, j, static_cast<int>(k))] = static_cast<float>(d - this->InitialRadius);
+        }
+  });
+  if (initial)
+  {
+    auto mask = NewImage<MaskImage<3>>(rd, this->Spacing);
+    std::copy(initial->begin(), initial->end(), mask->GetBufferPointer());
+    phi = SignedDistance<3>(mask);
+  }
+  auto feature = NewImage<FloatImage<3>>(rd, this->Spacing);
+  std::copy(this->Feature.begin(), this->Feature.end(), feature->GetBufferPointer());
+  const Parameters& p = this->P;
+  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError };
+  std::function<void(double)> progress;
+  if (this->Progress)
+    progress = [this, pa, pb](double f) { this->Progress(pa + pb * f); };
+  try
+  {
+    auto mask = Evolve<3>(feature, phi, lo, hi, lsp,
+      initial ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations, progress);
+    std::copy(mask->GetBufferPointer(), mask->GetBufferPointer() + this->InsideMask.size(), this->InsideMask.begin());
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    this->Error = e.GetDescription();
+    return false;
+  }
+  return true;
+}

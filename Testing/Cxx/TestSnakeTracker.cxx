@@ -1,0 +1,109 @@
+// The snake's per-organ tracker without a pipeline: a bright ball in a dark region of interest,
+// found in 3-D, slice by slice and with polar contours, its seeds given in the scan's indices.
+#include "amSnakeTracker.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+/// A 40^3 region of 1 mm voxels starting at voxel (5, 6, 7) of the scan: a ball of radius 10 mm
+/// at 200 around the region's centre, 0 elsewhere.
+struct Ball
+{
+  const int Lo[3] = { 5, 6, 7 }, Size[3] = { 40, 40, 40 };
+  const double Spacing[3] = { 1, 1, 1 }, Radius = 10;
+  std::vector<float> Values;
+  std::array<double, 3> Centre; // in the scan's indices
+  Ball()
+  {
+    for (int a = 0; a < 3; ++a)
+      this->Centre[a] = this->Lo[a] + 19.5;
+    for (int k = 0; k < 40; ++k)
+      for (int j = 0; j < 40; ++j)
+        for (int i = 0; i < 40; ++i)
+        {
+          const double x = i - 19.5, y = j - 19.5, z = k - 19.5;
+          this->Values.push_back(x * x + y * y + z * z <= this->Radius * this->Radius ? 200.0f : 0.0f);
+        }
+  }
+  double Volume() const { return 4.0 / 3.0 * M_PI * this->Radius * this->Radius * this->Radius; }
+};
+
+size_t Count(const std::vector<unsigned char>& m)
+{
+  size_t n = 0;
+  for (unsigned char c : m)
+    n += c;
+  return n;
+}
+}
+
+TEST(SnakeTracker, FindsABallInEveryMode)
+{
+  const Ball ball;
+  struct Case
+  {
+    const char* Name;
+    int Mode, ContourModel;
+  };
+  for (const Case& c : { Case{ "3-D level set", amSnakeTracker::Parameters::ThreeD, amSnakeTracker::Parameters::LevelSet },
+         Case{ "slice by slice", amSnakeTracker::Parameters::SliceBySlice, amSnakeTracker::Parameters::LevelSet },
+         Case{ "polar", amSnakeTracker::Parameters::SliceBySlice, amSnakeTracker::Parameters::Polar } })
+  {
+    amSnakeTracker::Parameters p;
+    p.Mode = c.Mode;
+    p.ContourModel = c.ContourModel;
+    p.OutsideThreshold = 100; // the polar contours' edge: half-way between ball and background
+    amSnakeTracker tracker(p, ball.Spacing);
+    tracker.SetRegion(ball.Lo, ball.Size, ball.Values);
+    tracker.MeasureSeeds({ ball.Centre });
+    EXPECT_NEAR(tracker.SeedMean(0), 200.0, 1.0) << c.Name; // the seed ball lies inside, smoothing aside
+    std::vector<double> progress;
+    ASSERT_TRUE(tracker.Segment(200.0, [&](double f) { progress.push_back(f); }, nullptr)) << c.Name << tracker.Error;
+    const double volume = static_cast<double>(Count(tracker.Inside()));
+    std::printf("%s: %.0f voxels for a ball of %.0f mm^3, interval [%.0f, %.0f]\n", c.Name, volume, ball.Volume(),
+      tracker.Lower(), tracker.Upper());
+    EXPECT_NEAR(volume / ball.Volume(), 1.0, 0.12) << c.Name;
+    EXPECT_EQ(tracker.Inside()[(20 * 40 + 20) * 40 + 20], 1) << c.Name;
+    EXPECT_EQ(tracker.Inside()[0], 0) << c.Name;
+    ASSERT_FALSE(progress.empty()) << c.Name;
+    EXPECT_LE(progress.back(), 1.0) << c.Name;
+  }
+}
+
+TEST(SnakeTracker, IntervalFromTheSeedsOrGiven)
+{
+  const Ball ball;
+  amSnakeTracker::Parameters p;
+  p.RefineToHalfContrast = false;
+  amSnakeTracker automatic(p, ball.Spacing);
+  automatic.SetRegion(ball.Lo, ball.Size, ball.Values);
+  automatic.MeasureSeeds({ ball.Centre });
+  ASSERT_TRUE(automatic.Segment(200.0, nullptr, nullptr));
+  // A uniform ball: no spread, so the window's minimum width around the mean.
+  EXPECT_NEAR(automatic.Lower(), 200.0 - p.MinimumIntensityWindow, 1.0);
+  EXPECT_NEAR(automatic.Upper(), 200.0 + p.MinimumIntensityWindow, 1.0);
+  p.AutomaticThresholds = false;
+  p.LowerThreshold = 300; // above the ball: the contour vanishes
+  p.UpperThreshold = 400;
+  amSnakeTracker given(p, ball.Spacing);
+  given.SetRegion(ball.Lo, ball.Size, ball.Values);
+  given.MeasureSeeds({ ball.Centre });
+  ASSERT_TRUE(given.Segment(200.0, nullptr, nullptr));
+  EXPECT_EQ(given.Lower(), 300);
+  EXPECT_EQ(Count(given.Inside()), 0u);
+}
+
+TEST(SnakeTracker, AbortStopsSliceBySlice)
+{
+  const Ball ball;
+  amSnakeTracker::Parameters p;
+  p.Mode = amSnakeTracker::Parameters::SliceBySlice;
+  amSnakeTracker tracker(p, ball.Spacing);
+  tracker.SetRegion(ball.Lo, ball.Size, ball.Values);
+  tracker.MeasureSeeds({ ball.Centre });
+  EXPECT_FALSE(tracker.Segment(200.0, nullptr, []() { return true; }));
+  EXPECT_TRUE(tracker.Error.empty()); // aborted, not failed
+}
