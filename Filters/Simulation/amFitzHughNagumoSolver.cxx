@@ -1,6 +1,7 @@
 #include "amFitzHughNagumoSolver.h"
 
 #include "amConjugateGradient.h"
+#include "amFitzHughNagumoStepper.h"
 #include "amP1Assembly.h"
 #include "amProvenance.h"
 #include "amSparseMatrix.h"
@@ -126,16 +127,7 @@ void amFitzHughNagumoSolver::RemoveAllRegionConductivities()
 
 double amFitzHughNagumoSolver::StableTimeStep() const
 {
-  // Explicit Euler on du/dt = f(u, v) is stable while dt |df/du| <= 2. df/du = c1 (-3u^2 +
-  // 2(1+a)u - a) - c2 v; u stays in about [-0.05, 1.05] and v in [0, 1] for these dynamics.
-  double worst = 0.0;
-  for (int k = 0; k <= 110; ++k)
-  {
-    const double u = -0.05 + 0.01 * k;
-    worst = std::max(worst, std::fabs(this->C1 * (-3 * u * u + 2 * (1 + this->A) * u - this->A)));
-  }
-  worst += this->C2;
-  return worst > 0 ? 2.0 / worst : 1e300;
+  return amFitzHughNagumoStepper::StableTimeStep(this->C1, this->C2, this->A);
 }
 
 std::vector<double> amFitzHughNagumoSolver::FrameTimes() const
@@ -289,71 +281,42 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   }
   this->UpdateProgress(0.02);
 
-  amSparseMatrix M, K, S;
-  fem.Assemble(&tensors, M, K);
-  S.Combine(1.0, M, dt, K);
-  amConjugateGradient cg;
-  cg.SetMatrix(&S);
-  cg.RelativeTolerance = this->SolverTolerance;
-  cg.MaximumIterations = this->MaximumIterations;
+  amFitzHughNagumoStepper::Parameters sp;
+  sp.C1 = this->C1;
+  sp.C2 = this->C2;
+  sp.C3 = this->C3;
+  sp.C4 = this->C4;
+  sp.A = this->A;
+  sp.TimeStep = dt;
+  sp.ActivationThreshold = this->ActivationThreshold;
+  sp.StimulusStart = this->StimulusStart;
+  sp.StimulusDuration = this->StimulusDuration;
+  sp.StimulusStrength = this->StimulusStrength;
+  sp.SolverTolerance = this->SolverTolerance;
+  sp.MaximumIterations = this->MaximumIterations;
+  amFitzHughNagumoStepper stepper;
+  stepper.Setup(fem, tensors, stimulated, sp);
   this->UpdateProgress(0.05);
 
   const int steps = static_cast<int>(std::llround(this->EndTime / dt));
   const int every = std::max(1, static_cast<int>(std::llround(this->OutputInterval / dt)));
   run->Times = this->FrameTimes();
-  std::vector<double> u(n, 0.0), v(n, 0.0), w(n), b(n), uOld(n);
-  run->Activation.assign(n, -1.0);
+  const std::vector<double>& u = stepper.U;
+  const std::vector<double>& v = stepper.V;
   auto keepFrame = [&]() {
     run->U.emplace_back(u.begin(), u.end());
     run->V.emplace_back(v.begin(), v.end());
   };
   keepFrame();
   const auto start = std::chrono::steady_clock::now();
-  long long iterations = 0;
-  const double c1 = this->C1, c2 = this->C2, c3 = this->C3, c4 = this->C4, a = this->A;
-  const double theta = this->ActivationThreshold;
   for (int s = 0; s < steps; ++s)
   {
     const double t = s * dt;
-    const double stim =
-      (t + 1e-9 * dt >= this->StimulusStart && t < this->StimulusStart + this->StimulusDuration - 1e-9 * dt)
-      ? this->StimulusStrength
-      : 0.0;
-    const double* up = u.data();
-    const double* vp = v.data();
-    double* wp = w.data();
-    const unsigned char* sp = stimulated.data();
-    amThreading::For(0, n, [=](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const double ui = up[i];
-        const double f = c1 * ui * (ui - a) * (1.0 - ui) - c2 * ui * vp[i] + (sp[i] ? stim : 0.0);
-        wp[i] = ui + dt * f;
-      }
-    });
-    M.Multiply(w.data(), b.data());
-    uOld = u;
-    const amConjugateGradient::Result result = cg.Solve(b.data(), u.data());
-    iterations += result.Iterations;
-    if (!result.Converged)
+    if (!stepper.Step(t))
     {
-      vtkErrorMacro(<< "conjugate gradients did not converge at t = " << t + dt << " ms (" << result.Iterations
-                    << " iterations, residual " << result.ResidualNorm << " of " << result.RightHandSideNorm
-                    << "): raise MaximumIterations or SolverTolerance");
+      vtkErrorMacro(<< stepper.Error << ": raise MaximumIterations or SolverTolerance");
       return 0;
     }
-    double* vw = v.data();
-    const double* uo = uOld.data();
-    double* act = run->Activation.data();
-    const double* un = u.data();
-    amThreading::For(0, n, [=](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        vw[i] = (vw[i] + dt * c3 * un[i]) / (1.0 + dt * c3 * c4);
-        if (act[i] < 0 && uo[i] < theta && un[i] >= theta)
-          act[i] = t + dt * (theta - uo[i]) / (un[i] - uo[i]);
-      }
-    });
     if ((s + 1) % every == 0 || s + 1 == steps)
     {
       double sum = 0;
@@ -370,6 +333,9 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
         return 0;
     }
   }
+  run->Activation = stepper.Activation;
+  const long long iterations = stepper.Iterations;
+  const double c1 = this->C1, c2 = this->C2, c3 = this->C3, c4 = this->C4, a = this->A;
   this->WallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   this->NumberOfSteps = steps;
   this->MeanIterations = steps > 0 ? static_cast<double>(iterations) / steps : 0.0;

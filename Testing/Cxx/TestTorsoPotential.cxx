@@ -37,29 +37,12 @@ double Exact(const double* x)
 
 // L2 error of the P1 Dirichlet solution of the Laplace equation on the unit cube (n^3 cubes),
 // solved by conjugate gradients or by the sparse Cholesky factor.
-/// The tetrahedra of a grid as a finite-element mesh (points and cells in the grid's order).
-amP1Assembly FemOf(vtkUnstructuredGrid* mesh)
-{
-  amP1Assembly fem;
-  fem.Points.resize(mesh->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-    mesh->GetPoint(i, fem.Points[i].data());
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-  {
-    const vtkIdType* ids;
-    vtkIdType npts;
-    mesh->GetCellPoints(c, npts, ids);
-    fem.Tetrahedra.push_back({ ids[0], ids[1], ids[2], ids[3] });
-  }
-  return fem;
-}
-
 double ManufacturedError(int n, bool direct)
 {
   const int dims[3] = { n, n, n };
   const double origin[3] = { 0, 0, 0 }, size[3] = { 1, 1, 1 };
   auto mesh = amTest::BoxMesh(dims, origin, size);
-  amP1Assembly fem = FemOf(mesh);
+  amP1Assembly fem = amTest::FemOf(mesh);
   EXPECT_EQ(fem.FindDegenerate(), -1);
   amSparseMatrix M, K;
   fem.Assemble(nullptr, M, K);
@@ -215,7 +198,7 @@ TEST(TorsoPotential, CholeskyManyRightHandSidesAndErrors)
   const int dims[3] = { 6, 5, 4 };
   const double origin[3] = { 0, 0, 0 }, size[3] = { 6, 5, 4 };
   auto mesh = amTest::BoxMesh(dims, origin, size);
-  amP1Assembly fem = FemOf(mesh);
+  amP1Assembly fem = amTest::FemOf(mesh);
   amSparseMatrix M, K;
   fem.Assemble(nullptr, M, K);
   const vtkIdType n = K.Size();

@@ -4,6 +4,7 @@
 
 #include "amBoxMesh.h"
 #include "amFitzHughNagumoSolver.h"
+#include "amP1Assembly.h"
 
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -19,6 +20,23 @@
 
 namespace amTest
 {
+/// The tetrahedra of a grid as a finite-element mesh (points and cells in the grid's order).
+inline amP1Assembly FemOf(vtkUnstructuredGrid* mesh)
+{
+  amP1Assembly fem;
+  fem.Points.resize(mesh->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    mesh->GetPoint(i, fem.Points[i].data());
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType* ids;
+    vtkIdType npts;
+    mesh->GetCellPoints(c, npts, ids);
+    fem.Tetrahedra.push_back({ ids[0], ids[1], ids[2], ids[3] });
+  }
+  return fem;
+}
+
 /// The slab of the Niederer et al. 2011 N-version benchmark, 20 x 7 x 3 mm at spacing dx, fibres
 /// along x (cell data "Fibres"), on a solver set up as the tests and the benchmark run it:
 /// transverse conductivity ratio 0.019/0.17 as in the benchmark, a 2.5 mm corner stimulus (2/ms for
