@@ -63,7 +63,7 @@ vtkIdType amP1Assembly::FindDegenerate() const
   return -1;
 }
 
-std::array<double, 6> amP1Assembly::FibreTensor(double sigmaL, double sigmaT, const double f[3])
+std::array<double, 6> amP1Assembly::FiberTensor(double sigmaL, double sigmaT, const double f[3])
 {
   const double norm = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
   if (!(norm > 0))

@@ -39,9 +39,9 @@ public:
   /// Barycentric gradients (4 x 3) and the unsigned volume of tetrahedron t.
   void Gradients(vtkIdType t, double g[4][3], double& volume) const;
 
-  /// Conductivity tensor sigma_t I + (sigma_l - sigma_t) f f^T for a unit fibre f (f may be zero:
+  /// Conductivity tensor sigma_t I + (sigma_l - sigma_t) f f^T for a unit fiber f (f may be zero:
   /// isotropic sigma_l).
-  static std::array<double, 6> FibreTensor(double sigmaL, double sigmaT, const double f[3]);
+  static std::array<double, 6> FiberTensor(double sigmaL, double sigmaT, const double f[3]);
 };
 
 #endif

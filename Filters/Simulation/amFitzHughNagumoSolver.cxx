@@ -58,7 +58,7 @@ amFitzHughNagumoSolver::amFitzHughNagumoSolver()
   : HeartRegions{ 5 }
   , RegionArrayName(nullptr)
   , Conductivity(3.5)
-  , FibreArrayName(nullptr)
+  , FiberArrayName(nullptr)
   , TransverseConductivityRatio(0.25)
   , C1(0.26)
   , C2(0.1)
@@ -85,13 +85,13 @@ amFitzHughNagumoSolver::amFitzHughNagumoSolver()
 {
   amThreading::Initialize();
   this->SetRegionArrayName("Region");
-  this->SetFibreArrayName("Fibres");
+  this->SetFiberArrayName("Fibers");
 }
 
 amFitzHughNagumoSolver::~amFitzHughNagumoSolver()
 {
   this->SetRegionArrayName(nullptr);
-  this->SetFibreArrayName(nullptr);
+  this->SetFiberArrayName(nullptr);
 }
 
 void amFitzHughNagumoSolver::AddHeartRegion(int label)
@@ -222,10 +222,10 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   std::map<int, double> sigmaOf;
   for (std::size_t k = 0; k + 1 < this->RegionConductivities.size(); k += 2)
     sigmaOf[static_cast<int>(this->RegionConductivities[k])] = this->RegionConductivities[k + 1];
-  vtkDataArray* fibres = this->FibreArrayName ? input->GetCellData()->GetArray(this->FibreArrayName) : nullptr;
-  if (fibres && fibres->GetNumberOfComponents() != 3)
+  vtkDataArray* fibers = this->FiberArrayName ? input->GetCellData()->GetArray(this->FiberArrayName) : nullptr;
+  if (fibers && fibers->GetNumberOfComponents() != 3)
   {
-    vtkErrorMacro(<< "fibre array '" << this->FibreArrayName << "' has " << fibres->GetNumberOfComponents()
+    vtkErrorMacro(<< "fiber array '" << this->FiberArrayName << "' has " << fibers->GetNumberOfComponents()
                   << " components; it needs 3 (a direction per cell)");
     return 0;
   }
@@ -240,9 +240,9 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
         sigma = it->second;
     }
     double f[3] = { 0, 0, 0 };
-    if (fibres)
-      fibres->GetTuple(heartCells[k], f);
-    tensors[k] = amP1Assembly::FibreTensor(sigma, sigma * this->TransverseConductivityRatio, f);
+    if (fibers)
+      fibers->GetTuple(heartCells[k], f);
+    tensors[k] = amP1Assembly::FiberTensor(sigma, sigma * this->TransverseConductivityRatio, f);
   }
 
   // Stimulated nodes.

@@ -25,7 +25,7 @@
  * RegionArrayName ("Region"). The heart is the cells whose region is in HeartRegions (default 5,
  * the phantom's myocardium); without a region array the whole mesh is the heart. Conductivity
  * per region: RegionConductivities (label, Sigma) pairs, else Conductivity. With a cell vector
- * array FibreArrayName ("Fibres") the tensor is Sigma_l f f^T + Sigma_t (I - f f^T) with
+ * array FiberArrayName ("Fibers") the tensor is Sigma_l f f^T + Sigma_t (I - f f^T) with
  * Sigma_t = TransverseConductivityRatio * Sigma_l.
  *
  * Stimulus (the sinus-node activation): the heart nodes within StimulusRadius of StimulusCenter,
@@ -89,10 +89,14 @@ public:
   ///@}
 
   ///@{
-  /// Cell vector array of fibre directions (default "Fibres"; unused when absent) and the ratio of
-  /// cross-fibre to along-fibre conductivity (default 0.25).
-  vtkSetStringMacro(FibreArrayName);
-  vtkGetStringMacro(FibreArrayName);
+  /// Cell vector array of fiber directions (default "Fibers"; unused when absent) and the ratio of
+  /// cross-fiber to along-fiber conductivity (default 0.25).
+  vtkSetStringMacro(FiberArrayName);
+  vtkGetStringMacro(FiberArrayName);
+#ifndef __VTK_WRAP__
+  [[deprecated("use SetFiberArrayName")]] void SetFibreArrayName(const char* name) { this->SetFiberArrayName(name); }
+  [[deprecated("use GetFiberArrayName")]] const char* GetFibreArrayName() { return this->GetFiberArrayName(); }
+#endif
   vtkSetClampMacro(TransverseConductivityRatio, double, 0.0, 1.0);
   vtkGetMacro(TransverseConductivityRatio, double);
   ///@}
@@ -177,7 +181,7 @@ protected:
   char* RegionArrayName;
   double Conductivity;
   std::vector<double> RegionConductivities; // pairs
-  char* FibreArrayName;
+  char* FiberArrayName;
   double TransverseConductivityRatio;
   double C1, C2, C3, C4, A;
   double TimeStep, EndTime, OutputInterval;

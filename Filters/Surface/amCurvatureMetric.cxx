@@ -124,8 +124,8 @@ amCurvatureMetric::amCurvatureMetric()
   , MaximumSize(20.0)
   , Gradation(1.3)
   , Anisotropic(true)
-  , NeighbourhoodRings(2)
-  , NeighbourhoodRadius(0.0)
+  , NeighborhoodRings(2)
+  , NeighborhoodRadius(0.0)
   , ScaleAdaptive(true)
 {
   amThreading::Initialize();
@@ -160,8 +160,8 @@ int amCurvatureMetric::RequestData(
   };
 
   // The fit's neighbourhood: every vertex of the interface within 'radius' of the vertex (reached
-  // through the interface's triangles), and at least its NeighbourhoodRings-ring.
-  double baseRadius = this->NeighbourhoodRadius;
+  // through the interface's triangles), and at least its NeighborhoodRings-ring.
+  double baseRadius = this->NeighborhoodRadius;
   if (baseRadius <= 0)
   {
     vtkDataArray* voxel = input->GetFieldData()->GetArray("VoxelSize");
@@ -169,7 +169,7 @@ int amCurvatureMetric::RequestData(
     if (!(baseRadius > 0))
       baseRadius = 0;
   }
-  const int rings = this->NeighbourhoodRings;
+  const int rings = this->NeighborhoodRings;
   const double eps = this->Tolerance, hmin = this->MinimumSize, hmax = this->MaximumSize;
   auto sizeOf = [&](double k) {
     const double a = std::fabs(k);
@@ -394,7 +394,7 @@ int amCurvatureMetric::RequestData(
   std::ostringstream params;
   params << "Tolerance=" << eps << " MinimumSize=" << hmin << " MaximumSize=" << hmax
          << " Gradation=" << this->Gradation << " Anisotropic=" << this->Anisotropic
-         << " NeighbourhoodRings=" << rings << " NeighbourhoodRadius=" << baseRadius
+         << " NeighborhoodRings=" << rings << " NeighborhoodRadius=" << baseRadius
          << " ScaleAdaptive=" << this->ScaleAdaptive;
   amProvenance::Record(output, input, "amCurvatureMetric", params.str());
   this->UpdateProgress(1.0);
@@ -409,7 +409,7 @@ void amCurvatureMetric::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumSize: " << this->MaximumSize << "\n";
   os << indent << "Gradation: " << this->Gradation << "\n";
   os << indent << "Anisotropic: " << this->Anisotropic << "\n";
-  os << indent << "NeighbourhoodRings: " << this->NeighbourhoodRings << "\n";
-  os << indent << "NeighbourhoodRadius: " << this->NeighbourhoodRadius << "\n";
+  os << indent << "NeighborhoodRings: " << this->NeighborhoodRings << "\n";
+  os << indent << "NeighborhoodRadius: " << this->NeighborhoodRadius << "\n";
   os << indent << "ScaleAdaptive: " << this->ScaleAdaptive << "\n";
 }

@@ -4,8 +4,8 @@
  *          surface-deviation tolerance, with gradation control.
  *
  * Curvatures: at each vertex a height function h(u,v) = a u^2 + b uv + c v^2 + d u + e v is fitted
- * by least squares to the vertices of its NeighbourhoodRings-ring and every vertex within
- * NeighbourhoodRadius, in the tangent frame of the area-weighted normal; the shape operator of that graph (first and second fundamental forms, so
+ * by least squares to the vertices of its NeighborhoodRings-ring and every vertex within
+ * NeighborhoodRadius, in the tangent frame of the area-weighted normal; the shape operator of that graph (first and second fundamental forms, so
  * a tilted normal does not bias it) gives the principal curvatures k1 >= k2 and their directions.
  * The linear terms and the neighbourhood radius (two voxels by default) make it robust on the
  * noisy, staircase-smoothed triangulations of label maps; ScaleAdaptive then fits again over half
@@ -76,16 +76,22 @@ public:
 
   ///@{
   /// Rings of neighbours used by the fit at least (default 2).
-  vtkSetClampMacro(NeighbourhoodRings, int, 1, 5);
-  vtkGetMacro(NeighbourhoodRings, int);
+  vtkSetClampMacro(NeighborhoodRings, int, 1, 5);
+  vtkGetMacro(NeighborhoodRings, int);
   ///@}
 
   ///@{
   /// Radius of the fit's neighbourhood, mm: every vertex of the interface within it (reached
   /// through the interface) joins the fit. Default 0: twice the "VoxelSize" field data of a
   /// surface from a label map (amLabelSurface records it), else the rings alone.
-  vtkSetClampMacro(NeighbourhoodRadius, double, 0.0, 1e6);
-  vtkGetMacro(NeighbourhoodRadius, double);
+  vtkSetClampMacro(NeighborhoodRadius, double, 0.0, 1e6);
+  vtkGetMacro(NeighborhoodRadius, double);
+#ifndef __VTK_WRAP__
+  [[deprecated("use SetNeighborhoodRings")]] void SetNeighbourhoodRings(int n) { this->SetNeighborhoodRings(n); }
+  [[deprecated("use GetNeighborhoodRings")]] int GetNeighbourhoodRings() { return this->GetNeighborhoodRings(); }
+  [[deprecated("use SetNeighborhoodRadius")]] void SetNeighbourhoodRadius(double r) { this->SetNeighborhoodRadius(r); }
+  [[deprecated("use GetNeighborhoodRadius")]] double GetNeighbourhoodRadius() { return this->GetNeighborhoodRadius(); }
+#endif
   ///@}
 
   ///@{
@@ -107,8 +113,8 @@ protected:
   double MaximumSize;
   double Gradation;
   bool Anisotropic;
-  int NeighbourhoodRings;
-  double NeighbourhoodRadius;
+  int NeighborhoodRings;
+  double NeighborhoodRadius;
   bool ScaleAdaptive;
 
 private:

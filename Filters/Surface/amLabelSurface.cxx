@@ -42,7 +42,7 @@ amLabelSurface::amLabelSurface()
   , ComputeTopology(true)
   , ResolvedEdges(0)
   , SplitCorners(0)
-  , RelabelledVoxels(0)
+  , RelabeledVoxels(0)
 {
   amThreading::Initialize();
   this->SetNumberOfOutputPorts(2);
@@ -68,7 +68,7 @@ int amLabelSurface::RequestData(
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkTable* table = vtkTable::GetData(outputVector, 1);
-  this->ResolvedEdges = this->SplitCorners = this->RelabelledVoxels = 0;
+  this->ResolvedEdges = this->SplitCorners = this->RelabeledVoxels = 0;
   std::string why;
   vtkDataArray* scalars = amInputCheck::ScalarImage(input, why);
   if (!scalars)
@@ -193,9 +193,9 @@ int amLabelSurface::RequestData(
   extractor.Extract([this](double f) { this->UpdateProgress(f); });
   this->ResolvedEdges = extractor.ResolvedEdges;
   this->SplitCorners = extractor.SplitCorners;
-  this->RelabelledVoxels = extractor.RelabelledVoxels;
-  if (this->RelabelledVoxels > 0)
-    vtkWarningMacro(<< this->RelabelledVoxels
+  this->RelabeledVoxels = extractor.RelabeledVoxels;
+  if (this->RelabeledVoxels > 0)
+    vtkWarningMacro(<< this->RelabeledVoxels
                     << " voxel(s) relabelled where a label touched itself only at a voxel corner "
                        "between other regions (no vertex split can make that manifold).");
 
@@ -232,7 +232,7 @@ int amLabelSurface::RequestData(
   output->GetFieldData()->AddArray(voxelSize);
   std::ostringstream params;
   params << "BackgroundLabel=" << this->BackgroundLabel << " ResolvedEdges=" << this->ResolvedEdges
-         << " SplitCorners=" << this->SplitCorners << " RelabelledVoxels=" << this->RelabelledVoxels;
+         << " SplitCorners=" << this->SplitCorners << " RelabeledVoxels=" << this->RelabeledVoxels;
   amProvenance::Record(output, input, "amLabelSurface", params.str());
   this->UpdateProgress(0.85);
 

@@ -22,7 +22,7 @@
  * - one configuration cannot be split: a label whose voxels touch only at a corner while the other
  *   labels around that corner are connected across it (e.g. octants 0 and 7 of one label, the
  *   rest two other labels). There one of the two voxels takes the most frequent other label of
- *   its neighbours in the corner's block (a warning gives the count: RelabelledVoxels), and the
+ *   its neighbours in the corner's block (a warning gives the count: RelabeledVoxels), and the
  *   topology table's VoxelVolume counts the repaired map. It is rare (2 voxels in the 2 mm
  *   phantom).
  * The result: every region's boundary is a closed, consistently oriented 2-manifold, the
@@ -71,7 +71,10 @@ public:
   vtkGetMacro(ResolvedEdges, vtkIdType);
   vtkGetMacro(SplitCorners, vtkIdType);
   /// Voxels relabelled in the last run (see the class documentation).
-  vtkGetMacro(RelabelledVoxels, vtkIdType);
+  vtkGetMacro(RelabeledVoxels, vtkIdType);
+#ifndef __VTK_WRAP__
+  [[deprecated("use GetRelabeledVoxels")]] vtkIdType GetRelabelledVoxels() { return this->GetRelabeledVoxels(); }
+#endif
 
 protected:
   amLabelSurface();
@@ -84,7 +87,7 @@ protected:
   bool ComputeTopology;
   vtkIdType ResolvedEdges;
   vtkIdType SplitCorners;
-  vtkIdType RelabelledVoxels;
+  vtkIdType RelabeledVoxels;
 
 private:
   amLabelSurface(const amLabelSurface&) = delete;

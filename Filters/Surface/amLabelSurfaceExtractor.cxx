@@ -21,7 +21,7 @@ void amLabelSurfaceExtractor::Extract(const std::function<void(double)>& progres
     if (progress)
       progress(fraction);
   };
-  this->ResolvedEdges = this->SplitCorners = this->RelabelledVoxels = 0;
+  this->ResolvedEdges = this->SplitCorners = this->RelabeledVoxels = 0;
   this->FindCorners();
   report(0.3);
   this->PlaceCorners();
@@ -44,7 +44,7 @@ void amLabelSurfaceExtractor::FindCorners()
   std::vector<std::vector<std::pair<size_t, std::uint16_t>>> changes(static_cast<size_t>(cn[2]));
   std::vector<char> dirty(static_cast<size_t>(cn[2]), 1);
   g.RowStart.assign(static_cast<size_t>(cn[1]) * cn[2] + 1, 0);
-  this->RelabelledVoxels = 0;
+  this->RelabeledVoxels = 0;
   for (int round = 0;; ++round)
   {
     vtkSMPTools::For(0, cn[2], [&](vtkIdType k0, vtkIdType k1) {
@@ -102,7 +102,7 @@ void amLabelSurfaceExtractor::FindCorners()
       const size_t k = x.first / slice; // corners k and k + 1 touch voxel slice k
       dirty[k] = dirty[k + 1] = 1;
     }
-    this->RelabelledVoxels += static_cast<vtkIdType>(apply.size());
+    this->RelabeledVoxels += static_cast<vtkIdType>(apply.size());
   }
   for (size_t r = 1; r < g.RowStart.size(); ++r)
     g.RowStart[r] += g.RowStart[r - 1]; // per-row counts -> offsets

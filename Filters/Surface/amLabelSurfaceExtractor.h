@@ -41,7 +41,7 @@ public:
   std::vector<float> Points;        // 3 per vertex
   std::vector<vtkIdType> Triangles; // 3 per triangle
   std::vector<int> Labels;          // 2 per triangle: the labels on its front and back
-  vtkIdType ResolvedEdges = 0, SplitCorners = 0, RelabelledVoxels = 0;
+  vtkIdType ResolvedEdges = 0, SplitCorners = 0, RelabeledVoxels = 0;
 
 private:
   /// The corners on the surface and how many copies of each one's vertex, row by row; relabels

@@ -171,8 +171,8 @@ TEST(CurvatureMetric, SmoothedVoxelSphere)
   auto ball = SmoothedBall(41, 15);
   vtkNew<amCurvatureMetric> cm;
   cm->SetInputData(ball);
-  cm->SetNeighbourhoodRings(3);
-  cm->SetNeighbourhoodRadius(1e-6); // the 3-ring alone, at the scale of the voxels
+  cm->SetNeighborhoodRings(3);
+  cm->SetNeighborhoodRadius(1e-6); // the 3-ring alone, at the scale of the voxels
   cm->SetScaleAdaptive(false);
   cm->Update();
   vtkDataArray* kmean = Array(cm->GetOutput(), "MeanCurvature");

@@ -117,7 +117,7 @@ TEST(FitzHughNagumo, PlaneWaveSpeedConvergesInTime)
 
 TEST(FitzHughNagumo, NiedererSlabActivation)
 {
-  // 20 x 7 x 3 mm, fibres along x (transverse conductivity ratio 0.019/0.17 as in Niederer et al.
+  // 20 x 7 x 3 mm, fibers along x (transverse conductivity ratio 0.019/0.17 as in Niederer et al.
   // 2011), stimulus at the corner; activation at P1 (corner), the centre and P8 (far corner).
   double previous = -1;
   for (double dx : { 0.5, 0.25 })

@@ -20,7 +20,7 @@ struct Box
     const double origin[3] = { 0, 0, 0 }, size[3] = { 4, 3, 3 };
     this->Fem = amTest::FemOf(amTest::BoxMesh(n, origin, size));
     const double f[3] = { 0, 0, 0 };
-    this->Tensors.assign(this->Fem.Tetrahedra.size(), amP1Assembly::FibreTensor(0.1, 0.1, f));
+    this->Tensors.assign(this->Fem.Tetrahedra.size(), amP1Assembly::FiberTensor(0.1, 0.1, f));
   }
 };
 }

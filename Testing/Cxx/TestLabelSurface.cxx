@@ -167,7 +167,7 @@ TEST(LabelSurface, CornerPinchAcrossOtherRegionsIsRepaired)
   messages->Watch(ls);
   ls->SetInputData(img);
   ls->Update();
-  EXPECT_EQ(ls->GetRelabelledVoxels(), 1);
+  EXPECT_EQ(ls->GetRelabeledVoxels(), 1);
   ASSERT_EQ(messages->Warnings.size(), 1u);
   EXPECT_NE(messages->Warnings[0].find("relabelled"), std::string::npos);
   ExpectClosedManifold(vtkTable::SafeDownCast(ls->GetOutputDataObject(1)), 0.15);

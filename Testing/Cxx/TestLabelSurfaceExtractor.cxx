@@ -145,7 +145,7 @@ TEST(LabelSurfaceExtractor, PinchIsRelabelled)
   }
   amLabelSurfaceExtractor x = Grid(4, v, 4);
   x.Extract(nullptr);
-  EXPECT_EQ(x.RelabelledVoxels, 1);
+  EXPECT_EQ(x.RelabeledVoxels, 1);
   for (int label : { 10, 20, 30 })
     ExpectClosed(x, label);
 }

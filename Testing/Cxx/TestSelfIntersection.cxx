@@ -120,7 +120,7 @@ vtkSmartPointer<vtkPolyData> Smoothed(double bound, bool untangle, vtkIdType* un
 
 TEST(SelfIntersection, PhantomExtracted)
 {
-  EXPECT_EQ(PhantomSurface()->GetRelabelledVoxels(), 2); // two corner pinches no vertex split resolves
+  EXPECT_EQ(PhantomSurface()->GetRelabeledVoxels(), 2); // two corner pinches no vertex split resolves
   ExpectNone(PhantomSurface()->GetOutput(), "extracted");
 }
 

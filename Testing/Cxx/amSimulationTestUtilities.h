@@ -37,8 +37,8 @@ inline amP1Assembly FemOf(vtkUnstructuredGrid* mesh)
   return fem;
 }
 
-/// The slab of the Niederer et al. 2011 N-version benchmark, 20 x 7 x 3 mm at spacing dx, fibres
-/// along x (cell data "Fibres"), on a solver set up as the tests and the benchmark run it:
+/// The slab of the Niederer et al. 2011 N-version benchmark, 20 x 7 x 3 mm at spacing dx, fibers
+/// along x (cell data "Fibers"), on a solver set up as the tests and the benchmark run it:
 /// transverse conductivity ratio 0.019/0.17 as in the benchmark, a 2.5 mm corner stimulus (2/ms for
 /// 4 ms), the given time step, simulated up to endTime with one frame at the end.
 inline vtkSmartPointer<vtkUnstructuredGrid> NiedererSlab(double dx, amFitzHughNagumoSolver* solver, double dt,
@@ -48,12 +48,12 @@ inline vtkSmartPointer<vtkUnstructuredGrid> NiedererSlab(double dx, amFitzHughNa
     static_cast<int>(std::lround(3 / dx)) };
   const double origin[3] = { 0, 0, 0 }, size[3] = { 20, 7, 3 };
   auto mesh = BoxMesh(n, origin, size);
-  vtkNew<vtkDoubleArray> fibres;
-  fibres->SetName("Fibres");
-  fibres->SetNumberOfComponents(3);
+  vtkNew<vtkDoubleArray> fibers;
+  fibers->SetName("Fibers");
+  fibers->SetNumberOfComponents(3);
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-    fibres->InsertNextTuple3(1, 0, 0);
-  mesh->GetCellData()->AddArray(fibres);
+    fibers->InsertNextTuple3(1, 0, 0);
+  mesh->GetCellData()->AddArray(fibers);
   solver->SetInputData(mesh);
   solver->RemoveAllHeartRegions();
   solver->AddHeartRegion(1);

@@ -111,6 +111,29 @@ class ThoraxJob(unittest.TestCase):
         self.assertIn("ThoraxPhantomSource", stdout)
 
 
+class DeprecatedNames(unittest.TestCase):
+    def test_british_property_names_still_read_with_a_warning(self):
+        path = pipeline_file("deprecated.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="8 8 8"/>
+              </Filter>
+              <Filter name="s" type="LabelSurface">
+                <Input from="p" port="Labels"/>
+              </Filter>
+              <Filter name="m" type="CurvatureMetric">
+                <Input from="s"/>
+                <Property name="NeighbourhoodRings" value="3"/>
+              </Filter>
+              <Output from="m" file="${output}/metric.vtp"/>
+            </AnatomeshPipeline>""")
+        out = os.path.join(TMP, "deprecated_out")
+        code, _, stderr = run("run", path, "--output", out, "--quiet")
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("property 'NeighbourhoodRings' is deprecated; use 'NeighborhoodRings'", stderr)
+        self.assertTrue(os.path.getsize(os.path.join(out, "metric.vtp")) > 0)
+
+
 class PipelineErrors(unittest.TestCase):
     def expect_error(self, name, body, *needles, args=()):
         path = pipeline_file(name, body)

@@ -30,6 +30,13 @@ from . import catalogue
 
 FORMAT_VERSION = "1"
 
+# Property names of earlier versions (British spellings), still read with a warning.
+DEPRECATED_PROPERTIES = {
+    "FibreArrayName": "FiberArrayName",
+    "NeighbourhoodRings": "NeighborhoodRings",
+    "NeighbourhoodRadius": "NeighborhoodRadius",
+}
+
 
 class PipelineError(Exception):
     """A problem with a pipeline file or its execution; str() names the file and line."""
@@ -151,6 +158,11 @@ class Pipeline:
         for child in node.children:
             if child.tag == "Property":
                 pname = child.attrs.get("name")
+                if pname in DEPRECATED_PROPERTIES and pname not in proxy.properties:
+                    new = DEPRECATED_PROPERTIES[pname]
+                    sys.stderr.write("%s:%d: warning: property %r is deprecated; use %r\n" % (
+                        self.path, child.line, pname, new))
+                    pname = new
                 if pname not in proxy.properties or proxy.properties[pname].kind == "input":
                     known = [p for p in proxy.properties if proxy.properties[p].kind != "input"]
                     raise self._error(child.line, "filter %r (%s) has no property %r (properties: %s)" % (
