@@ -10,7 +10,7 @@
 #ifndef amSelfIntersection_h
 #define amSelfIntersection_h
 
-#include "AnatomeshFiltersSurfaceModule.h" // export macro
+#include "AnatomeshFiltersCoreModule.h" // export macro
 #include "vtkType.h"
 
 #include <array>
@@ -18,7 +18,7 @@
 
 class amSurfaceMesh;
 
-class ANATOMESHFILTERSSURFACE_EXPORT amSelfIntersection
+class ANATOMESHFILTERSCORE_EXPORT amSelfIntersection
 {
 public:
   /// Sorted vertex ids of all triangles involved in a crossing, using the given positions.
