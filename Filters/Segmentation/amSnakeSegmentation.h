@@ -47,6 +47,11 @@
  * "SegmentedVolumes" (mm^3 per label) and "Thresholds" (the interval used per label).
  * Errors: no seeds, a seed outside the image, a seed in air (CT below -950 HU, unless
  * AllowAirSeeds), an empty or non-scalar image, a label outside 1..255.
+ *
+ * References: the CEMRACS 2004 paper (snakes propagated slice by slice from seeds); J. A. Sethian,
+ * Level Set Methods and Fast Marching Methods, 1999 (ITK's threshold level set).
+ *
+ * @sa amIntensityClassifier amMorphologyCleaning amLabelOverlap
  */
 #ifndef amSnakeSegmentation_h
 #define amSnakeSegmentation_h

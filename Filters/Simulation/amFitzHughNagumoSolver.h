@@ -45,6 +45,11 @@
  * degenerate heart cell, a stimulus that holds no heart node or is shorter than a time step, a
  * time step beyond the explicit reaction's stability limit (2 / max |df/du|), a solver that does
  * not converge, and a non-finite state.
+ *
+ * References: J. M. Rogers and A. D. McCulloch, A collocation-Galerkin finite element model of
+ * cardiac action potential propagation, IEEE TBME 41(8), 1994; the CEMRACS 2004 paper's case study.
+ *
+ * @sa amTorsoPotential amTetrahedralize
  */
 #ifndef amFitzHughNagumoSolver_h
 #define amFitzHughNagumoSolver_h

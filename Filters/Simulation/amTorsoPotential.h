@@ -37,6 +37,11 @@
  * Errors: missing inputs or arrays, no torso cells, a torso that does not touch the heart, a
  * non-tetrahedral or degenerate torso cell, a matrix that cannot be factored (out of memory),
  * a solver that does not converge.
+ *
+ * Reference: the CEMRACS 2004 paper's case study (Generation of computational meshes from MRI and
+ * CT-scan data): the heart's potential as a Dirichlet condition on the torso's Laplace problem.
+ *
+ * @sa amFitzHughNagumoSolver
  */
 #ifndef amTorsoPotential_h
 #define amTorsoPotential_h

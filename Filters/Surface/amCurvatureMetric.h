@@ -33,6 +33,11 @@
  * "GaussianCurvature" (1/mm, signed with the input orientation: positive where the surface bends
  * away from its normal, e.g. on an outward-oriented sphere), "MaximumDirection",
  * "MinimumDirection", "Normals".
+ *
+ * References: P. J. Frey, YAMS, INRIA RT-0252, 2001 (the geometric metric from curvatures and a
+ * tolerance); the CEMRACS 2004 paper.
+ *
+ * @sa amMetricRemeshing amSurfaceSmoothing
  */
 #ifndef amCurvatureMetric_h
 #define amCurvatureMetric_h

@@ -40,6 +40,12 @@
  *
  * Labels must be whole numbers (any scalar type); the image may carry a direction matrix (vertex
  * positions follow it, and orientation is kept when it mirrors).
+ *
+ * References: W. E. Lorensen and H. E. Cline, Marching cubes, SIGGRAPH 1987; Z. Wu and J. M.
+ * Sullivan, Multiple material marching cubes algorithm, IJNME 58, 2003 (VTK's discrete flying edges
+ * makes one surface per label; this filter makes one conforming surface of them all).
+ *
+ * @sa amSurfaceSmoothing amMetricRemeshing amTetrahedralize
  */
 #ifndef amLabelSurface_h
 #define amLabelSurface_h

@@ -1,67 +1,44 @@
 /**
  * @class   amMetricRemeshing
  * @brief   Remeshes a (multi-material) triangle surface to unit edge length in a size metric,
- *          keeping junction curves and labels, with a guaranteed two-sided Hausdorff bound.
+ *          keeping junction curves and labels, within a two-sided Hausdorff bound of the input.
  *
- * The paper's "Yams" stage. Sizes come from the point-data tensor "Metric" (amCurvatureMetric;
- * edge length in the metric: sqrt(e^T M e), averaged over the two ends) or, when absent or
- * TargetSize > 0, from a uniform TargetSize in mm. Each iteration:
- * 1. half-edge collapses of the edges shorter than 4/5, shortest first: a surface vertex
- *    collapses along a surface edge, a junction-curve vertex only along its curve, curve ends
- *    (corners) never; a collapse is refused when it would break the link condition (the surface
- *    of some region would become non-manifold), flip a triangle or give it an angle under 10
- *    degrees (on the exact organs at 1 mm, 5 degrees let caps through that no flip could mend
- *    later: the smallest dihedral of their tetrahedra fell to 7.6 degrees), make an edge
- *    longer than 4/3, or put a point of a new triangle (edge midpoints and quarter points,
- *    centroid) farther than Tolerance from the input surface of the same interface (its input
- *    triangles facing the same way), or leave an input vertex farther
- *    than Tolerance from the triangles of its interface around the vertex that stands for it
- *    (each input vertex is assigned to the vertex it collapsed into; flips and relaxation keep
- *    this too, so the input cannot drift away from the result between the distance checks);
- *    where neither end of an edge can take the other's triangles, the edge is collapsed into the
- *    input point nearest its middle (two surface vertices, not beside a junction curve). The
- *    collapse passes (and the flip and relaxation passes below) run on two workers, one on each
- *    side of a plane through the median vertex: a worker carries out an operation only where the
- *    stars it changes lie on its side, so neither reads what the other changes; the rest follow
- *    serially. The result does not depend on the threads;
- * 2. edge flips inside an interface that raise the smaller of the two triangles' minimum angles,
- *    between nearly coplanar triangles, under the same distance check;
- * 3. tangential relaxation of surface vertices towards the centroid of their ring, projected back
- *    onto the input surface of their interface (exact closest point among the input triangles
- *    facing the same way), under the same checks.
- * Every point put on the input (relaxation, bisection, insertion) is the closest point on the
- * side facing the way the remeshed triangles face: in a thin part (a fat layer a voxel thick) the
- * nearest input point can lie on the other side, and refining towards it crumpled the surface
- * into flat tetrahedra (2 mm phantom, ε 0.5: the bound then stalled at 0.72 mm; now met).
- * Junction curves therefore stay exactly on input vertices, and every triangle keeps its
- * "Labels" pair and orientation.
+ * The CEMRACS paper's "Yams" stage. Sizes come from the point-data tensor "Metric"
+ * (amCurvatureMetric; the length of an edge e is sqrt(e^T M e), averaged over its two ends) or,
+ * when TargetSize > 0, from a uniform edge length in mm. Each iteration:
+ * 1. collapses the edges shorter than 4/5, shortest first (into either end, or into the input
+ *    point nearest the edge's middle); a junction-curve vertex moves only along its curve,
+ *    corners never;
+ * 2. flips edges inside an interface where that raises the smaller minimum angle;
+ * 3. relaxes surface vertices towards the centroid of their ring, back onto the input.
+ * Every operation first passes the guards and changes nothing when refused: the link condition
+ * (every region stays a manifold), no flipped triangle, no new angle under 10 degrees, no edge
+ * longer than 4/3, every new triangle within Tolerance of its interface's input (on the side it
+ * faces), every input vertex within Tolerance of the triangles of the vertex that stands for it,
+ * and no new triangle crossing or folding onto a live one (CGAL's exact predicates). The output
+ * is therefore as free of self-intersections as the input, which a tetrahedral mesher needs.
  *
- * No operation may make triangles cross: each collapse, flip, relaxation, insertion and split is
- * refused when one of its new triangles would meet a live triangle other than at their shared
- * vertices or edge (CGAL's exact predicates, on bins of the live triangles), or fold flat onto a
- * neighbour across an edge (dihedral under 1 degree). The output is therefore as free of
- * self-intersections as the input, which a tetrahedral mesher needs.
+ * Then the two-sided Hausdorff distance to the input is measured per interface (amSurfaceDistance's
+ * sampling), and wherever it exceeds Tolerance the offending triangle is bisected towards the input
+ * (a junction edge at the input curve vertex halfway along the curve), or the far point inserted;
+ * an insertion refused because something is in the way refines that instead, up to 30 rounds.
+ * Last, triangles with an angle under 10 degrees that the insertions left are flipped or collapsed
+ * away under the same guards, kept only if the bound and the angles end no worse.
  *
- * Then the two-sided Hausdorff distance to the input is computed (amSurfaceDistance's sampling,
- * per interface: every input vertex, edge midpoint and centroid against the remeshed triangles of
- * its interface, and a grid of points on each remeshed triangle against the input), and wherever
- * it exceeds Tolerance the offending triangle (or the one nearest the offending input sample) is
- * bisected: its longest edge split at the point of the input nearest the edge's midpoint (a
- * junction edge at the input curve vertex halfway along the input curve), then flips around the
- * new vertex; where that is refused, a junction edge of the triangle is split instead. Where
- * that is refused too, the offending point itself is inserted (on an edge: that edge split
- * there, else inserted into the triangle); an insertion refused because it would cross something refines the triangles in the way
- * instead, up to 30 rounds. (Bisection keeps the angles; inserting the far points themselves left
- * slivers: 12 triangles under 8 degrees on the exact organs at 1 mm, 3 with bisection first.) The achieved value is stored in field data "Hausdorff" (and
- * "HausdorffUpperBound" with the sampling gap); a warning says so if the bound could not be
- * reached: where two interfaces meet at a small angle, the crossing-free rule can stop a few
- * insertions (2 mm phantom, eps 0.5 mm: 0.57 mm).
+ * The achieved distance is in field data "Hausdorff" (and "HausdorffUpperBound", with the
+ * sampling gap); a warning says so when the bound could not be reached (two interfaces meeting
+ * at a small angle, a part thinner than the tolerance).
  *
- * Last, triangles with an angle under 10 degrees that the insertions left (caps along creases of
- * the input, needles) are flipped or collapsed away under the same checks as above, and the bound
- * is enforced again; the result is kept only if the distance ends no worse (or within Tolerance),
- * fewer such triangles remain and no edge became much shorter — otherwise the surface before the
- * cleanup is output. A tetrahedron standing on a triangle with a 3-degree angle cannot be good.
+ * The passes run on two workers, one on each side of a plane through the median vertex; the
+ * output does not depend on the thread count. The algorithm lives in Remeshing/ (amRemesher and
+ * its parts), this filter converts and calls it.
+ *
+ * References: P. J. Frey, YAMS: a fully automatic adaptive isotropic surface remeshing procedure,
+ * INRIA RT-0252, 2001; P. J. Frey and H. Borouchaki, Geometric surface mesh optimization,
+ * Computing and Visualization in Science 1, 1998; the CEMRACS 2004 paper (Generation of
+ * computational meshes from MRI and CT-scan data).
+ *
+ * @sa amCurvatureMetric amSurfaceDistance amTetrahedralize
  */
 #ifndef amMetricRemeshing_h
 #define amMetricRemeshing_h

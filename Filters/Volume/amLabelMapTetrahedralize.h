@@ -21,6 +21,12 @@
  * either side, -1 outside).
  *
  * Kept in its own translation unit: CGAL Mesh_3 is heavy to compile.
+ *
+ * Reference: CGAL 3D Mesh Generation (Mesh_3), P. Alliez, C. Jamin, L. Rineau, S. Tayeb, J. Tournois,
+ * M. Yvinec; J.-D. Boissonnat and S. Oudot, Provably good sampling and meshing of surfaces,
+ * Graphical Models 67, 2005.
+ *
+ * @sa amTetrahedralize amMeshQuality
  */
 #ifndef amLabelMapTetrahedralize_h
 #define amLabelMapTetrahedralize_h

@@ -17,6 +17,11 @@
  * MaximumDihedralAngle, Volume, InvertedTetrahedra. Region is -1 in the whole-mesh row.
  *
  * Non-tetrahedral cells are an error naming the first one.
+ *
+ * Reference: the CEMRACS 2004 paper, Table 1 (the quality Q = alpha h_max / rho of each
+ * tetrahedron, 1 for the regular one).
+ *
+ * @sa amTetrahedralize amLabelMapTetrahedralize
  */
 #ifndef amMeshQuality_h
 #define amMeshQuality_h

@@ -33,6 +33,12 @@
  * Output port 1: the boundary and interface triangles on the output points, cell data "Labels"
  * (as the input, same orientation), "SourceTriangle" (input triangle), and "Tetra" (2 components:
  * the tetrahedron on the Labels[0] side and on the Labels[1] side, -1 for background).
+ *
+ * References: H. Si, TetGen, a Delaunay-based quality tetrahedral mesh generator, ACM TOMS 41(2),
+ * 2015; the CEMRACS 2004 paper (Generation of computational meshes from MRI and CT-scan data),
+ * whose quality measure and Table 1 amMeshQuality reproduces.
+ *
+ * @sa amMetricRemeshing amLabelMapTetrahedralize amMeshQuality
  */
 #ifndef amTetrahedralize_h
 #define amTetrahedralize_h

@@ -90,7 +90,7 @@ TEST(FitzHughNagumo, PlaneWaveSpeedConvergesInSpace)
     EXPECT_GT(order, 1.7); // second order
     EXPECT_LT(order, 2.5);
   }
-  EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.03); // the bar: within 3 % on the finest mesh
+  EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.03); // within 3 % on the finest mesh
   EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.001); // what it does: within 0.1 %
 }
 

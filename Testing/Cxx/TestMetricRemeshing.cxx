@@ -121,8 +121,7 @@ TEST(MetricRemeshing, PhantomWithCurvatureMetric)
   amSurfaceSmoothing* sm = chain.Smooth;
   vtkPolyData* out = rm->GetOutput();
   EXPECT_LT(out->GetNumberOfCells() * 5, sm->GetOutput()->GetNumberOfCells());
-  // The bound holds (measured 0.49999; 0.52 before junction edges were split along the input
-  // curve between their ends).
+  // The bound holds, junction curves included (junction edges split along the input curve).
   EXPECT_LE(rm->GetHausdorff(), 0.5);
   ExpectClosedRegions(out);
   EXPECT_GT(amTest::AngleFraction(out, 20), 0.95);
@@ -145,7 +144,7 @@ TEST(MetricRemeshing, PhantomWithCurvatureMetric)
     EXPECT_GT(d.TruthSamples, 10000);
     EXPECT_LE(d.TruthToSurface, 2.0);
     EXPECT_LT(d.MeanSurfaceToTruth, 0.5);
-    EXPECT_GT(d.FractionWithin(2.0), 0.98); // measured: 99.7 % smoothed, 98.6 % remeshed
+    EXPECT_GT(d.FractionWithin(2.0), 0.98);
   }
 }
 

@@ -112,7 +112,7 @@ std::map<int, double> RegionVolumes(vtkUnstructuredGrid* g, long long* nonPositi
   return v;
 }
 
-/// Every check the issue asks of a tetrahedral mesh of a labelled surface.
+/// Every check a tetrahedral mesh of a labelled surface must pass.
 void ExpectConformingMesh(vtkPolyData* surface, const Meshed& m)
 {
   ASSERT_TRUE(m.Ok) << m.Errors;
@@ -378,14 +378,10 @@ TEST(Tetrahedralize, PhantomThroughTheChain)
             << before.MinimumDihedral << "; improved: mean Q " << after.Mean << ", worst " << after.Worst
             << " (off the surface " << after.WorstInside << "), " << after.Above10
             << " above 10, smallest dihedral " << after.MinimumDihedral << "\n";
-  // Measured: mean 1.570 -> 1.386, 30 -> 21 elements above Q = 10, worst off the surface
-  // 10.7 -> 4.7 (with the remeshing of stop 16: 1.571 -> 1.386, 33 -> 29, 12.0 -> 5.6; before short
-  // closed junction loops were held by the smoothing: 73 -> 59 and
-  // 165 -> 47, those loops shrank to edges of micrometres; with the remesher of stop 14: 112 -> 81,
-  // 170 -> 94). What is left mostly stands on the surface. The
-  // worst elements stand on surface triangles with angles of a few degrees or span two surface
-  // sheets a voxel apart (all four vertices fixed): no flip or move inside can mend those (see
-  // README), so the worst Q stays.
+  // The improvement lowers the mean and the worst element off the surface; the worst elements
+  // that remain stand on surface triangles with angles of a few degrees or span two surface
+  // sheets a voxel apart (all four vertices on the kept surface): no flip or interior move can
+  // mend those, so the worst Q may stay.
   EXPECT_LT(after.Mean, 1.42);
   EXPECT_LT(after.Mean, before.Mean - 0.1);
   EXPECT_LE(after.Worst, before.Worst);
