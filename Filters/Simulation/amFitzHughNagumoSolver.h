@@ -11,8 +11,9 @@
  *
  * Defaults: c1 = 0.26/ms, c2 = 0.1/ms, c3 = 0.013/ms, c4 = 1, a = 0.13 — Rogers & McCulloch,
  * IEEE Trans. Biomed. Eng. 41:743-757 (1994), with their time unit taken as 1 ms as the paper's
- * 500 ms cycle implies. Conductivity 3.5 mm^2/ms makes the plane-wave speed of the bistable
- * front, c = sqrt(c1 Sigma / 2)(1 - 2a), 0.50 m/s, a typical ventricular conduction velocity.
+ * 500 ms cycle implies. Conductivity 3.5 mm^2/ms makes the speed of the bistable front (the
+ * recovery variable frozen), c = sqrt(c1 Sigma / 2)(1 - 2a), 0.50 mm/ms; the recovery variable
+ * slows the full model's wave below that.
  *
  * Discretisation: P1 elements, consistent mass M and stiffness K (amP1Assembly); first-order
  * semi-implicit (IMEX) Euler: (M + dt K) u^{n+1} = M (u^n + dt f(u^n, v^n)), the reaction explicit,

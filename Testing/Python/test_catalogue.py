@@ -46,6 +46,35 @@ class CatalogueMatchesClasses(unittest.TestCase):
             for prop in proxy.properties.values():
                 self.assertTrue(prop.documentation, "%s.%s has no documentation" % (name, prop.name))
 
+    def test_xml_defaults_equal_the_classes_defaults(self):
+        """ParaView (which applies the XML defaults) and Python or the pipeline runner (which start
+        from the class's own) must compute the same thing when nothing is set."""
+        checked, mismatches = 0, []
+        for name, proxy in catalogue.load().items():
+            obj = getattr(anatomesh, proxy.class_name)()
+            for prop in proxy.properties.values():
+                if (prop.kind == "input" or prop.defaults is None or prop.repeat_command
+                        or not prop.command.startswith("Set")):
+                    continue
+                getter = getattr(obj, "G" + prop.command[1:], None)
+                if getter is None:
+                    continue
+                try:
+                    got = getter()
+                except TypeError:  # a getter that needs an argument (e.g. an indexed value)
+                    continue
+                checked += 1
+                if prop.kind == "string":
+                    same = (got or "") == prop.defaults[0]
+                else:
+                    got = list(got) if isinstance(got, (tuple, list)) else [got]
+                    same = len(got) == len(prop.defaults) and all(
+                        abs(float(g) - float(d)) <= 1e-12 * max(1.0, abs(float(d))) for g, d in zip(got, prop.defaults))
+                if not same:
+                    mismatches.append("%s.%s: XML %s, class %s" % (name, prop.name, " ".join(prop.defaults), got))
+        self.assertGreater(checked, 100)
+        self.assertEqual(mismatches, [])
+
     def test_output_ports(self):
         proxies = catalogue.load()
         src = anatomesh.amThoraxPhantomSource()
