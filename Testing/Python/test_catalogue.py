@@ -65,7 +65,7 @@ class CatalogueMatchesClasses(unittest.TestCase):
                     continue
                 checked += 1
                 if prop.kind == "string":
-                    same = (got or "") == prop.defaults[0]
+                    same = (got or "") == (prop.defaults[0] if prop.defaults else "")
                 else:
                     got = list(got) if isinstance(got, (tuple, list)) else [got]
                     same = len(got) == len(prop.defaults) and all(
