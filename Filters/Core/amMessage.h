@@ -12,7 +12,7 @@
 class amMessage
 {
 public:
-  template <typename T>
+  template<typename T>
   amMessage& operator<<(const T& part)
   {
     this->Text << part;

@@ -17,9 +17,9 @@
 
 namespace amSnakeLevelSet
 {
-template <unsigned D>
+template<unsigned D>
 using FloatImage = itk::Image<float, D>;
-template <unsigned D>
+template<unsigned D>
 using MaskImage = itk::Image<unsigned char, D>;
 
 struct Parameters
@@ -29,7 +29,7 @@ struct Parameters
 
 /// Evolve a threshold level set (ITK's ThresholdSegmentationLevelSetImageFilter) from phi0
 /// (negative inside) on 'feature'; returns the inside mask.
-template <unsigned D>
+template<unsigned D>
 typename MaskImage<D>::Pointer Evolve(FloatImage<D>* feature, FloatImage<D>* phi0, double lo, double hi,
   const Parameters& p, int iterations, const std::function<void(double)>& progress)
 {
@@ -60,7 +60,7 @@ typename MaskImage<D>::Pointer Evolve(FloatImage<D>* feature, FloatImage<D>* phi
 }
 
 /// Signed distance (mm) to the mask's boundary, negative inside.
-template <unsigned D>
+template<unsigned D>
 typename FloatImage<D>::Pointer SignedDistance(MaskImage<D>* mask)
 {
   auto dist = itk::SignedMaurerDistanceMapImageFilter<MaskImage<D>, FloatImage<D>>::New();
@@ -73,7 +73,7 @@ typename FloatImage<D>::Pointer SignedDistance(MaskImage<D>* mask)
   return dist->GetOutput();
 }
 
-template <unsigned D>
+template<unsigned D>
 size_t Count(const MaskImage<D>* m)
 {
   const size_t n = m->GetLargestPossibleRegion().GetNumberOfPixels();
@@ -81,7 +81,7 @@ size_t Count(const MaskImage<D>* m)
 }
 
 /// Keep the connected components of 'mask' that overlap 'reference'.
-template <unsigned D>
+template<unsigned D>
 void KeepOverlapping(MaskImage<D>* mask, const MaskImage<D>* reference)
 {
   using LabelImage = itk::Image<unsigned int, D>;
@@ -103,8 +103,8 @@ void KeepOverlapping(MaskImage<D>* mask, const MaskImage<D>* reference)
 /// Slice-by-slice refinement: move the interval's edge that faces the section's surroundings
 /// half-way between the section's mean and that of a ring 2..4 pixels outside it, and evolve
 /// again from the section. Returns the refined mask (or the input when nothing changes).
-inline MaskImage<2>::Pointer RefineSection(FloatImage<2>* feature, MaskImage<2>* section, double& lo, double& hi,
-  const Parameters& p, int iterations)
+inline MaskImage<2>::Pointer RefineSection(
+  FloatImage<2>* feature, MaskImage<2>* section, double& lo, double& hi, const Parameters& p, int iterations)
 {
   auto dist = SignedDistance<2>(section);
   const double px = std::max(feature->GetSpacing()[0], feature->GetSpacing()[1]);

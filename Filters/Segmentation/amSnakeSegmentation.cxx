@@ -18,7 +18,6 @@
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -135,8 +134,8 @@ int amSnakeSegmentation::RequestData(
   auto addSeed = [&](const double x[3], int label) -> bool {
     if (label < 1 || label > 255)
     {
-      vtkErrorMacro("Seed (" << x[0] << ", " << x[1] << ", " << x[2] << ") has label " << label
-                             << "; labels are 1..255.");
+      vtkErrorMacro(
+        "Seed (" << x[0] << ", " << x[1] << ", " << x[2] << ") has label " << label << "; labels are 1..255.");
       return false;
     }
     Seed s;
@@ -171,7 +170,8 @@ int amSnakeSegmentation::RequestData(
   }
   if (seedSet)
   {
-    vtkDataArray* labels = this->SeedLabelArrayName ? seedSet->GetPointData()->GetArray(this->SeedLabelArrayName) : nullptr;
+    vtkDataArray* labels =
+      this->SeedLabelArrayName ? seedSet->GetPointData()->GetArray(this->SeedLabelArrayName) : nullptr;
     for (vtkIdType i = 0; i < seedSet->GetNumberOfPoints(); ++i)
     {
       double x[3];

@@ -13,7 +13,7 @@ using namespace amSnakeLevelSet;
 namespace
 {
 /// An ITK image of the region's size and spacing.
-template <typename Image>
+template<typename Image>
 typename Image::Pointer NewImage(const int size[3], const double spacing[3])
 {
   auto image = Image::New();
@@ -72,7 +72,8 @@ void amSnakeTracker::MeasureSeeds(const std::vector<std::array<double, 3>>& seed
       static_cast<int>(std::ceil(this->P.SeedRadius / this->Spacing[1])),
       static_cast<int>(std::ceil(this->P.SeedRadius / this->Spacing[2])) };
     const int c[3] = { static_cast<int>(std::lround(seeds[s][0])) - this->Lo[0],
-      static_cast<int>(std::lround(seeds[s][1])) - this->Lo[1], static_cast<int>(std::lround(seeds[s][2])) - this->Lo[2] };
+      static_cast<int>(std::lround(seeds[s][1])) - this->Lo[1],
+      static_cast<int>(std::lround(seeds[s][2])) - this->Lo[2] };
     double ssum = 0, ssum2 = 0;
     long scount = 0;
     for (int k = std::max(0, c[2] - r[2]); k <= std::min(rd[2] - 1, c[2] + r[2]); ++k)
@@ -213,8 +214,8 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
     progress = [this, pa, pb](double f) { this->Progress(pa + pb * f); };
   try
   {
-    auto mask = Evolve<3>(feature, phi, lo, hi, lsp,
-      initial ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations, progress);
+    auto mask = Evolve<3>(
+      feature, phi, lo, hi, lsp, initial ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations, progress);
     std::copy(mask->GetBufferPointer(), mask->GetBufferPointer() + this->InsideMask.size(), this->InsideMask.begin());
   }
   catch (const itk::ExceptionObject& e)

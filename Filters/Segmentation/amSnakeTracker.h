@@ -119,10 +119,7 @@ private:
     if (this->Progress)
       this->Progress(fraction);
   }
-  size_t At(int i, int j, int k) const
-  {
-    return (static_cast<size_t>(k) * this->Size[1] + j) * this->Size[0] + i;
-  }
+  size_t At(int i, int j, int k) const { return (static_cast<size_t>(k) * this->Size[1] + j) * this->Size[0] + i; }
 
   Parameters P;
   double Spacing[3];

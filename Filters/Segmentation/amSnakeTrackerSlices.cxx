@@ -48,7 +48,8 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
   std::vector<char> done(static_cast<size_t>(ns), 0);
   std::map<int, std::vector<size_t>> bySlice; // seeds by their slice
   for (size_t s = 0; s < this->Seeds.size(); ++s)
-    bySlice[std::min(ns - 1, std::max(0, static_cast<int>(std::lround(this->Seeds[s][ax])) - this->Lo[ax]))].push_back(s);
+    bySlice[std::min(ns - 1, std::max(0, static_cast<int>(std::lround(this->Seeds[s][ax])) - this->Lo[ax]))].push_back(
+      s);
   const int iterations2 = std::min(this->P.NumberOfIterations, 400);
   size_t started = 0;
   for (const auto& entry : bySlice)

@@ -172,8 +172,8 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
       continue;
     if (input->GetCellType(c) != VTK_TETRA)
     {
-      vtkErrorMacro(<< "cell " << c << " of the heart is not a tetrahedron (VTK cell type "
-                    << input->GetCellType(c) << "); the solver needs a tetrahedral mesh");
+      vtkErrorMacro(<< "cell " << c << " of the heart is not a tetrahedron (VTK cell type " << input->GetCellType(c)
+                    << "); the solver needs a tetrahedral mesh");
       return 0;
     }
     heartCells.push_back(c);
@@ -201,8 +201,8 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   }
   if (this->StimulusDuration < dt)
   {
-    vtkErrorMacro(<< "the stimulus lasts " << this->StimulusDuration << " ms, less than one time step ("
-                  << dt << " ms): it would be missed");
+    vtkErrorMacro(<< "the stimulus lasts " << this->StimulusDuration << " ms, less than one time step (" << dt
+                  << " ms): it would be missed");
     return 0;
   }
 
@@ -354,9 +354,9 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   for (std::size_t k = 0; k < this->HeartRegions.size(); ++k)
     params << (k ? "," : "") << this->HeartRegions[k];
   params << " Conductivity=" << this->Conductivity << " C1=" << c1 << " C2=" << c2 << " C3=" << c3 << " C4=" << c4
-         << " A=" << a << " TimeStep=" << dt << " EndTime=" << this->EndTime << " Stimulus=("
-         << this->StimulusCenter[0] << "," << this->StimulusCenter[1] << "," << this->StimulusCenter[2]
-         << ") r=" << this->StimulusRadius << " region=" << this->StimulusRegion << " start=" << this->StimulusStart
+         << " A=" << a << " TimeStep=" << dt << " EndTime=" << this->EndTime << " Stimulus=(" << this->StimulusCenter[0]
+         << "," << this->StimulusCenter[1] << "," << this->StimulusCenter[2] << ") r=" << this->StimulusRadius
+         << " region=" << this->StimulusRegion << " start=" << this->StimulusStart
          << " duration=" << this->StimulusDuration << " strength=" << this->StimulusStrength;
   amProvenance::Record(heart, input, "amFitzHughNagumoSolver", params.str());
   this->Cache = std::move(run);
@@ -374,8 +374,8 @@ int amFitzHughNagumoSolver::RequestData(
     vtkErrorMacro(<< "no input mesh");
     return 0;
   }
-  const bool stale = !this->Cache || this->Cache->InputTime != input->GetMTime() ||
-    this->Cache->FilterTime != this->GetMTime();
+  const bool stale =
+    !this->Cache || this->Cache->InputTime != input->GetMTime() || this->Cache->FilterTime != this->GetMTime();
   if (stale)
   {
     this->Cache.reset();
@@ -428,8 +428,8 @@ void amFitzHughNagumoSolver::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Conductivity: " << this->Conductivity << "\n";
-  os << indent << "C1, C2, C3, C4, A: " << this->C1 << ", " << this->C2 << ", " << this->C3 << ", " << this->C4
-     << ", " << this->A << "\n";
+  os << indent << "C1, C2, C3, C4, A: " << this->C1 << ", " << this->C2 << ", " << this->C3 << ", " << this->C4 << ", "
+     << this->A << "\n";
   os << indent << "TimeStep: " << this->TimeStep << " EndTime: " << this->EndTime
      << " OutputInterval: " << this->OutputInterval << "\n";
   os << indent << "StimulusCenter: " << this->StimulusCenter[0] << " " << this->StimulusCenter[1] << " "

@@ -46,8 +46,8 @@ bool amFitzHughNagumoStepper::Step(double t)
   const double dt = this->P.TimeStep;
   const double c1 = this->P.C1, c2 = this->P.C2, c3 = this->P.C3, c4 = this->P.C4, a = this->P.A;
   const double theta = this->P.ActivationThreshold;
-  const double stim = (t + 1e-9 * dt >= this->P.StimulusStart &&
-                        t < this->P.StimulusStart + this->P.StimulusDuration - 1e-9 * dt)
+  const double stim =
+    (t + 1e-9 * dt >= this->P.StimulusStart && t < this->P.StimulusStart + this->P.StimulusDuration - 1e-9 * dt)
     ? this->P.StimulusStrength
     : 0.0;
   const double* up = this->U.data();

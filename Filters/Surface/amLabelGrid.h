@@ -52,7 +52,8 @@ struct amLabelGrid
   void CornerLabels(int ci, int cj, int ck, int lab[8]) const
   {
     for (int o = 0; o < 8; ++o)
-      lab[o] = this->Label(ci - 1 + amLabelCorners::Bit(o, 0), cj - 1 + amLabelCorners::Bit(o, 1), ck - 1 + amLabelCorners::Bit(o, 2));
+      lab[o] = this->Label(
+        ci - 1 + amLabelCorners::Bit(o, 0), cj - 1 + amLabelCorners::Bit(o, 1), ck - 1 + amLabelCorners::Bit(o, 2));
   }
   /// True when the 8 voxels around the corner hold one label; otherwise fills lab.
   bool UniformCorner(int ci, int cj, int ck, int lab[8]) const

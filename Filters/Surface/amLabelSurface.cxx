@@ -62,8 +62,7 @@ int amLabelSurface::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
-int amLabelSurface::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -89,8 +88,7 @@ int amLabelSurface::RequestData(
   for (int d = 0; d < 3; ++d)
     if (!(g.Spacing[d] > 0))
     {
-      vtkErrorMacro("The label map's spacing along axis " << d << " is " << g.Spacing[d]
-                                                          << "; it must be positive.");
+      vtkErrorMacro("The label map's spacing along axis " << d << " is " << g.Spacing[d] << "; it must be positive.");
       return 0;
     }
   const vtkIdType nVox = scalars->GetNumberOfTuples();
@@ -203,8 +201,8 @@ int amLabelSurface::RequestData(
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
   points->SetNumberOfPoints(static_cast<vtkIdType>(extractor.Points.size() / 3));
-  std::copy(extractor.Points.begin(), extractor.Points.end(),
-    static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0));
+  std::copy(
+    extractor.Points.begin(), extractor.Points.end(), static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0));
   std::vector<float>().swap(extractor.Points);
   const vtkIdType nTri = static_cast<vtkIdType>(extractor.Labels.size() / 2);
   vtkNew<vtkIdTypeArray> offsets, connectivity;
@@ -263,8 +261,8 @@ int amLabelSurface::RequestData(
     for (const auto& r : regions)
       if (r.BoundaryEdges || r.NonManifoldEdges || r.MisorientedEdges)
         vtkWarningMacro("Region " << r.Label << " is not a closed oriented manifold: " << r.BoundaryEdges
-                                  << " boundary, " << r.NonManifoldEdges << " non-manifold, "
-                                  << r.MisorientedEdges << " misoriented edges.");
+                                  << " boundary, " << r.NonManifoldEdges << " non-manifold, " << r.MisorientedEdges
+                                  << " misoriented edges.");
   }
   this->UpdateProgress(1.0);
   return 1;

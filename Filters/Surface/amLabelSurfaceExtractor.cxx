@@ -81,8 +81,8 @@ void amLabelSurfaceExtractor::FindCorners()
             const int v[3] = { ci - 1 + Bit(o, 0), cj - 1 + Bit(o, 1), static_cast<int>(ck) - 1 + Bit(o, 2) };
             if (v[0] < 0 || v[1] < 0 || v[2] < 0 || v[0] >= g.N[0] || v[1] >= g.N[1] || v[2] >= g.N[2])
               continue; // outside the image: the background cannot change
-            changes[ck].push_back({ (static_cast<size_t>(v[2]) * g.N[1] + v[1]) * g.N[0] + v[0],
-              static_cast<std::uint16_t>(newLabel) });
+            changes[ck].push_back(
+              { (static_cast<size_t>(v[2]) * g.N[1] + v[1]) * g.N[0] + v[0], static_cast<std::uint16_t>(newLabel) });
           }
           g.RowStart[row + 1] = static_cast<vtkIdType>(slabEntries[ck].size() - before);
         }
@@ -240,8 +240,8 @@ void amLabelSurfaceExtractor::Faces()
             bool special = false;
             for (int t = 0; t < 4 && !special; ++t)
             {
-              const EdgeInfo e = this->EdgeAround(axis, p, Loop[t][0], Loop[t][1], Loop[(t + 1) % 4][0],
-                Loop[(t + 1) % 4][1]);
+              const EdgeInfo e =
+                this->EdgeAround(axis, p, Loop[t][0], Loop[t][1], Loop[(t + 1) % 4][0], Loop[(t + 1) % 4][1]);
               special = ResolveEdge(e.Q) >= 0;
             }
             if (special)
@@ -301,8 +301,9 @@ void amLabelSurfaceExtractor::ResolvedEdgeFaces()
         const int* wrapped = la != connected ? p : q;
         const vtkIdType edgeKey = g.Corner(e.Lo[0], e.Lo[1], e.Lo[2]);
         resolvedEdgeSet[{ edgeKey, e.Axis }] = true;
-        const vtkIdType wrappedKey = ((static_cast<vtkIdType>(wrapped[2]) + 1) * (g.N[1] + 2) +
-                                       (wrapped[1] + 1)) * (g.N[0] + 2) + (wrapped[0] + 1);
+        const vtkIdType wrappedKey =
+          ((static_cast<vtkIdType>(wrapped[2]) + 1) * (g.N[1] + 2) + (wrapped[1] + 1)) * (g.N[0] + 2) +
+          (wrapped[0] + 1);
         const auto key = std::make_tuple(edgeKey, e.Axis, wrappedKey);
         auto it = midpoints.find(key);
         if (it == midpoints.end())

@@ -61,7 +61,7 @@ int amMetricRemeshing::RequestData(
       if (mesh.EdgeTriangleStart[e + 1] - mesh.EdgeTriangleStart[e] > 2)
       {
         vtkErrorMacro("The surface has a non-manifold edge (" << mesh.Edges[e][0] << ", " << mesh.Edges[e][1]
-                                                             << ") and no \"Labels\" to tell its interfaces apart.");
+                                                              << ") and no \"Labels\" to tell its interfaces apart.");
         return 0;
       }
   // The metric per vertex: the point data (xx, yy, zz, xy, yz, xz), or the uniform TargetSize.
@@ -94,8 +94,7 @@ int amMetricRemeshing::RequestData(
   this->HausdorffUpperBound = upper;
   this->InsertedPoints = result.Inserted;
   if (h > this->Tolerance)
-    vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance "
-                                                              << this->Tolerance
+    vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance " << this->Tolerance
                                                               << " mm: refining further would make triangles cross "
                                                                  "(near junction curves or thin parts of the input).");
   this->UpdateProgress(0.95);

@@ -118,8 +118,8 @@ std::string RunTetGen(std::string& switches, tetgenio& in, amTetGenRun::Result& 
     }
     if (code == 0 && (!out.neighborlist || !out.trifacemarkerlist || !out.tetrahedronlist))
       code = 2;
-    const long long header[4] = { code, code ? 0 : out.numberofpoints,
-      code ? 0 : out.numberoftetrahedra, code ? 0 : out.numberoftrifaces };
+    const long long header[4] = { code, code ? 0 : out.numberofpoints, code ? 0 : out.numberoftetrahedra,
+      code ? 0 : out.numberoftrifaces };
     bool ok = WriteAll(fds[1], header, sizeof(header));
     if (ok && code == 0)
       ok = WriteAll(fds[1], out.pointlist, sizeof(REAL) * 3 * header[1]) &&
@@ -191,8 +191,7 @@ std::string RunTetGen(std::string& switches, tetgenio& in, amTetGenRun::Result& 
     else if (said.find("duplicated") != std::string::npos || said.find("very close") != std::string::npos)
       result.Code = 5;
     return std::string("TetGen stopped") +
-      (WIFSIGNALED(status) ? " (signal " + std::to_string(WTERMSIG(status)) + ")" : std::string()) +
-      "." + tetgenSaid;
+      (WIFSIGNALED(status) ? " (signal " + std::to_string(WTERMSIG(status)) + ")" : std::string()) + "." + tetgenSaid;
   }
   std::memcpy(header, data.data(), sizeof(header));
   result.Code = static_cast<int>(header[0]);
@@ -201,11 +200,11 @@ std::string RunTetGen(std::string& switches, tetgenio& in, amTetGenRun::Result& 
   result.NumberOfPoints = header[1];
   result.NumberOfTetrahedra = header[2];
   result.NumberOfFaces = header[3];
-  const size_t expected = sizeof(header) + sizeof(double) * 3 * header[1] + sizeof(int) * 8 * header[2] +
-    sizeof(int) * 4 * header[3];
+  const size_t expected =
+    sizeof(header) + sizeof(double) * 3 * header[1] + sizeof(int) * 8 * header[2] + sizeof(int) * 4 * header[3];
   if (data.size() != expected)
-    return "TetGen's result was cut short (" + std::to_string(data.size()) + " of " +
-      std::to_string(expected) + " bytes).";
+    return "TetGen's result was cut short (" + std::to_string(data.size()) + " of " + std::to_string(expected) +
+      " bytes).";
   const char* p = data.data() + sizeof(header);
   auto take = [&p](auto& v, size_t n) {
     v.resize(n);

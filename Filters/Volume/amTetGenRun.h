@@ -34,14 +34,14 @@ public:
   {
     int Code = 0; // TetGen's error code, 0 on success
     vtkIdType NumberOfPoints = 0, NumberOfTetrahedra = 0, NumberOfFaces = 0;
-    std::vector<double> Points;                           // 3 per point; the input's first, in order
+    std::vector<double> Points;                                 // 3 per point; the input's first, in order
     std::vector<int> Tetrahedra, Neighbors, Faces, FaceMarkers; // 4, 4 (-1: none), 3, 1 per item
   };
   /// Tetrahedralizes the surface with TetGen's switches; a tetrahedron whose circumradius
   /// exceeds 0.75 times the size field at its centroid is refined. Returns "" on success, else
   /// why it failed (TetGen's own words included).
-  static std::string Run(const amSurfaceMesh& mesh, const amGradedSizeField& field, const std::string& switches,
-    Result& result);
+  static std::string Run(
+    const amSurfaceMesh& mesh, const amGradedSizeField& field, const std::string& switches, Result& result);
 };
 
 #endif

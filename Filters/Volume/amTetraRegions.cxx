@@ -55,8 +55,8 @@ bool amTetraRegions::Assign(const amSurfaceMesh& mesh, const amTetGenRun::Result
   for (vtkIdType s = 0; s < nSub; ++s)
     if (sourceOf(s) < 0 || sourceOf(s) >= nt)
     {
-      why = amMessage() << "TetGen returned a boundary triangle with no source triangle (marker "
-        << out.FaceMarkers[s] << ").";
+      why = amMessage() << "TetGen returned a boundary triangle with no source triangle (marker " << out.FaceMarkers[s]
+                        << ").";
       return false;
     }
   const int* tets = out.Tetrahedra.data();
@@ -116,8 +116,8 @@ bool amTetraRegions::Assign(const amSurfaceMesh& mesh, const amTetGenRun::Result
     std::sort(conflicting.begin(), conflicting.end());
     conflicting.erase(std::unique(conflicting.begin(), conflicting.end()), conflicting.end());
     why = amMessage() << "The surface's labels are inconsistent: a connected part of the volume is bounded "
-                  "by triangles that give it different labels (triangles "
-      << amTetraSurfaceCheck::List(conflicting) << ").";
+                         "by triangles that give it different labels (triangles "
+                      << amTetraSurfaceCheck::List(conflicting) << ").";
     return false;
   }
   this->Label.resize(static_cast<size_t>(nTets));

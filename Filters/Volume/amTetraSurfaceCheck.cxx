@@ -28,7 +28,7 @@ bool amTetraSurfaceCheck::Check(vtkPolyData* input, const amSurfaceMesh& mesh, i
   if (mesh.Labels.size() != static_cast<size_t>(nt))
   {
     why = amMessage() << "The input surface has no 2-component cell array \"Labels\" (the regions on "
-                  "either side of each triangle, as amLabelSurface makes).";
+                         "either side of each triangle, as amLabelSurface makes).";
     return false;
   }
   {
@@ -51,7 +51,7 @@ bool amTetraSurfaceCheck::Check(vtkPolyData* input, const amSurfaceMesh& mesh, i
     if (!same.empty())
     {
       why = amMessage() << "Triangles " << amTetraSurfaceCheck::List(same)
-                                 << " have the same label on both sides: not an interface.";
+                        << " have the same label on both sides: not an interface.";
       return false;
     }
     if (!degenerate.empty())
@@ -85,7 +85,7 @@ bool amTetraSurfaceCheck::Check(vtkPolyData* input, const amSurfaceMesh& mesh, i
       std::sort(open.begin(), open.end());
       open.erase(std::unique(open.begin(), open.end()), open.end());
       why = amMessage() << "The surface is open: a region's boundary has a free edge at triangles "
-        << amTetraSurfaceCheck::List(open) << ". Every region must be closed to be meshed.";
+                        << amTetraSurfaceCheck::List(open) << ". Every region must be closed to be meshed.";
       return false;
     }
   }
@@ -101,8 +101,8 @@ bool amTetraSurfaceCheck::Check(vtkPolyData* input, const amSurfaceMesh& mesh, i
     if (!(r.Volume > 1e-9 * scale))
     {
       why = amMessage() << "Region " << r.Label << " encloses no volume (" << r.Triangles
-                              << " triangles, enclosed volume " << r.Volume
-                              << " mm^3): it has no interior to mesh, or its triangles face the wrong way.";
+                        << " triangles, enclosed volume " << r.Volume
+                        << " mm^3): it has no interior to mesh, or its triangles face the wrong way.";
       return false;
     }
   }

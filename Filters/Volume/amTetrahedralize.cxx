@@ -5,10 +5,10 @@
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amTetGenRun.h"
-#include "amTetraRegions.h"
-#include "amTetraSurfaceCheck.h"
 #include "amTetraGeometry.h"
 #include "amTetraMeshOptimizer.h"
+#include "amTetraRegions.h"
+#include "amTetraSurfaceCheck.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -29,7 +29,6 @@
 #include <array>
 #include <cmath>
 #include <sstream>
-
 
 vtkStandardNewMacro(amTetrahedralize);
 
@@ -111,9 +110,8 @@ int amTetrahedralize::RequestData(
 
   // --- Sizes ---------------------------------------------------------------------------------------
   std::vector<double> sizes(static_cast<size_t>(np), 0.0);
-  vtkDataArray* sizeArray = this->SizeArrayName && *this->SizeArrayName
-    ? input->GetPointData()->GetArray(this->SizeArrayName)
-    : nullptr;
+  vtkDataArray* sizeArray =
+    this->SizeArrayName && *this->SizeArrayName ? input->GetPointData()->GetArray(this->SizeArrayName) : nullptr;
   if (sizeArray && sizeArray->GetNumberOfComponents() == 1)
   {
     for (vtkIdType v = 0; v < np; ++v)
@@ -121,8 +119,8 @@ int amTetrahedralize::RequestData(
       sizes[v] = sizeArray->GetComponent(v, 0);
       if (!std::isfinite(sizes[v]) || sizes[v] <= 0)
       {
-        vtkErrorMacro("The sizing array \"" << this->SizeArrayName << "\" is " << sizes[v]
-                                            << " at point " << v << ": sizes must be positive.");
+        vtkErrorMacro("The sizing array \"" << this->SizeArrayName << "\" is " << sizes[v] << " at point " << v
+                                            << ": sizes must be positive.");
         return 0;
       }
     }
@@ -172,8 +170,7 @@ int amTetrahedralize::RequestData(
   }
   this->UpdateProgress(0.8);
 
-  const vtkIdType nOutPoints = out.NumberOfPoints, nTets = out.NumberOfTetrahedra,
-                  nSub = out.NumberOfFaces;
+  const vtkIdType nOutPoints = out.NumberOfPoints, nTets = out.NumberOfTetrahedra, nSub = out.NumberOfFaces;
   if (nTets == 0)
   {
     vtkErrorMacro("TetGen produced no tetrahedra.");
@@ -187,8 +184,8 @@ int amTetrahedralize::RequestData(
         same = same && out.Points[3 * v + d] == mesh.Points[v][d];
     if (!same)
     {
-      vtkErrorMacro("TetGen did not keep the input surface (" << nSub << " boundary triangles for "
-                                                              << nt << " input triangles).");
+      vtkErrorMacro(
+        "TetGen did not keep the input surface (" << nSub << " boundary triangles for " << nt << " input triangles).");
       return 0;
     }
   }
@@ -255,8 +252,8 @@ int amTetrahedralize::RequestData(
     vtkIdType ids[4];
     for (int i = 0; i < 4; ++i)
       ids[i] = newPoint[tets[4 * t + i]];
-    if (amTetraGeometry::SignedVolume(P + 3 * tets[4 * t], P + 3 * tets[4 * t + 1], P + 3 * tets[4 * t + 2],
-          P + 3 * tets[4 * t + 3]) < 0)
+    if (amTetraGeometry::SignedVolume(
+          P + 3 * tets[4 * t], P + 3 * tets[4 * t + 1], P + 3 * tets[4 * t + 2], P + 3 * tets[4 * t + 3]) < 0)
       std::swap(ids[0], ids[1]);
     offsets->SetValue(o, 4 * o);
     for (int i = 0; i < 4; ++i)
@@ -321,8 +318,8 @@ int amTetrahedralize::RequestData(
     amTetraMeshOptimizer::Options options;
     options.Passes = this->ImprovementPasses;
     amTetraMeshOptimizer::Report report;
-    if (!amTetraMeshOptimizer::ImproveGrid(output, interfaces, options, report, why,
-          [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
+    if (!amTetraMeshOptimizer::ImproveGrid(
+          output, interfaces, options, report, why, [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
     {
       vtkErrorMacro("Quality improvement: " << why);
       return 0;
@@ -335,10 +332,9 @@ int amTetrahedralize::RequestData(
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
   std::ostringstream params;
-  params << "switches=" << switches << " Gradation=" << this->Gradation
-         << " MaximumSize=" << this->MaximumSize << " ImproveQuality=" << this->ImproveQuality
-         << " ImprovementPasses=" << this->ImprovementPasses << " tetrahedra=" << this->NumberOfTetrahedra
-         << improvement.str();
+  params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
+         << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
+         << " tetrahedra=" << this->NumberOfTetrahedra << improvement.str();
   amProvenance::Record(output, input, "amTetrahedralize", params.str());
   this->UpdateProgress(1.0);
   return 1;

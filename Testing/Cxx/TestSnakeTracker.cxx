@@ -48,9 +48,10 @@ TEST(SnakeTracker, FindsABallInEveryMode)
     const char* Name;
     int Mode, ContourModel;
   };
-  for (const Case& c : { Case{ "3-D level set", amSnakeTracker::Parameters::ThreeD, amSnakeTracker::Parameters::LevelSet },
-         Case{ "slice by slice", amSnakeTracker::Parameters::SliceBySlice, amSnakeTracker::Parameters::LevelSet },
-         Case{ "polar", amSnakeTracker::Parameters::SliceBySlice, amSnakeTracker::Parameters::Polar } })
+  for (const Case& c :
+    { Case{ "3-D level set", amSnakeTracker::Parameters::ThreeD, amSnakeTracker::Parameters::LevelSet },
+      Case{ "slice by slice", amSnakeTracker::Parameters::SliceBySlice, amSnakeTracker::Parameters::LevelSet },
+      Case{ "polar", amSnakeTracker::Parameters::SliceBySlice, amSnakeTracker::Parameters::Polar } })
   {
     amSnakeTracker::Parameters p;
     p.Mode = c.Mode;
@@ -61,7 +62,9 @@ TEST(SnakeTracker, FindsABallInEveryMode)
     tracker.MeasureSeeds({ ball.Centre });
     EXPECT_NEAR(tracker.SeedMean(0), 200.0, 1.0) << c.Name; // the seed ball lies inside, smoothing aside
     std::vector<double> progress;
-    ASSERT_TRUE(tracker.Segment(200.0, [&](double f) { progress.push_back(f); }, nullptr)) << c.Name << tracker.Error;
+    ASSERT_TRUE(tracker.Segment(
+      200.0, [&](double f) { progress.push_back(f); }, nullptr))
+      << c.Name << tracker.Error;
     const double volume = static_cast<double>(Count(tracker.Inside()));
     std::printf("%s: %.0f voxels for a ball of %.0f mm^3, interval [%.0f, %.0f]\n", c.Name, volume, ball.Volume(),
       tracker.Lower(), tracker.Upper());

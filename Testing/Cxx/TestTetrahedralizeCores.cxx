@@ -122,8 +122,8 @@ TEST(TetraRegions, EveryTetrahedronInItsBlock)
   {
     const int* v = &out.Tetrahedra[4 * t];
     const double* p = out.Points.data();
-    volume[regions.Label[t]] += std::abs(
-      amTetraGeometry::SignedVolume(p + 3 * v[0], p + 3 * v[1], p + 3 * v[2], p + 3 * v[3]));
+    volume[regions.Label[t]] +=
+      std::abs(amTetraGeometry::SignedVolume(p + 3 * v[0], p + 3 * v[1], p + 3 * v[2], p + 3 * v[3]));
   }
   EXPECT_NEAR(volume[1], 8.0, 1e-9);
   EXPECT_NEAR(volume[2], 8.0, 1e-9);

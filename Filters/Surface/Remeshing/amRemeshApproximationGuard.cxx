@@ -40,10 +40,9 @@ bool ApproximationGuard::StarNear(const std::vector<std::array<int, 3>>& ids,
   return true;
 }
 
-bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed,
-  const std::vector<std::array<int, 3>>& ids, const std::vector<std::array<Vec3, 3>>& pos,
-  const std::vector<int>& sheets, const std::vector<int>& newIds, const std::vector<int>& affected, Worker& worker,
-  int from, int into) const
+bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed, const std::vector<std::array<int, 3>>& ids,
+  const std::vector<std::array<Vec3, 3>>& pos, const std::vector<int>& sheets, const std::vector<int>& newIds,
+  const std::vector<int>& affected, Worker& worker, int from, int into) const
 {
   const Surface& S = this->S;
   const double eps2 = this->In.Eps * this->In.Eps;
@@ -84,8 +83,7 @@ bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed,
       double cl[3];
       auto within = [&](const StarTriangle& q) {
         return q.Sheet == sheet &&
-          amTriangleLocator::ClosestPointOnTriangle(x.data(), q.X[0].data(), q.X[1].data(), q.X[2].data(), cl) <=
-          eps2;
+          amTriangleLocator::ClosestPointOnTriangle(x.data(), q.X[0].data(), q.X[1].data(), q.X[2].data(), cl) <= eps2;
       };
       if (first >= 0)
         for (const auto& q : star)
@@ -113,8 +111,7 @@ bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed,
         {
           // (Membership of w's star, not the triangle's own record: a hint may be stale, and a
           // stale hint's triangle may lie on the other worker's side.)
-          if (owner == w && entry.Hint >= 0 &&
-            std::find(removed.begin(), removed.end(), entry.Hint) == removed.end() &&
+          if (owner == w && entry.Hint >= 0 && std::find(removed.begin(), removed.end(), entry.Hint) == removed.end() &&
             std::find(S.VT[w].begin(), S.VT[w].end(), entry.Hint) != S.VT[w].end())
             continue; // still within Eps of the same, untouched triangle
           gather();

@@ -31,7 +31,7 @@ public:
   Bins(const Bins&) = delete;
   Bins& operator=(const Bins&) = delete;
 
-  double Size = 1.0; // bin side
+  double Size = 1.0;                                                  // bin side
   std::array<std::unordered_map<long long, std::vector<int>>, 3> Map; // per zone: key -> triangles
   int SplitAxis = 0;
   long long SplitIndex = 0;
@@ -42,20 +42,14 @@ public:
   /// triangle and its three corners are read only for the triangles that pass it.
   std::vector<std::array<float, 6>> BinnedBox;
 
-  int ZoneOf(long long index) const
-  {
-    return index < this->SplitIndex ? 0 : (index > this->SplitIndex ? 1 : 2);
-  }
+  int ZoneOf(long long index) const { return index < this->SplitIndex ? 0 : (index > this->SplitIndex ? 1 : 2); }
   /// The zone of the bins holding point x.
   int ZoneAt(const Vec3& x) const
   {
     return this->ZoneOf(static_cast<long long>(std::floor(x[this->SplitAxis] / this->Size)));
   }
   /// Whether the box lies in zone z's bins.
-  bool BoxInZone(const Vec3& lo, const Vec3& hi, int z) const
-  {
-    return this->ZoneAt(lo) == z && this->ZoneAt(hi) == z;
-  }
+  bool BoxInZone(const Vec3& lo, const Vec3& hi, int z) const { return this->ZoneAt(lo) == z && this->ZoneAt(hi) == z; }
   static long long Key(long long i, long long j, long long k)
   {
     return ((i + (1 << 20)) << 42) | ((j + (1 << 20)) << 21) | (k + (1 << 20));
@@ -66,7 +60,7 @@ public:
     hi = p[0].cwiseMax(p[1]).cwiseMax(p[2]);
   }
   /// Calls f(key, zone) for every bin the box touches.
-  template <typename F>
+  template<typename F>
   void ForBins(const Vec3& lo, const Vec3& hi, F f) const
   {
     long long l[3], h[3];
@@ -86,7 +80,7 @@ public:
   /// The bin range of triangle t now; its float box into 'box' when given.
   std::array<int, 6> Range(int t, std::array<float, 6>* box = nullptr) const;
   /// Calls f(key, zone) for the bins of range r outside range 'except' (null: none).
-  template <typename F>
+  template<typename F>
   void ForRange(const std::array<int, 6>& r, const std::array<int, 6>* except, F f) const
   {
     for (long long i = r[0]; i <= r[3]; ++i)

@@ -20,7 +20,8 @@ int Remesher::SmallAngleCleanup()
     double angle[3];
     for (int k = 0; k < 3; ++k)
     {
-      const Vec3 u = this->Mesh.P[w[(k + 1) % 3]] - this->Mesh.P[w[k]], v = this->Mesh.P[w[(k + 2) % 3]] - this->Mesh.P[w[k]];
+      const Vec3 u = this->Mesh.P[w[(k + 1) % 3]] - this->Mesh.P[w[k]],
+                 v = this->Mesh.P[w[(k + 2) % 3]] - this->Mesh.P[w[k]];
       angle[k] = std::acos(std::max(-1.0, std::min(1.0, u.dot(v) / (u.norm() * v.norm()))));
     }
     const int small = static_cast<int>(std::min_element(angle, angle + 3) - angle);
@@ -32,7 +33,8 @@ int Remesher::SmallAngleCleanup()
     if (angle[large] > 0.5 * M_PI)
     {
       // A cap: its longest edge (a, b) faces the obtuse apex, which goes to the nearer end.
-      const bool aNearer = (this->Mesh.P[apex] - this->Mesh.P[a]).norm() < (this->Mesh.P[apex] - this->Mesh.P[b]).norm();
+      const bool aNearer =
+        (this->Mesh.P[apex] - this->Mesh.P[a]).norm() < (this->Mesh.P[apex] - this->Mesh.P[b]).norm();
       ok = this->Flip(std::min(a, b), std::max(a, b)) || this->Collapse(apex, aNearer ? a : b) ||
         this->Collapse(apex, aNearer ? b : a);
     }
@@ -41,7 +43,7 @@ int Remesher::SmallAngleCleanup()
       // A needle: its short edge is opposite the small angle.
       const int p = w[(small + 1) % 3], q = w[(small + 2) % 3];
       ok = this->Mesh.Kind[p] <= this->Mesh.Kind[q] ? (this->Collapse(p, q) || this->Collapse(q, p))
-                                          : (this->Collapse(q, p) || this->Collapse(p, q));
+                                                    : (this->Collapse(q, p) || this->Collapse(p, q));
     }
     done += ok;
   }

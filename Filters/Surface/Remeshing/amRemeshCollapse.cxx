@@ -17,9 +17,9 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
   if (!this->Mesh.VAlive[a] || !this->Mesh.VAlive[b] || this->Mesh.Kind[a] == amSurfaceMesh::Corner)
     return false;
   Worker& worker = this->W();
-  auto &edge = worker.C.Edge, &na = worker.C.Na, &nb = worker.C.Nb, &common = worker.C.Common,
-       &apex = worker.C.Apex, &changed = worker.C.Changed, &removed = worker.C.Removed,
-       &sheets = worker.C.Sheets, &affected = worker.C.Affected;
+  auto &edge = worker.C.Edge, &na = worker.C.Na, &nb = worker.C.Nb, &common = worker.C.Common, &apex = worker.C.Apex,
+       &changed = worker.C.Changed, &removed = worker.C.Removed, &sheets = worker.C.Sheets,
+       &affected = worker.C.Affected;
   auto& ids = worker.C.Ids;
   auto& pos = worker.C.Pos;
   this->Mesh.EdgeTriangles(a, b, edge);
@@ -46,7 +46,9 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
   // is flat enough to turn inside out when its vertices are moved onto the input (an inverted
   // bubble whose labels contradict the volume around it, which Tetrahedralize refuses).
   // (A worker does not search: it only takes edges whose components are surely larger.)
-  if (na.size() < 5 && (CurrentZone() < 0 ? this->Mesh.ComponentAtMost(a, 5) : !this->Parts.SurelyMoreThan(a, 5, this->W(), CurrentZone())))
+  if (na.size() < 5 &&
+    (CurrentZone() < 0 ? this->Mesh.ComponentAtMost(a, 5)
+                       : !this->Parts.SurelyMoreThan(a, 5, this->W(), CurrentZone())))
     return false; // a and five neighbours are six already
   // The triangles that change: a's (a becomes b) and, when b moves, b's.
   const Vec3 x = to ? *to : this->Mesh.P[b];
@@ -184,7 +186,7 @@ int Remesher::TryCollapse(int a, int b)
     return 0;
   // Remove the less constrained end first.
   if (this->Mesh.Kind[a] <= this->Mesh.Kind[b] ? (this->Collapse(a, b) || this->Collapse(b, a))
-                                     : (this->Collapse(b, a) || this->Collapse(a, b)))
+                                               : (this->Collapse(b, a) || this->Collapse(a, b)))
     return 1;
   bool outside = false;
   if (this->CollapseToMiddle(a, b, outside))
@@ -243,18 +245,15 @@ int Remesher::CollapsePass()
   // Two workers, one on each side of the split plane (see OnTwoWorkers): a collapse changes
   // only the triangles, links, positions and clusters of the stars of a and b.
   this->Parts.Find(this->Mesh, this->Grid, this->Workers);
-  return OnTwoWorkers(this->Mesh, 
-    cand.size(),
-    [&](size_t i) {
-      const int za = this->Grid.ZoneAt(this->Mesh.P[cand[i].A]), zb = this->Grid.ZoneAt(this->Mesh.P[cand[i].B]);
-      return za == zb ? za : 2;
-    },
+  return OnTwoWorkers(
+    this->Mesh, cand.size(), [&](size_t i) { return this->EdgeZone(cand[i].A, cand[i].B); },
     [&](size_t i) {
       const int a = cand[i].A, b = cand[i].B;
       // Small fragments are left to the serial pass: there the test for them searches the
       // whole component.
       if (CurrentZone() >= 0 &&
-        (!this->StarsInZone(a, b, CurrentZone()) || !this->Parts.SurelyMoreThan(a, 5, this->W(), CurrentZone()) || !this->Parts.SurelyMoreThan(b, 5, this->W(), CurrentZone())))
+        (!this->StarsInZone(a, b, CurrentZone()) || !this->Parts.SurelyMoreThan(a, 5, this->W(), CurrentZone()) ||
+          !this->Parts.SurelyMoreThan(b, 5, this->W(), CurrentZone())))
         return this->Mesh.VAlive[a] && this->Mesh.VAlive[b] ? -1 : 0;
       return this->TryCollapse(a, b);
     });

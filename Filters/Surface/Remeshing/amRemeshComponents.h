@@ -20,8 +20,8 @@ namespace amRemesh
 class ANATOMESHFILTERSSURFACE_EXPORT Components
 {
 public:
-  std::vector<int> Of;                      // per vertex: its component (-1: none)
-  std::vector<std::array<int, 3>> Count;    // per component: vertices in zone 0, in zone 1, in all
+  std::vector<int> Of;                   // per vertex: its component (-1: none)
+  std::vector<std::array<int, 3>> Count; // per component: vertices in zone 0, in zone 1, in all
 
   /// The components of the live triangles now; every worker's Removed counts reset.
   void Find(const Surface& surface, const Bins& bins, std::array<Worker, 2>& workers);

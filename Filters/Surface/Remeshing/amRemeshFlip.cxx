@@ -52,8 +52,8 @@ bool Remesher::Flip(int a, int b)
     return false;
   // The two triangles keep their ids (a worker must not add triangles): t1 becomes (a, d, c)
   // and t2 (d, b, c), with t1's labels.
-  if (!this->Approximation.ClustersStayNear({ t1, t2 }, { { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } },
-        { sheet, sheet }, { t1, t2 }, { a, b, c, d }, this->W()))
+  if (!this->Approximation.ClustersStayNear({ t1, t2 }, { { a, d, c }, { d, b, c } },
+        { { pa, pd, pc }, { pd, pb, pc } }, { sheet, sheet }, { t1, t2 }, { a, b, c, d }, this->W()))
     return false;
   if (this->Crossing.Crosses({ { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } }, { t1, t2 }, this->W()))
     return false;
@@ -114,12 +114,8 @@ int Remesher::FlipPass(bool onlyTouched)
   std::vector<std::pair<int, int>> edges(order.size());
   for (size_t i = 0; i < order.size(); ++i)
     edges[i] = order[i].second;
-  return OnTwoWorkers(this->Mesh, 
-    edges.size(),
-    [&](size_t i) {
-      const int za = this->Grid.ZoneAt(this->Mesh.P[edges[i].first]), zb = this->Grid.ZoneAt(this->Mesh.P[edges[i].second]);
-      return za == zb ? za : 2;
-    },
+  return OnTwoWorkers(
+    this->Mesh, edges.size(), [&](size_t i) { return this->EdgeZone(edges[i].first, edges[i].second); },
     [&](size_t i) {
       const int a = edges[i].first, b = edges[i].second;
       if (CurrentZone() >= 0 && !this->StarsInZone(a, b, CurrentZone()))

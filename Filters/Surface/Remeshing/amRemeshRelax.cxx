@@ -18,8 +18,8 @@ int Remesher::RelaxPass()
     if (this->Mesh.VAlive[v] && this->Mesh.Kind[v] == amSurfaceMesh::Surface && !this->Mesh.VT[v].empty())
       order.push_back({ Bins::MortonCode(this->Mesh.P[v], this->Grid.Size), static_cast<int>(v) });
   amThreading::Sort(order.begin(), order.end());
-  return OnTwoWorkers(this->Mesh, 
-    order.size(), [&](size_t i) { return this->Grid.ZoneAt(this->Mesh.P[order[i].second]); },
+  return OnTwoWorkers(
+    this->Mesh, order.size(), [&](size_t i) { return this->Grid.ZoneAt(this->Mesh.P[order[i].second]); },
     [&](size_t i) { return this->Relax(order[i].second); });
 }
 
@@ -111,9 +111,10 @@ bool Remesher::MoveVertexNearest(int t, const Vec3& x)
     return false;
   const int* w = this->Mesh.T[t].V;
   double cl[3];
-  amTriangleLocator::ClosestPointOnTriangle(x.data(), this->Mesh.P[w[0]].data(), this->Mesh.P[w[1]].data(), this->Mesh.P[w[2]].data(), cl);
-  const double longest =
-    std::max({ (this->Mesh.P[w[1]] - this->Mesh.P[w[0]]).norm(), (this->Mesh.P[w[2]] - this->Mesh.P[w[1]]).norm(), (this->Mesh.P[w[0]] - this->Mesh.P[w[2]]).norm() });
+  amTriangleLocator::ClosestPointOnTriangle(
+    x.data(), this->Mesh.P[w[0]].data(), this->Mesh.P[w[1]].data(), this->Mesh.P[w[2]].data(), cl);
+  const double longest = std::max({ (this->Mesh.P[w[1]] - this->Mesh.P[w[0]]).norm(),
+    (this->Mesh.P[w[2]] - this->Mesh.P[w[1]]).norm(), (this->Mesh.P[w[0]] - this->Mesh.P[w[2]]).norm() });
   for (int k = 0; k < 3; ++k)
     if ((Vec3(cl) - this->Mesh.P[w[k]]).norm() < 0.05 * longest)
       return this->Move(w[k], x, false);

@@ -23,7 +23,7 @@ namespace amRemesh
 /// not depend on the other's timing. The items left, and those in no zone (2), follow serially,
 /// in order. While a worker runs, CurrentWorker() and CurrentZone() are its side. Returns the
 /// number of items done.
-template <typename ZoneOfItem, typename Op>
+template<typename ZoneOfItem, typename Op>
 int OnTwoWorkers(Surface& surface, size_t n, ZoneOfItem zoneOf, Op op)
 {
   surface.SizeDirty(); // Touch must not resize the flags on a worker

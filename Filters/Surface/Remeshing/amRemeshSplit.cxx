@@ -58,8 +58,8 @@ bool Remesher::SplitEdge(int t, int k, Vec3 x)
       return false;
   if (this->Crossing.Crosses(ids, pos, edge, this->W()))
     return false;
-  this->Mesh.AddVertex(x, 0.5 * (this->Mesh.M[a] + this->Mesh.M[b]),
-    feature ? amSurfaceMesh::Curve : amSurfaceMesh::Surface, curvePoint);
+  this->Mesh.AddVertex(
+    x, 0.5 * (this->Mesh.M[a] + this->Mesh.M[b]), feature ? amSurfaceMesh::Curve : amSurfaceMesh::Surface, curvePoint);
   for (size_t n = 0; n < edge.size(); ++n)
   {
     const Triangle like = this->Mesh.T[edge[n]];

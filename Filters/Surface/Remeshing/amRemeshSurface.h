@@ -76,12 +76,12 @@ struct ClusterEntry
 class ANATOMESHFILTERSSURFACE_EXPORT Surface
 {
 public:
-  std::vector<Vec3> P;                // vertex positions
-  std::vector<Mat3> M;                // vertex metric tensors
-  std::vector<unsigned char> Kind;    // amSurfaceMesh::VertexKind
-  std::vector<char> VAlive;           // 0: collapsed away
-  std::vector<Triangle> T;            // triangle slots (dead ones stay)
-  std::vector<std::vector<int>> VT;   // per vertex: its live triangles
+  std::vector<Vec3> P;                            // vertex positions
+  std::vector<Mat3> M;                            // vertex metric tensors
+  std::vector<unsigned char> Kind;                // amSurfaceMesh::VertexKind
+  std::vector<char> VAlive;                       // 0: collapsed away
+  std::vector<Triangle> T;                        // triangle slots (dead ones stay)
+  std::vector<std::vector<int>> VT;               // per vertex: its live triangles
   std::vector<std::vector<ClusterEntry>> Cluster; // per vertex: the input points it stands for
   /// Per vertex: the input curve vertex a curve vertex sits on (-1 for surface vertices).
   std::vector<int> Anchor;

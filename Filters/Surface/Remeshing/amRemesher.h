@@ -129,6 +129,12 @@ public:
   void Detach(int t);
   /// A new triangle (a, b, c) with the sheet and labels of 'like'; returns its id.
   int AddTriangle(int a, int b, int c, const Triangle& like);
+  /// The zone of edge (a, b): its ends' zone, or 2 (the serial pass) when they differ.
+  int EdgeZone(int a, int b) const
+  {
+    const int za = this->Grid.ZoneAt(this->Mesh.P[a]), zb = this->Grid.ZoneAt(this->Mesh.P[b]);
+    return za == zb ? za : 2;
+  }
   /// Whether the stars of a and b lie in zone z's bins.
   bool StarsInZone(int a, int b, int z) const;
 };
