@@ -1,6 +1,7 @@
 #include "amImageReader.h"
 
 #include "amITKBridge.h"
+#include "amNiftiCheck.h"
 #include "amProvenance.h"
 
 #include "vtkFieldData.h"
@@ -428,6 +429,16 @@ bool amImageReader::LoadFile(const std::string& path)
   if (dynamic_cast<itk::GDCMImageIO*>(io.GetPointer()))
     return this->LoadDicomSeries(FolderOf(path), path);
   std::string format = io->GetNameOfClass();
+  if (format.find("Nifti") != std::string::npos)
+  {
+    // Before ITK: it zero-fills truncated data and aborts on a NaN in the sform.
+    const std::string why = amNiftiCheck::Check(path);
+    if (!why.empty())
+    {
+      vtkErrorMacro("Cannot read '" << path << "': " << why << ".");
+      return false;
+    }
+  }
   std::string readPath = path, repaired;
   try
   {

@@ -1,0 +1,235 @@
+#include "amNiftiCheck.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+bool EndsWith(const std::string& s, const std::string& end)
+{
+  return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+}
+
+long long FileBytes(const std::string& path)
+{
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  return f ? static_cast<long long>(f.tellg()) : -1;
+}
+
+/// The whole (decompressed) content of a gzip file, or why it cannot be had. At most 'limit'
+/// bytes are kept; the stream is inflated to its end all the same (that checks its CRC).
+std::string Inflate(const std::string& path, size_t limit, std::vector<unsigned char>& kept, long long& total)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return "it cannot be opened";
+  z_stream zs{};
+  if (inflateInit2(&zs, 15 + 16) != Z_OK) // gzip only
+    return "zlib cannot start";
+  std::vector<unsigned char> inBuf(1 << 16), outBuf(1 << 20);
+  total = 0;
+  int status = Z_OK;
+  bool input = true;
+  while (status == Z_OK)
+  {
+    if (zs.avail_in == 0 && input)
+    {
+      in.read(reinterpret_cast<char*>(inBuf.data()), static_cast<std::streamsize>(inBuf.size()));
+      zs.avail_in = static_cast<uInt>(in.gcount());
+      zs.next_in = inBuf.data();
+      input = zs.avail_in > 0;
+    }
+    zs.next_out = outBuf.data();
+    zs.avail_out = static_cast<uInt>(outBuf.size());
+    status = inflate(&zs, input ? Z_NO_FLUSH : Z_FINISH);
+    const size_t produced = outBuf.size() - zs.avail_out;
+    if (kept.size() < limit)
+      kept.insert(kept.end(), outBuf.begin(), outBuf.begin() + std::min(produced, limit - kept.size()));
+    total += static_cast<long long>(produced);
+    if (status == Z_BUF_ERROR && !input)
+      break;
+    if (status == Z_BUF_ERROR)
+      status = Z_OK;
+  }
+  inflateEnd(&zs);
+  if (status == Z_STREAM_END)
+    return "";
+  if (status == Z_DATA_ERROR)
+    return std::string("its compressed data is corrupt (") + (zs.msg ? zs.msg : "zlib data error") + ")";
+  return "its compressed data ends before the end of the stream (truncated)";
+}
+
+struct Header
+{
+  const unsigned char* Bytes;
+  bool Swap;
+  template<typename T>
+  T Get(size_t offset) const
+  {
+    T v;
+    std::memcpy(&v, this->Bytes + offset, sizeof(T));
+    if (this->Swap)
+    {
+      unsigned char* p = reinterpret_cast<unsigned char*>(&v);
+      std::reverse(p, p + sizeof(T));
+    }
+    return v;
+  }
+};
+
+std::string Describe(double v)
+{
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+}
+
+bool amNiftiCheck::IsNifti(const std::string& path)
+{
+  return EndsWith(path, ".nii") || EndsWith(path, ".nii.gz") || EndsWith(path, ".hdr") || EndsWith(path, ".hdr.gz");
+}
+
+std::string amNiftiCheck::Check(const std::string& path)
+{
+  const bool compressed = EndsWith(path, ".gz");
+  std::vector<unsigned char> head;
+  long long total = -1;
+  if (compressed)
+  {
+    const std::string why = Inflate(path, 352, head, total);
+    if (!why.empty())
+      return why;
+  }
+  else
+  {
+    std::ifstream in(path, std::ios::binary);
+    head.resize(352);
+    in.read(reinterpret_cast<char*>(head.data()), 352);
+    head.resize(static_cast<size_t>(in.gcount()));
+    total = FileBytes(path);
+  }
+  if (head.size() < 348)
+    return "it is shorter than a NIfTI header (" + std::to_string(head.size()) + " of 348 bytes)";
+  int32_t size;
+  std::memcpy(&size, head.data(), 4);
+  bool swap = false;
+  if (size != 348)
+  {
+    int32_t swapped = size;
+    unsigned char* p = reinterpret_cast<unsigned char*>(&swapped);
+    std::reverse(p, p + 4);
+    if (swapped == 540 || size == 540)
+      return ""; // NIfTI-2: left to ITK
+    if (swapped != 348)
+      return "its header does not start with a NIfTI-1 size (348)";
+    swap = true;
+  }
+  const Header h{ head.data(), swap };
+  const bool single = std::memcmp(head.data() + 344, "n+1", 4) == 0;
+  if (!single && std::memcmp(head.data() + 344, "ni1", 4) != 0)
+    return "its header has no NIfTI-1 magic ('n+1' or 'ni1')";
+
+  // Dimensions and voxel size.
+  const int16_t rank = h.Get<int16_t>(40);
+  if (rank < 1 || rank > 7)
+    return "its header gives " + std::to_string(rank) + " dimensions (dim[0]); NIfTI allows 1 to 7";
+  long long voxels = 1;
+  for (int d = 1; d <= rank; ++d)
+  {
+    const int16_t n = h.Get<int16_t>(40 + 2 * d);
+    if (n < 1)
+      return "its header gives dim[" + std::to_string(d) + "] = " + std::to_string(n) +
+        "; every dimension must be >= 1";
+    voxels *= n;
+  }
+  const int16_t bitpix = h.Get<int16_t>(72);
+  if (bitpix <= 0 || bitpix % 8 != 0)
+    return "its header gives " + std::to_string(bitpix) + " bits per voxel (bitpix)";
+  const long long dataBytes = voxels * (bitpix / 8);
+  static const char* axes[3] = { "x", "y", "z" };
+  for (int d = 1; d <= std::min<int>(rank, 3); ++d)
+  {
+    const float s = h.Get<float>(76 + 4 * d);
+    if (!std::isfinite(s) || s == 0)
+      return std::string("its voxel size along ") + axes[d - 1] + " (pixdim[" + std::to_string(d) + "]) is " +
+        Describe(s) + "; it must be a finite non-zero length";
+  }
+
+  // Orientation: the sform and the qform, when their codes say they are used.
+  const int16_t qcode = h.Get<int16_t>(252), scode = h.Get<int16_t>(254);
+  if (scode > 0)
+  {
+    static const char* rows[3] = { "srow_x", "srow_y", "srow_z" };
+    double m[3][4];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c)
+      {
+        m[r][c] = h.Get<float>(280 + 16 * r + 4 * c);
+        if (!std::isfinite(m[r][c]))
+          return std::string("its sform row ") + rows[r] + " holds a non-finite value (" + Describe(m[r][c]) + ")";
+      }
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+      m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    if (det == 0)
+      return "its sform (srow_x, srow_y, srow_z) is degenerate (determinant 0): it maps the voxels to a plane";
+  }
+  if (qcode > 0)
+  {
+    static const char* names[6] = { "quatern_b", "quatern_c", "quatern_d", "qoffset_x", "qoffset_y", "qoffset_z" };
+    double q[6];
+    for (int k = 0; k < 6; ++k)
+    {
+      q[k] = h.Get<float>(256 + 4 * k);
+      if (!std::isfinite(q[k]))
+        return std::string("its qform field ") + names[k] + " is non-finite (" + Describe(q[k]) + ")";
+    }
+    if (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] > 1.0 + 1e-4)
+      return "its qform quaternion (quatern_b, quatern_c, quatern_d) has a norm above 1: not a rotation";
+    if (!std::isfinite(h.Get<float>(76)))
+      return "its qform factor (pixdim[0]) is non-finite";
+  }
+
+  // The voxel data: all of it after vox_offset, in this file or in the .img beside the .hdr.
+  if (single)
+  {
+    const float offset = h.Get<float>(108);
+    if (!std::isfinite(offset) || offset < 348)
+      return "its voxel data offset (vox_offset) is " + Describe(offset) + "; a single-file NIfTI needs at least 352";
+    const long long need = static_cast<long long>(offset) + dataBytes;
+    if (total < need)
+      return "its voxel data is truncated: the header announces " + std::to_string(dataBytes) +
+        " bytes of voxels from offset " + std::to_string(static_cast<long long>(offset)) + ", the " +
+        std::string(compressed ? "decompressed " : "") + "file holds " +
+        std::to_string(std::max(0LL, total - static_cast<long long>(offset))) +
+        (offset > total ? " (the offset lies past its end)" : "");
+  }
+  else
+  {
+    std::string img = path.substr(0, path.size() - (compressed ? 7 : 4)) + ".img";
+    long long bytes = FileBytes(img);
+    if (bytes < 0 && FileBytes(img + ".gz") >= 0)
+    {
+      std::vector<unsigned char> none;
+      const std::string why = Inflate(img + ".gz", 0, none, bytes);
+      if (!why.empty())
+        return "its data file '" + img + ".gz': " + why;
+    }
+    if (bytes < 0)
+      return "its data file '" + img + "' does not exist";
+    const float offset = h.Get<float>(108);
+    const long long start = std::isfinite(offset) && offset > 0 ? static_cast<long long>(offset) : 0;
+    if (bytes < start + dataBytes)
+      return "its data file '" + img + "' is truncated (" + std::to_string(bytes) + " bytes for the " +
+        std::to_string(start + dataBytes) + " the header announces)";
+  }
+  return "";
+}
