@@ -145,6 +145,62 @@ class PipelineErrors(unittest.TestCase):
         self.assertNotIn("Traceback", stderr)
         return stderr
 
+    def test_output_over_an_input_is_refused(self):
+        scan = os.path.join(TMP, "overwrite_me.nii.gz")
+        src = pipeline_file("make_scan.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+              <Filter name="w" type="ImageWriter">
+                <Input from="p" port="Labels"/><Property name="FileName" value="%s"/>
+              </Filter>
+            </AnatomeshPipeline>""" % scan)
+        self.assertEqual(run("run", src, "--quiet")[0], 0)
+        before = open(scan, "rb").read()
+        # The same file through another spelling of its path.
+        other = os.path.join(TMP, "..", os.path.basename(TMP), ".", "overwrite_me.nii.gz")
+        self.expect_error("overwrite.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="r" type="ImageReader"><Property name="FileName" value="%s"/></Filter>
+              <Filter name="w" type="ImageWriter">
+                <Input from="r"/><Property name="FileName" value="%s"/>
+              </Filter>
+            </AnatomeshPipeline>""" % (scan, other), ":4: output", "would overwrite the input")
+        self.assertEqual(open(scan, "rb").read(), before)
+
+    def test_two_outputs_to_one_file(self):
+        self.expect_error("two_outputs.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+              <Output from="p" port="CT" file="${output}/same.vti"/>
+              <Output from="p" port="Labels" file="${output}/same.vti"/>
+            </AnatomeshPipeline>""", ":4: two outputs go to", "line 3")
+
+    def test_property_set_twice(self):
+        self.expect_error("twice.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="8 8 8"/>
+                <Property name="Spacing" value="4 4 4"/>
+              </Filter>
+            </AnatomeshPipeline>""", ":4: property 'Spacing' of filter 'p' is set twice (first at line 3)")
+
+    def test_port_that_does_not_exist(self):
+        self.expect_error("port5.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+              <Filter name="s" type="LabelSurface"><Input from="p" port="5"/></Filter>
+              <Output from="s" file="${output}/s.vtp"/>
+            </AnatomeshPipeline>""", ":3: filter 'p' (ThoraxPhantomSource) has 2 output port(s), so no port 5")
+
+    def test_wrong_data_type_fails_the_filter(self):
+        stderr = self.expect_error("wrong_type_input.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+              <Filter name="t" type="Tetrahedralize"><Input from="p" port="Labels"/></Filter>
+              <Output from="t" file="${output}/t.vtu"/>
+            </AnatomeshPipeline>""", "filter 't' (Tetrahedralize) failed", "vtkPolyData")
+        self.assertFalse(os.path.exists(os.path.join(TMP, "err_wrong_type_input.xml", "t.vtu")), stderr)
+
     def test_unknown_filter(self):
         self.expect_error("unknown_filter.xml", """
             <AnatomeshPipeline version="1">

@@ -173,6 +173,10 @@ class Pipeline:
                 value = self._expand(child.attrs["value"], child.line)
                 values = [value] if prop.kind == "string" and prop.number_of_elements == 1 else value.split()
                 self._check_value(step, prop, values, child.line)
+                for earlier, _, earlier_line in step.properties:
+                    if earlier.name == prop.name:
+                        raise self._error(child.line, "property %r of filter %r is set twice (first at line %d)" % (
+                            prop.name, name, earlier_line))
                 step.properties.append((prop, values, child.line))
             elif child.tag == "Input":
                 inputs = proxy.inputs
@@ -227,6 +231,10 @@ class Pipeline:
 
     def _port_index(self, step, port, line):
         if port.isdigit():
+            count = max(1, len(step.proxy.output_ports))
+            if int(port) >= count:
+                raise self._error(line, "filter %r (%s) has %d output port(s), so no port %s (ports: %s)" % (
+                    step.name, step.proxy.name, count, port, ", ".join(step.proxy.output_ports) or "0"))
             return int(port)
         if port in step.proxy.output_ports:
             return step.proxy.output_ports[port]
@@ -262,12 +270,47 @@ class Pipeline:
         for step in self.steps:
             if step.name not in state:
                 visit(step, [])
+        self._check_files()
         for step in self.steps:
             missing = [p.name for p in step.proxy.inputs
                        if not p.optional and p.name not in [i[0].name for i in step.inputs]]
             if missing:
                 raise self._error(step.line, "filter %r (%s) needs its input %s connected" % (
                     step.name, step.proxy.name, ", ".join(missing)))
+
+    def _files(self):
+        """(read, written): the files the pipeline reads (readers' file names) and writes (writers'
+        and <Output>s'), each as (path, line)."""
+        read, written = [], []
+        for step in self.steps:
+            for prop, values, line in step.properties:
+                if prop.kind == "string" and prop.name.endswith("FileName") and values and values[0]:
+                    (written if step.proxy.is_writer else read).append((values[0], line))
+        written += [(path, line) for _, _, path, line in self.outputs]
+        return read, written
+
+    def _check_files(self):
+        """No output may overwrite a file the pipeline reads (by path, however written, or by inode),
+        and no two outputs may go to one file."""
+        def key(path):
+            real = os.path.realpath(path)
+            try:
+                st = os.stat(real)
+                return real, (st.st_dev, st.st_ino)
+            except OSError:
+                return real, None
+
+        read, written = self._files()
+        inputs = [(path, line, key(path)) for path, line in read]
+        seen = {}
+        for path, line in written:
+            real, inode = key(path)
+            for ipath, iline, (ireal, iinode) in inputs:
+                if real == ireal or (inode is not None and inode == iinode):
+                    raise self._error(line, "output %s would overwrite the input %s (line %d)" % (path, ipath, iline))
+            if real in seen:
+                raise self._error(line, "two outputs go to %s (the other at line %d)" % (path, seen[real]))
+            seen[real] = line
 
     # -- execution -----------------------------------------------------------------------------
     def build(self):
@@ -372,6 +415,9 @@ class _Watcher:
 
         error_cb.CallDataType = "string0"
         algorithm.AddObserver("ErrorEvent", error_cb)
+        # The executive reports wrong connections (a port that does not exist, a data type the
+        # filter does not take): a failure of this filter too.
+        algorithm.GetExecutive().AddObserver("ErrorEvent", error_cb)
         if self.progress:
             def progress_cb(obj, event):
                 self.progress(name, obj.GetProgress())
