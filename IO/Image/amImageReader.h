@@ -20,7 +20,12 @@
  * the most slices.
  *
  * Errors (missing file, unknown format, corrupt or truncated data, more than one component,
- * empty series) are reported with vtkErrorMacro naming the file; no output is produced.
+ * empty series) are reported with vtkErrorMacro naming the file; no output is produced. A NIfTI
+ * file is checked before ITK reads it (amNiftiCheck): its compressed stream to the end with its
+ * CRC, its voxel data against its dimensions and offset, its sform, qform and voxel sizes finite
+ * and not degenerate, each refusal naming the field.
+ *
+ * @sa amImageWriter amNiftiCheck
  */
 #ifndef amImageReader_h
 #define amImageReader_h
