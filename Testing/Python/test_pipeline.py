@@ -277,11 +277,20 @@ class PipelineErrors(unittest.TestCase):
                 <Property name="Seed" value="${seed}"/>
               </Filter>
             </AnatomeshPipeline>""", ":3: unknown variable ${seed}")
-        self.expect_error("undeclared_set.xml", """
+        # A command-line mistake: exit status 2.
+        path = pipeline_file("undeclared_set.xml", """
             <AnatomeshPipeline version="1">
               <Variable name="output" default="x"/>
-            </AnatomeshPipeline>""", "--set names variables the pipeline does not declare: bogus",
-                          args=("--set", "bogus=1"))
+            </AnatomeshPipeline>""")
+        code, _, stderr = run("run", path, "--set", "bogus=1")
+        self.assertEqual(code, 2, stderr)
+        self.assertIn("--set names variables the pipeline does not declare: bogus", stderr)
+        self.assertNotIn("Traceback", stderr)
+
+    def test_version(self):
+        code, stdout, _ = run("--version")
+        self.assertEqual(code, 0)
+        self.assertRegex(stdout, r"^anatomesh \d+\.\d+\.\d+ \(VTK 9\.")
 
     def test_malformed_xml_and_version(self):
         self.expect_error("malformed.xml", """

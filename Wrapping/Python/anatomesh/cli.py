@@ -2,6 +2,7 @@
 
     anatomesh run PIPELINE.xml [--set NAME=VALUE ...] [--output DIR] [--quiet]
     anatomesh filters            list the filter catalogue (from the plugin's server-manager XML)
+    anatomesh --version
 
 Exit status: 0 on success, 1 when the pipeline or its data is wrong (the message names the file
 and, for pipeline files, the line), 2 for a command-line mistake.
@@ -114,6 +115,12 @@ def _summary(paths, data, out):
             out.write(line + "\n")
 
 
+def _version():
+    from vtkmodules.vtkCommonCore import vtkVersion
+    from . import __version__
+    return "anatomesh %s (VTK %s)" % (__version__, vtkVersion.GetVTKVersion())
+
+
 def _run(args):
     from . import pipeline as pl
     variables = {}
@@ -131,6 +138,9 @@ def _run(args):
             sys.stderr.write("Running %s (%d filters)\n" % (args.pipeline, len(p.steps)))
         t0 = time.time()
         written = p.run(progress=None if args.quiet else _Progress(sys.stderr))
+    except pl.UndeclaredVariableError as e:
+        sys.stderr.write("anatomesh: error: %s\n" % e)
+        return 2
     except pl.PipelineError as e:
         sys.stderr.write("anatomesh: error: %s\n" % e)
         return 1
@@ -154,6 +164,7 @@ def _filters(args):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="anatomesh", description="CT/MRI scan to simulation-ready mesh.")
+    parser.add_argument("--version", action="version", version=_version())
     sub = parser.add_subparsers(dest="command")
     run = sub.add_parser("run", help="run a pipeline XML file")
     run.add_argument("pipeline", help="pipeline XML file")

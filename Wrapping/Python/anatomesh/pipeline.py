@@ -42,6 +42,10 @@ class PipelineError(Exception):
     """A problem with a pipeline file or its execution; str() names the file and line."""
 
 
+class UndeclaredVariableError(PipelineError):
+    """--set names a variable the pipeline does not declare (a command-line mistake)."""
+
+
 class _Node:
     def __init__(self, tag, attrs, line):
         self.tag, self.attrs, self.line, self.children = tag, attrs, line, []
@@ -123,7 +127,7 @@ class Pipeline:
                 self.variables[name] = self._given.get(name, node.attrs.get("default", ""))
         unknown = set(self._given) - set(self.variables)
         if unknown:
-            raise PipelineError("%s: --set names variables the pipeline does not declare: %s (declared: %s)" % (
+            raise UndeclaredVariableError("%s: --set names variables the pipeline does not declare: %s (declared: %s)" % (
                 self.path, ", ".join(sorted(unknown)), ", ".join(sorted(self.variables)) or "none"))
         names = {}
         # "output" always exists (the command line's --output); a pipeline may give it a default.
