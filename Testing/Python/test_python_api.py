@@ -31,6 +31,27 @@ class ExplicitExports(unittest.TestCase):
             self.assertTrue(callable(getattr(anatomesh, name)), name)
 
 
+class SyntheticAtlasFromPython(unittest.TestCase):
+    def test_many_labels_int16(self):
+        src = anatomesh.amSyntheticAtlasSource()
+        src.SetNumberOfLabels(200)
+        src.SetDimensions(48, 40, 32)
+        src.SetSpacing(1.0, 1.0, 1.5)
+        src.Update()
+        image = src.GetOutputDataObject(0)
+        labels = labels_of(image)
+        self.assertEqual(labels.dtype, np.int16)
+        self.assertEqual(len(np.unique(labels)), 201)  # outside and 200 cells
+        self.assertEqual(image.GetSpacing(), (1.0, 1.0, 1.5))
+        self.assertEqual(image.GetFieldData().GetArray("Seeds").GetNumberOfTuples(), 200)
+        # Sheets between the cells take label 201 (the smallest cells can vanish under them).
+        src.SetSheetWidth(1.0)
+        src.Update()
+        labels = labels_of(src.GetOutputDataObject(0))
+        self.assertIn(201, labels)
+        self.assertGreater(len(np.unique(labels)), 180)
+
+
 class PhantomFromPython(unittest.TestCase):
     @classmethod
     def setUpClass(cls):

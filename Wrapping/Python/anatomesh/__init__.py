@@ -16,7 +16,7 @@ pipelines::
 from .AnatomeshFiltersCleaning import amMorphologyCleaning
 from .AnatomeshFiltersSegmentation import amIntensityClassifier, amLabelOverlap, amSnakeSegmentation
 from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential
-from .AnatomeshFiltersSources import amThoraxPhantomSource
+from .AnatomeshFiltersSources import amSyntheticAtlasSource, amThoraxPhantomSource
 from .AnatomeshFiltersSurface import (
     amCurvatureMetric,
     amLabelSurface,
@@ -48,6 +48,7 @@ __all__ = [
     "amSnakeSegmentation",
     "amSurfaceDistance",
     "amSurfaceSmoothing",
+    "amSyntheticAtlasSource",
     "amTetrahedralize",
     "amThoraxPhantomSource",
     "amTorsoPotential",
