@@ -16,8 +16,8 @@
  * neighbours); a vertex on one or three or more (a curve end, where junction curves meet) does not
  * move. So junction curves stay shared and stay junctions. A closed junction curve of fewer than
  * 12 vertices (a loop around a voxel corner where three regions meet in a saddle) does not move
- * either: smoothed along itself it would shrink to a point (1 mm phantom: four loops ended with
- * edges of 0.004 mm, which no remeshing could remove).
+ * either: smoothed along itself it would shrink to a point, leaving edges of micrometres that no
+ * remeshing can remove.
  *
  * After every step each vertex is pulled back into the ball of radius MaximumDisplacement around
  * its input position, so the surface stays within that distance of the voxel boundary it came
