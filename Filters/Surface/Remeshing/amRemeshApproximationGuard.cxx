@@ -122,8 +122,11 @@ bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed, const
         }
         else
         {
+          // Every interface the input point lies on, not only those still around the vertex: a
+          // small patch of an interface must not vanish from between its junction curves.
           gather();
-          for (int sheet : starSheets)
+          const std::vector<int>& onInput = this->Curves.InputSheets[entry.Point];
+          for (int sheet : onInput.empty() ? starSheets : onInput)
             if (near(x, sheet, -1) < 0)
               return false;
         }

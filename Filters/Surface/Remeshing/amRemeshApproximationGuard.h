@@ -11,6 +11,7 @@
 #define amRemeshApproximationGuard_h
 
 #include "amRemeshInput.h"
+#include "amRemeshJunctionCurves.h"
 #include "amRemeshWorker.h"
 
 namespace amRemesh
@@ -18,9 +19,10 @@ namespace amRemesh
 class ANATOMESHFILTERSSURFACE_EXPORT ApproximationGuard
 {
 public:
-  ApproximationGuard(Surface& surface, const amRemesh::Input& input)
+  ApproximationGuard(Surface& surface, const amRemesh::Input& input, const JunctionCurves& curves)
     : S(surface)
     , In(input)
+    , Curves(curves)
   {
   }
   /// TriangleNear for the new triangles (ids, positions, sheets) around one vertex, 'centre' (a
@@ -31,10 +33,10 @@ public:
   bool StarNear(const std::vector<std::array<int, 3>>& ids, const std::vector<std::array<Vec3, 3>>& pos,
     const std::vector<int>& sheets, int centre, const std::vector<int>& kept) const;
   /// Whether every input vertex that an affected vertex stands for stays within Eps of that
-  /// vertex's triangles of its interface (a junction-curve point: of every interface around the
-  /// vertex) once the triangles 'removed' are replaced by the new ones (ids, positions, sheets;
-  /// 'newIds' the ids they will have). 'from' (or -1) is a vertex disappearing into 'into': its
-  /// points are checked with into's. The hints found go to the worker's PendingHints.
+  /// vertex's triangles of its interface (a junction-curve point: of every interface it lies on in
+  /// the input, so that no patch of an interface can vanish from around it) once the triangles 'removed' are replaced
+  /// by the new ones (ids, positions, sheets; 'newIds' the ids they will have). 'from' (or -1) is a vertex disappearing
+  /// into 'into': its points are checked with into's. The hints found go to the worker's PendingHints.
   bool ClustersStayNear(const std::vector<int>& removed, const std::vector<std::array<int, 3>>& ids,
     const std::vector<std::array<Vec3, 3>>& pos, const std::vector<int>& sheets, const std::vector<int>& newIds,
     const std::vector<int>& affected, Worker& worker, int from = -1, int into = -1) const;
@@ -44,6 +46,7 @@ public:
 private:
   Surface& S;
   const amRemesh::Input& In;
+  const JunctionCurves& Curves;
 };
 }
 

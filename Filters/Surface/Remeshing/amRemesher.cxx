@@ -8,7 +8,7 @@ namespace amRemesh
 Remesher::Remesher()
   : Grid(Mesh)
   , Crossing(Mesh, Grid)
-  , Approximation(Mesh, In)
+  , Approximation(Mesh, In, Curves)
 {
 }
 
