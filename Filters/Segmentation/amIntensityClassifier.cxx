@@ -115,7 +115,7 @@ int amIntensityClassifier::RequestData(
     for (vtkIdType i = b; i < e; ++i)
     {
       const double v = scalars->GetComponent(i, 0);
-      if (std::isnan(v))
+      if (!std::isfinite(v))
       {
         ++bad;
         w[i] = 0;
@@ -130,7 +130,7 @@ int amIntensityClassifier::RequestData(
   });
   if (nans > 0)
   {
-    vtkErrorMacro("The input has " << nans << " NaN values; cannot classify them.");
+    vtkErrorMacro("The input has " << nans << " non-finite values (NaN or infinite); cannot classify them.");
     return 0;
   }
   this->UpdateProgress(0.3);

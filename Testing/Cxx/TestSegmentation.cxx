@@ -361,7 +361,16 @@ TEST(IntensityClassifier, RangesAndBadInput)
   s->SetValue(2, std::numeric_limits<float>::quiet_NaN());
   img->Modified();
   cls->Update();
-  EXPECT_TRUE(errors->ErrorContains("NaN")) << errors->AllErrors();
+  EXPECT_TRUE(errors->ErrorContains("1 non-finite values (NaN or infinite)")) << errors->AllErrors();
+
+  // An infinite voxel is no bone: refused like a NaN.
+  errors->Errors.clear();
+  s->SetValue(2, std::numeric_limits<float>::infinity());
+  img->Modified();
+  cls->Update();
+  EXPECT_TRUE(errors->ErrorContains("1 non-finite values")) << errors->AllErrors();
+  s->SetValue(2, 5);
+  img->Modified();
 
   errors->Errors.clear();
   cls->AddRange(5, 1, 3);
