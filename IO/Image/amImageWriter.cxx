@@ -2,6 +2,7 @@
 
 #include "amAtomicFile.h"
 #include "amITKBridge.h"
+#include "amNiftiCheck.h"
 
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -137,6 +138,17 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     {
       const auto begin = key + 18;
       dataName = header.substr(begin, header.find_first_of("\r\n", begin) - begin);
+    }
+  }
+  if (ok && (ext == ".nii" || ext == ".nii.gz"))
+  {
+    // ITK does not always report a short write (a full disk, a file size limit): the file must read
+    // back whole before it replaces anything.
+    const std::string incomplete = amNiftiCheck::Check(file.TemporaryPath());
+    if (!incomplete.empty())
+    {
+      ok = false;
+      error = "the file written is incomplete (" + incomplete + "); is the disk full?";
     }
   }
   if (!ok)

@@ -12,12 +12,18 @@
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
 #include <vector>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace
 {
@@ -165,4 +171,39 @@ TEST(NiftiCheck, NonFiniteOrDegenerateGeometry)
     Save(path, b);
     ExpectRefused(path, { c.Needle });
   }
+}
+
+TEST(NiftiCheck, ShortWriteLeavesTheOldFileAndNoTemporary)
+{
+  // A file size limit (as a full disk would) cuts the write short; ITK may not say so. The writer
+  // must fail, keep the valid file already at the target, and leave no temporary file.
+  const std::string target = Written("nifti_short_write", false);
+  const std::vector<char> before = Bytes(target);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0)
+  {
+    ::signal(SIGXFSZ, SIG_IGN); // writes past the limit fail with EFBIG instead of killing
+    struct rlimit limit = { 20000, 20000 };
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    vtkNew<amThoraxPhantomSource> src;
+    src->SetSpacing(4, 4, 4); // 0.5 MB of voxels
+    vtkNew<amImageWriter> writer;
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(writer);
+    errors->Watch(writer->GetExecutive());
+    writer->SetInputConnection(src->GetOutputPort(0));
+    writer->SetFileName(target.c_str());
+    const int ok = writer->Write();
+    ::_exit(ok == 0 && errors->ErrorContains("incomplete") ? 0 : 1);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "the writer did not fail with 'incomplete'";
+  EXPECT_EQ(Bytes(target), before); // the old file untouched
+  const std::string folder = target.substr(0, target.find_last_of('/'));
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    EXPECT_EQ(entry.path().filename().string().find(".nifti_short_write.tmp"), std::string::npos)
+      << entry.path() << " left behind";
 }
