@@ -1,6 +1,7 @@
 #include "amImageReader.h"
 
 #include "amITKBridge.h"
+#include "amMetaImageCheck.h"
 #include "amNiftiCheck.h"
 #include "amProvenance.h"
 
@@ -23,7 +24,6 @@
 #include <itkImageSeriesReader.h>
 #include <itkMetaImageIOFactory.h>
 
-#include <zlib.h>
 #include <itkNiftiImageIOFactory.h>
 #include <itkNrrdImageIOFactory.h>
 
@@ -88,157 +88,6 @@ std::string Trim(const std::string& s)
   const auto b = s.find_first_not_of(" \t\r\n");
   const auto e = s.find_last_not_of(" \t\r\n");
   return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
-
-long long FileSize(const std::string& path)
-{
-  struct stat st;
-  return ::stat(path.c_str(), &st) == 0 ? static_cast<long long>(st.st_size) : -1;
-}
-
-// ITK's MetaImage reader accepts a short data file (it only prints to stderr): check the size of
-// the voxel data against the header ourselves. Returns an empty string when it is fine.
-// A compressed stream is inflated here (zlib) to count its bytes: ITK inflates only
-// CompressedDataSize bytes and leaves the rest of the image uninitialised when the header
-// understates it (VTK's frogtissue.mhd says 260020 of 262087 bytes). Such a header is repaired:
-// 'repairedHeader' gets a temporary copy with the true size and an absolute data file path.
-std::string CheckMetaImageData(const std::string& path, std::string& repairedHeader)
-{
-  repairedHeader.clear();
-  std::ifstream in(path, std::ios::binary);
-  std::string line, dataFile;
-  std::vector<long long> dims;
-  long long elementBytes = 0, channels = 1, compressedSize = -1, headerBytes = 0;
-  bool compressed = false;
-  while (std::getline(in, line))
-  {
-    headerBytes += static_cast<long long>(line.size()) + 1;
-    const auto eq = line.find('=');
-    if (eq == std::string::npos)
-      continue;
-    const std::string key = Trim(line.substr(0, eq)), value = Trim(line.substr(eq + 1));
-    std::istringstream v(value);
-    if (key == "DimSize")
-    {
-      long long d;
-      while (v >> d)
-        dims.push_back(d);
-    }
-    else if (key == "ElementNumberOfChannels")
-      v >> channels;
-    else if (key == "CompressedData")
-      compressed = value == "True" || value == "true";
-    else if (key == "CompressedDataSize")
-      v >> compressedSize;
-    else if (key == "ElementType")
-    {
-      static const std::pair<const char*, int> sizes[] = { { "MET_UCHAR", 1 }, { "MET_CHAR", 1 },
-        { "MET_USHORT", 2 }, { "MET_SHORT", 2 }, { "MET_UINT", 4 }, { "MET_INT", 4 }, { "MET_FLOAT", 4 },
-        { "MET_ULONG_LONG", 8 }, { "MET_LONG_LONG", 8 }, { "MET_DOUBLE", 8 } };
-      for (const auto& sz : sizes)
-        if (value == sz.first)
-          elementBytes = sz.second;
-    }
-    else if (key == "ElementDataFile")
-    {
-      dataFile = value;
-      break;
-    }
-  }
-  if (dims.empty() || elementBytes == 0 || dataFile.empty() || dataFile == "LIST" ||
-    dataFile.find('%') != std::string::npos || dataFile.find(' ') != std::string::npos)
-    return std::string();
-  long long expected = elementBytes * channels;
-  for (long long d : dims)
-    expected *= d;
-  long long available;
-  std::string where;
-  if (dataFile == "LOCAL")
-  {
-    available = FileSize(path) - headerBytes;
-    where = path;
-  }
-  else
-  {
-    where = dataFile[0] == '/' ? dataFile : FolderOf(path) + "/" + dataFile;
-    available = FileSize(where);
-    if (available < 0)
-      return "its data file '" + where + "' does not exist";
-  }
-  if (compressed)
-  {
-    if (compressedSize > 0 && available < compressedSize)
-      return "the compressed voxel data is truncated (" + std::to_string(available) + " of " +
-        std::to_string(compressedSize) + " bytes in '" + where + "')";
-    std::ifstream data(where, std::ios::binary);
-    if (dataFile == "LOCAL")
-      data.seekg(headerBytes);
-    z_stream zs{};
-    if (inflateInit2(&zs, 15 + 32) != Z_OK) // zlib or gzip header
-      return std::string();
-    std::vector<unsigned char> inBuf(1 << 16), outBuf(1 << 20);
-    long long produced = 0;
-    int status = Z_OK;
-    while (status == Z_OK)
-    {
-      if (zs.avail_in == 0)
-      {
-        data.read(reinterpret_cast<char*>(inBuf.data()), static_cast<std::streamsize>(inBuf.size()));
-        zs.avail_in = static_cast<uInt>(data.gcount());
-        zs.next_in = inBuf.data();
-        if (zs.avail_in == 0)
-          break;
-      }
-      zs.next_out = outBuf.data();
-      zs.avail_out = static_cast<uInt>(outBuf.size());
-      status = inflate(&zs, Z_NO_FLUSH);
-      produced += static_cast<long long>(outBuf.size() - zs.avail_out);
-    }
-    const long long consumed = static_cast<long long>(zs.total_in);
-    inflateEnd(&zs);
-    if (status != Z_STREAM_END && status != Z_OK)
-      return "the compressed voxel data in '" + where + "' is corrupt (zlib error " + std::to_string(status) + ")";
-    if (produced < expected)
-      return "the compressed voxel data in '" + where + "' inflates to " + std::to_string(produced) + " of the " +
-        std::to_string(expected) + " bytes the header announces (truncated)";
-    if (compressedSize > 0 && compressedSize != consumed && dataFile != "LOCAL")
-    {
-      std::ifstream header(path);
-      std::string text, l;
-      while (std::getline(header, l))
-      {
-        const std::string key = Trim(l.substr(0, l.find('=')));
-        if (key == "CompressedDataSize")
-          l = "CompressedDataSize = " + std::to_string(consumed);
-        else if (key == "ElementDataFile")
-        {
-          // The repaired header lives in the temporary folder: name the data by its absolute path.
-          text += "ElementDataFile = " + std::filesystem::absolute(where).string() + "\n";
-          break;
-        }
-        text += l + "\n";
-      }
-      char tmpl[] = "/tmp/anatomesh-meta-XXXXXX.mhd";
-      const int fd = ::mkstemps(tmpl, 4);
-      if (fd >= 0)
-      {
-        const bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
-        ::close(fd);
-        if (ok)
-          repairedHeader = tmpl;
-        else
-          std::remove(tmpl);
-      }
-      if (repairedHeader.empty())
-        return "its header gives CompressedDataSize " + std::to_string(compressedSize) + " but the stream has " +
-          std::to_string(consumed) + " bytes, and no corrected copy could be written";
-    }
-    return std::string();
-  }
-  if (available < expected)
-    return "the voxel data is truncated (" + std::to_string(available) + " of " + std::to_string(expected) +
-      " bytes in '" + where + "')";
-  return std::string();
 }
 
 // A NRRD header with both "space" and per-axis "spacings" is invalid (the spec wants "space
@@ -484,7 +333,7 @@ bool amImageReader::LoadFile(const std::string& path)
   } removeRepaired{ repaired }, metaRepaired{ std::string() };
   if (format.find("Meta") != std::string::npos)
   {
-    const std::string problem = CheckMetaImageData(path, metaRepaired.Path);
+    const std::string problem = amMetaImageCheck::Check(path, metaRepaired.Path);
     if (!problem.empty())
     {
       vtkErrorMacro("Cannot read '" << path << "': " << problem << ".");

@@ -1,6 +1,6 @@
 #include "amNiftiCheck.h"
 
-#include <zlib.h>
+#include "amInflate.h"
 
 #include <algorithm>
 #include <array>
@@ -18,53 +18,21 @@ bool EndsWith(const std::string& s, const std::string& end)
   return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
 }
 
-long long FileBytes(const std::string& path)
-{
-  std::ifstream f(path, std::ios::binary | std::ios::ate);
-  return f ? static_cast<long long>(f.tellg()) : -1;
-}
-
-/// The whole (decompressed) content of a gzip file, or why it cannot be had. At most 'limit'
-/// bytes are kept; the stream is inflated to its end all the same (that checks its CRC).
+/// The start of the decompressed content of a gzip file (at most 'limit' bytes) and its total size;
+/// the stream is inflated to its end all the same (that checks its CRC).
 std::string Inflate(const std::string& path, size_t limit, std::vector<unsigned char>& kept, long long& total)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return "it cannot be opened";
-  z_stream zs{};
-  if (inflateInit2(&zs, 15 + 16) != Z_OK) // gzip only
-    return "zlib cannot start";
-  std::vector<unsigned char> inBuf(1 << 16), outBuf(1 << 20);
-  total = 0;
-  int status = Z_OK;
-  bool input = true;
-  while (status == Z_OK)
+  long long consumed = 0;
+  std::string message;
+  switch (amInflate::Stream(path, 0, limit, kept, total, consumed, message))
   {
-    if (zs.avail_in == 0 && input)
-    {
-      in.read(reinterpret_cast<char*>(inBuf.data()), static_cast<std::streamsize>(inBuf.size()));
-      zs.avail_in = static_cast<uInt>(in.gcount());
-      zs.next_in = inBuf.data();
-      input = zs.avail_in > 0;
-    }
-    zs.next_out = outBuf.data();
-    zs.avail_out = static_cast<uInt>(outBuf.size());
-    status = inflate(&zs, input ? Z_NO_FLUSH : Z_FINISH);
-    const size_t produced = outBuf.size() - zs.avail_out;
-    if (kept.size() < limit)
-      kept.insert(kept.end(), outBuf.begin(), outBuf.begin() + std::min(produced, limit - kept.size()));
-    total += static_cast<long long>(produced);
-    if (status == Z_BUF_ERROR && !input)
-      break;
-    if (status == Z_BUF_ERROR)
-      status = Z_OK;
+    case amInflate::Complete:
+      return "";
+    case amInflate::Truncated:
+      return "its compressed data ends before the end of the stream (truncated)";
+    default:
+      return "its compressed data is corrupt (" + message + ")";
   }
-  inflateEnd(&zs);
-  if (status == Z_STREAM_END)
-    return "";
-  if (status == Z_DATA_ERROR)
-    return std::string("its compressed data is corrupt (") + (zs.msg ? zs.msg : "zlib data error") + ")";
-  return "its compressed data ends before the end of the stream (truncated)";
 }
 
 struct Header
@@ -115,7 +83,7 @@ std::string amNiftiCheck::Check(const std::string& path)
     head.resize(352);
     in.read(reinterpret_cast<char*>(head.data()), 352);
     head.resize(static_cast<size_t>(in.gcount()));
-    total = FileBytes(path);
+    total = amInflate::FileSize(path);
   }
   if (head.size() < 348)
     return "it is shorter than a NIfTI header (" + std::to_string(head.size()) + " of 348 bytes)";
@@ -215,8 +183,8 @@ std::string amNiftiCheck::Check(const std::string& path)
   else
   {
     std::string img = path.substr(0, path.size() - (compressed ? 7 : 4)) + ".img";
-    long long bytes = FileBytes(img);
-    if (bytes < 0 && FileBytes(img + ".gz") >= 0)
+    long long bytes = amInflate::FileSize(img);
+    if (bytes < 0 && amInflate::FileSize(img + ".gz") >= 0)
     {
       std::vector<unsigned char> none;
       const std::string why = Inflate(img + ".gz", 0, none, bytes);
