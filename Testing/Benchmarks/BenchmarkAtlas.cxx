@@ -3,13 +3,8 @@
 // against the tolerance, the worst element. Run: build/bin/BenchmarkAtlas [--benchmark_filter=...]
 // Arguments: number of labels, voxels per side, variant (0 clean, 1 sheets of 1 mm, 2 noise 5 %,
 // 3 voxels 2.5 mm along z).
-#include "amCurvatureMetric.h"
-#include "amLabelSurface.h"
+#include "../Cxx/amAtlasChain.h"
 #include "amMeshQuality.h"
-#include "amMetricRemeshing.h"
-#include "amSurfaceSmoothing.h"
-#include "amSyntheticAtlasSource.h"
-#include "amTetrahedralize.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -36,14 +31,6 @@ double PeakMegabytes()
   return u.ru_maxrss / 1024.0;
 }
 
-std::set<int> LabelsOf(vtkDataArray* a)
-{
-  std::set<int> s;
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-    s.insert(static_cast<int>(a->GetTuple1(i)));
-  return s;
-}
-
 void Chain(benchmark::State& state)
 {
   vtkSMPTools::SetBackend("STDThread");
@@ -55,28 +42,15 @@ void Chain(benchmark::State& state)
     using Clock = std::chrono::steady_clock;
     auto seconds = [](
                      Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
-    vtkNew<amSyntheticAtlasSource> src;
-    src->SetNumberOfLabels(labels);
-    src->SetDimensions(side, side, variant == 3 ? side * 5 / 12 : side); // 96: 40 slices of 2.5 mm
-    if (variant == 3)
-      src->SetSpacing(1, 1, 2.5);
-    src->SetSheetWidth(variant == 1 ? 1.0 : 0.0);
-    src->SetNoiseFraction(variant == 2 ? 0.05 : 0.0);
-    vtkNew<amLabelSurface> surface;
-    surface->SetInputConnection(src->GetOutputPort());
-    surface->SetComputeTopology(false);
-    vtkNew<amSurfaceSmoothing> smooth;
-    smooth->SetInputConnection(surface->GetOutputPort());
-    vtkNew<amCurvatureMetric> metric;
-    metric->SetInputConnection(smooth->GetOutputPort());
-    metric->SetTolerance(eps);
-    metric->SetMinimumSize(1.0);
-    metric->SetAnisotropic(false);
-    vtkNew<amMetricRemeshing> remesh;
-    remesh->SetInputConnection(metric->GetOutputPort());
-    remesh->SetTolerance(eps);
-    vtkNew<amTetrahedralize> tetra;
-    tetra->SetInputConnection(remesh->GetOutputPort());
+    const int dims[3] = { side, side, variant == 3 ? side * 5 / 12 : side }; // 96: 40 slices of 2.5 mm
+    const double spacing[3] = { 1, 1, variant == 3 ? 2.5 : 1.0 };
+    amTest::AtlasChain chain(labels, 1, dims, spacing, variant == 1 ? 1.0 : 0.0, variant == 2 ? 0.05 : 0.0, eps);
+    amSyntheticAtlasSource* src = chain.Source;
+    amLabelSurface* surface = chain.Surface;
+    amSurfaceSmoothing* smooth = chain.Smooth;
+    amCurvatureMetric* metric = chain.Metric;
+    amMetricRemeshing* remesh = chain.Remesh;
+    amTetrahedralize* tetra = chain.Tetra;
     vtkNew<amMeshQuality> quality;
     quality->SetInputConnection(tetra->GetOutputPort());
     const auto t0 = Clock::now();
@@ -92,7 +66,7 @@ void Chain(benchmark::State& state)
     const auto t5 = Clock::now();
     tetra->Update();
     const auto t6 = Clock::now();
-    const std::set<int> in = LabelsOf(src->GetOutput()->GetPointData()->GetScalars());
+    const std::set<int> in = amTest::DistinctValues(src->GetOutput()->GetPointData()->GetScalars());
     state.counters["labels"] = static_cast<double>(in.size() - in.count(0));
     state.counters["surface_tris"] = surface->GetOutput()->GetNumberOfCells();
     state.counters["remeshed_tris"] = remesh->GetOutput()->GetNumberOfCells();
@@ -106,7 +80,7 @@ void Chain(benchmark::State& state)
     state.counters["tetrahedra"] = static_cast<double>(tets);
     if (tets > 0)
     {
-      std::set<int> regions = LabelsOf(tetra->GetOutput()->GetCellData()->GetArray("Region"));
+      std::set<int> regions = amTest::DistinctValues(tetra->GetOutput()->GetCellData()->GetArray("Region"));
       state.counters["regions"] = static_cast<double>(regions.size());
       quality->Update();
       vtkTable* table = vtkTable::SafeDownCast(quality->GetOutputDataObject(1));
