@@ -1,0 +1,147 @@
+/**
+ * @file   amTetraImproveMesh.h
+ * @brief   The mesh that amTetraMeshOptimizer improves, and its local operations (not wrapped).
+ *
+ * One operation per file: amTetraImproveFlips.cxx (edge removal, 2-3 flip),
+ * amTetraImproveMoves.cxx (smoothing, local search), amTetraImproveInsert.cxx (edge split,
+ * vertex insertion in a cavity). Each is accepted only when it makes the worst element it
+ * touches better; none crosses a fixed face or moves a fixed vertex.
+ */
+#ifndef amTetraImproveMesh_h
+#define amTetraImproveMesh_h
+
+#include "amTetraGeometry.h"
+#include "amTetraMeshOptimizer.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+namespace amTetraImprove
+{
+using Vec = amTetraGeometry::Vec;
+using Tet = std::array<int, 4>;
+using Tri = std::array<int, 3>;
+
+struct TriHash
+{
+  size_t operator()(const Tri& k) const
+  {
+    uint64_t h = 1469598103934665603ull;
+    for (int v : k)
+      h ^= static_cast<uint64_t>(static_cast<uint32_t>(v)) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    return static_cast<size_t>(h);
+  }
+};
+inline Tri Sorted(int a, int b, int c)
+{
+  Tri t{ { a, b, c } };
+  std::sort(t.begin(), t.end());
+  return t;
+}
+inline uint64_t EdgeKey(int a, int b)
+{
+  if (a > b)
+    std::swap(a, b);
+  return (static_cast<uint64_t>(static_cast<uint32_t>(a)) << 32) | static_cast<uint32_t>(b);
+}
+
+/// The mesh being improved: tetrahedra are appended and killed, never moved, so ids stay valid.
+class Mesh
+{
+public:
+  std::vector<double>& P;
+  std::vector<Tet> T;
+  std::vector<int> R;
+  std::vector<char> Alive;
+  std::vector<double> Q; // Objective per tetrahedron (kept current as vertices move)
+  std::vector<char> Tried; // per tetrahedron: the flips failed and nothing moved since
+  std::vector<char> Dirty; // per vertex: its star changed since it was last smoothed
+  std::vector<std::vector<int>> Inc;
+  std::unordered_set<Tri, TriHash> FixedFaces;
+  std::unordered_set<uint64_t> FixedEdges;
+  std::vector<char> FixedVertex;
+
+  explicit Mesh(std::vector<double>& p)
+    : P(p)
+  {
+  }
+  const double* X(int v) const { return &this->P[3 * static_cast<size_t>(v)]; }
+  double Quality(int a, int b, int c, int d) const
+  {
+    return amTetraMeshOptimizer::Objective(this->X(a), this->X(b), this->X(c), this->X(d));
+  }
+  int AddPoint(const double* x)
+  {
+    this->P.insert(this->P.end(), x, x + 3);
+    this->Inc.emplace_back();
+    this->FixedVertex.push_back(0);
+    this->Dirty.push_back(1);
+    return static_cast<int>(this->Inc.size()) - 1;
+  }
+  int Add(const Tet& t, int region)
+  {
+    const int id = static_cast<int>(this->T.size());
+    this->T.push_back(t);
+    this->R.push_back(region);
+    this->Alive.push_back(1);
+    this->Q.push_back(this->Quality(t[0], t[1], t[2], t[3]));
+    this->Tried.push_back(0);
+    for (int v : t)
+    {
+      this->Inc[v].push_back(id);
+      this->Dirty[v] = 1;
+    }
+    return id;
+  }
+  void Kill(int id)
+  {
+    this->Alive[id] = 0;
+    for (int v : this->T[id])
+    {
+      auto& inc = this->Inc[v];
+      inc.erase(std::find(inc.begin(), inc.end(), id));
+    }
+  }
+  bool Has(int t, int v) const
+  {
+    const Tet& x = this->T[t];
+    return x[0] == v || x[1] == v || x[2] == v || x[3] == v;
+  }
+  bool Connected(int a, int b) const
+  {
+    for (int t : this->Inc[a])
+      if (this->Has(t, b))
+        return true;
+    return false;
+  }
+
+  /// The tetrahedra around edge (u, v), ordered, with their ring w such that every tetrahedron
+  /// (u, v, w[i], w[i+1]) is positively oriented. False when the ring is not closed.
+  bool Ring(int u, int v, std::vector<int>& tets, std::vector<int>& ring) const;
+};
+
+/// Edge removal: replaces the tetrahedra around (u, v) by the best triangulation of their ring.
+bool RemoveEdge(Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std::vector<int>& ring);
+/// 2-3 flip of the face of tetrahedron t opposite its vertex i.
+bool Flip23(Mesh& m, int t, int i);
+/// The star of v as it is: its worst objective and the sum of the inverse objectives.
+void CurrentStar(const Mesh& m, int v, double& worst, double& sum);
+/// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
+/// (inf when a tetrahedron inverts).
+void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ);
+/// Moves v to x and updates its star's objectives.
+void MoveVertex(Mesh& m, int v, const double* x);
+/// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's
+/// worst element at least as good and lowers its mean Q.
+bool Smooth(Mesh& m, int v);
+/// Local search: moves v along the numerical gradient of its star's worst quality.
+bool Climb(Mesh& m, int v);
+/// Splits the free edge (u, v) at its midpoint, then moves the new vertex where its star is best.
+/// Undone unless every element around the new vertex reaches 'goal'.
+bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::vector<int>& ring);
+}
+
+#endif

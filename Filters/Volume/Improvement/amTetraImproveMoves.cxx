@@ -1,0 +1,176 @@
+#include "amTetraImproveMesh.h"
+
+#include <cmath>
+#include <limits>
+
+namespace amTetraImprove
+{
+/// The star of v as it is: its worst objective and the sum of the inverse objectives.
+void CurrentStar(const Mesh& m, int v, double& worst, double& sum)
+{
+  worst = std::numeric_limits<double>::infinity();
+  sum = 0;
+  for (int t : m.Inc[v])
+  {
+    worst = std::min(worst, m.Q[t]);
+    sum += 1.0 / m.Q[t];
+  }
+}
+
+/// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
+/// (inf when a tetrahedron inverts).
+void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ)
+{
+  worst = std::numeric_limits<double>::infinity();
+  sumQ = 0;
+  for (int t : m.Inc[v])
+  {
+    const double* p[4];
+    for (int k = 0; k < 4; ++k)
+      p[k] = m.T[t][k] == v ? x : m.X(m.T[t][k]);
+    const double q = amTetraMeshOptimizer::Objective(p[0], p[1], p[2], p[3]);
+    worst = std::min(worst, q);
+    if (q <= 0)
+    {
+      sumQ = std::numeric_limits<double>::infinity();
+      return;
+    }
+    sumQ += 1.0 / q;
+  }
+}
+
+void MoveVertex(Mesh& m, int v, const double* x)
+{
+  std::copy(x, x + 3, &m.P[3 * static_cast<size_t>(v)]);
+  for (int t : m.Inc[v])
+  {
+    m.Q[t] = m.Quality(m.T[t][0], m.T[t][1], m.T[t][2], m.T[t][3]);
+    m.Tried[t] = 0;
+    for (int w : m.T[t])
+      m.Dirty[w] = 1;
+  }
+}
+
+/// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's
+/// worst element at least as good and lowers its mean Q.
+bool Smooth(Mesh& m, int v)
+{
+  const auto& inc = m.Inc[v];
+  if (inc.empty())
+    return false;
+  const double* x = m.X(v);
+  double worst0, sum0;
+  CurrentStar(m, v, worst0, sum0);
+  double centroid[3] = { 0, 0, 0 }, mass = 0, neighbours[3] = { 0, 0, 0 };
+  int count = 0;
+  for (int t : inc)
+  {
+    const Tet& s = m.T[t];
+    const double vol = std::fabs(amTetraGeometry::SignedVolume(m.X(s[0]), m.X(s[1]), m.X(s[2]), m.X(s[3])));
+    for (int d = 0; d < 3; ++d)
+      centroid[d] += vol * (m.X(s[0])[d] + m.X(s[1])[d] + m.X(s[2])[d] + m.X(s[3])[d]) / 4;
+    mass += vol;
+    for (int w : s)
+      if (w != v)
+      {
+        for (int d = 0; d < 3; ++d)
+          neighbours[d] += m.X(w)[d];
+        ++count;
+      }
+  }
+  if (!(mass > 0) || count == 0)
+    return false;
+  double targets[2][3];
+  for (int d = 0; d < 3; ++d)
+  {
+    targets[0][d] = centroid[d] / mass;
+    targets[1][d] = neighbours[d] / count;
+  }
+  double bestSum = sum0 * (1 - 1e-9), bestPos[3];
+  bool found = false;
+  for (const auto& target : targets)
+    for (double f : { 1.0, 0.5, 0.25 })
+    {
+      double y[3];
+      for (int d = 0; d < 3; ++d)
+        y[d] = x[d] + f * (target[d] - x[d]);
+      double worst, sum;
+      StarQuality(m, v, y, worst, sum);
+      if (worst >= worst0 && sum < bestSum)
+      {
+        bestSum = sum;
+        std::copy(y, y + 3, bestPos);
+        found = true;
+      }
+    }
+  if (found)
+    MoveVertex(m, v, bestPos);
+  return found;
+}
+
+/// Local search: moves v along the numerical gradient of its star's worst quality.
+bool Climb(Mesh& m, int v)
+{
+  const auto& inc = m.Inc[v];
+  if (inc.empty())
+    return false;
+  double length = 0;
+  int count = 0;
+  for (int t : inc)
+    for (int w : m.T[t])
+      if (w != v)
+      {
+        length += amTetraGeometry::Norm(amTetraGeometry::Sub(m.X(w), m.X(v)));
+        ++count;
+      }
+  length /= std::max(count, 1);
+  bool moved = false;
+  for (int iteration = 0; iteration < 12; ++iteration)
+  {
+    double x[3];
+    std::copy(m.X(v), m.X(v) + 3, x);
+    // The worst tetrahedron of the star and the gradient of its quality.
+    int active = -1;
+    for (int t : inc)
+      if (active < 0 || m.Q[t] < m.Q[active])
+        active = t;
+    const double worst0 = m.Q[active];
+    const double h = 1e-5 * length;
+    double g[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      double y[3] = { x[0], x[1], x[2] };
+      const double* p[4];
+      double f[2];
+      for (int s = 0; s < 2; ++s)
+      {
+        y[d] = x[d] + (s ? h : -h);
+        for (int k = 0; k < 4; ++k)
+          p[k] = m.T[active][k] == v ? y : m.X(m.T[active][k]);
+        f[s] = amTetraMeshOptimizer::Objective(p[0], p[1], p[2], p[3]);
+      }
+      g[d] = (f[1] - f[0]) / (2 * h);
+    }
+    const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (!(norm > 0))
+      break;
+    bool improved = false;
+    for (double step = 0.2 * length; step > 1e-4 * length && !improved; step *= 0.5)
+    {
+      double y[3];
+      for (int d = 0; d < 3; ++d)
+        y[d] = x[d] + step * g[d] / norm;
+      double worst, sum;
+      StarQuality(m, v, y, worst, sum);
+      if (worst > worst0 + 1e-12)
+      {
+        MoveVertex(m, v, y);
+        improved = moved = true;
+      }
+    }
+    if (!improved)
+      break;
+  }
+  return moved;
+}
+}
