@@ -130,15 +130,43 @@ int amLabelMapTetrahedralize::RequestData(
   const double* direction = input->GetDirectionMatrix()->GetData();
   const vtkIdType nv = scalars->GetNumberOfTuples();
   const int bg = this->BackgroundLabel;
-  if (bg < 0 || bg > 255)
+
+  // Any whole-number labels, any count: CGAL meshes a compact image (background 0, the other
+  // labels 1..K in increasing order, 8-bit up to 255 labels, 16-bit beyond) and the regions are
+  // given their own labels back.
+  std::map<int, vtkIdType> voxelsOf; // own label -> voxel count
+  for (vtkIdType i = 0; i < nv; ++i)
   {
-    vtkErrorMacro("BackgroundLabel " << bg << " is outside 0-255, the labels this backend meshes.");
+    const double v = scalars->GetComponent(i, 0);
+    if (!(std::fabs(v) < 2.0e9 && v == std::floor(v)))
+    {
+      vtkErrorMacro("Voxel " << i << " has the value " << v << ": a label map holds whole numbers (the "
+                             << scalars->GetDataTypeAsString() << " input looks like an intensity image).");
+      return 0;
+    }
+    ++voxelsOf[static_cast<int>(v)];
+  }
+  if (voxelsOf.size() == 1 && voxelsOf.begin()->first == bg)
+  {
+    vtkErrorMacro("The label map holds only the background label " << bg << ": nothing to mesh.");
     return 0;
   }
-
-  // The label map as an 8-bit CGAL image in its own frame (origin 0, axis-aligned); points are
-  // mapped to the world (origin + direction * p) at the end. The background becomes 0.
-  _image* raw = ::_createImage(dims[0], dims[1], dims[2], 1, spacing[0], spacing[1], spacing[2], 1,
+  std::vector<int> labelOf{ bg }; // compact index -> own label
+  std::map<int, int> compactOf{ { bg, 0 } };
+  for (const auto& lv : voxelsOf)
+    if (lv.first != bg)
+    {
+      compactOf[lv.first] = static_cast<int>(labelOf.size());
+      labelOf.push_back(lv.first);
+    }
+  const size_t nLabels = labelOf.size() - 1;
+  if (nLabels > 65535)
+  {
+    vtkErrorMacro("The label map holds " << nLabels << " labels; this backend meshes at most 65535.");
+    return 0;
+  }
+  const bool wide = nLabels > 255;
+  _image* raw = ::_createImage(dims[0], dims[1], dims[2], 1, spacing[0], spacing[1], spacing[2], wide ? 2 : 1,
     WK_FIXED, SGN_UNSIGNED);
   if (!raw)
   {
@@ -146,32 +174,28 @@ int amLabelMapTetrahedralize::RequestData(
     return 0;
   }
   CGAL::Image_3 image(raw);
-  unsigned char* voxels = static_cast<unsigned char*>(raw->data);
-  std::map<int, vtkIdType> count;
-  for (vtkIdType i = 0; i < nv; ++i)
   {
-    const double v = scalars->GetComponent(i, 0);
-    if (!(v >= 0 && v <= 255 && v == std::floor(v)))
+    // Runs of one label are common: the map lookup only where the value changes.
+    double last = std::numeric_limits<double>::quiet_NaN();
+    int index = 0;
+    for (vtkIdType i = 0; i < nv; ++i)
     {
-      vtkErrorMacro("Voxel " << i << " has the value " << v
-                             << ": this backend meshes whole-number labels 0-255 only.");
-      return 0;
+      const double v = scalars->GetComponent(i, 0);
+      if (v != last)
+      {
+        last = v;
+        index = compactOf[static_cast<int>(v)];
+      }
+      if (wide)
+        static_cast<unsigned short*>(raw->data)[i] = static_cast<unsigned short>(index);
+      else
+        static_cast<unsigned char*>(raw->data)[i] = static_cast<unsigned char>(index);
     }
-    int label = static_cast<int>(v);
-    // Swap the background with 0 so CGAL's outside value is always 0.
-    if (label == bg)
-      label = 0;
-    else if (label == 0)
-      label = bg;
-    voxels[i] = static_cast<unsigned char>(label);
-    ++count[label];
   }
-  if (count.size() == 1 && count.begin()->first == 0)
-  {
-    vtkErrorMacro("The label map holds only the background label " << bg << ": nothing to mesh.");
-    return 0;
-  }
-  auto toLabel = [bg](int subdomain) { return subdomain == 0 ? bg : (subdomain == bg ? 0 : subdomain); };
+  std::map<int, vtkIdType> count; // compact index -> voxel count
+  for (const auto& lv : voxelsOf)
+    count[compactOf[lv.first]] = lv.second;
+  auto toLabel = [&labelOf](int subdomain) { return labelOf[static_cast<size_t>(subdomain)]; };
   this->UpdateProgress(0.05);
 
   CGAL::Random rng(0);
@@ -183,7 +207,10 @@ int amLabelMapTetrahedralize::RequestData(
   if (this->ProtectJunctions)
   {
     std::vector<std::vector<Point>> polylines;
-    CGAL::polylines_to_protect<Point, unsigned char>(image, polylines);
+    if (wide)
+      CGAL::polylines_to_protect<Point, unsigned short>(image, polylines);
+    else
+      CGAL::polylines_to_protect<Point, unsigned char>(image, polylines);
     curves = polylines.size();
     domain.add_features(polylines.begin(), polylines.end());
   }
@@ -194,10 +221,10 @@ int amLabelMapTetrahedralize::RequestData(
   for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)
   {
     const double value = this->RegionCellSizes[k], size = this->RegionCellSizes[k + 1];
-    if (!(value >= 0 && value <= 255 && value == std::floor(value)) || static_cast<int>(value) == bg)
+    if (!(std::fabs(value) < 2.0e9 && value == std::floor(value)) || static_cast<int>(value) == bg)
     {
-      vtkErrorMacro("RegionCellSizes names the label " << value << ", which is not a meshed label (0-255, not the "
-                                                        << "background " << bg << ").");
+      vtkErrorMacro("RegionCellSizes names the label " << value << ", which is not a meshed label (a whole number, "
+                                                        << "not the background " << bg << ").");
       return 0;
     }
     if (!(size > 0) || !std::isfinite(size))
@@ -205,10 +232,13 @@ int amLabelMapTetrahedralize::RequestData(
       vtkErrorMacro("RegionCellSizes gives label " << value << " the size " << size << ": sizes must be > 0 mm.");
       return 0;
     }
-    const int label = static_cast<int>(value);
-    const int subdomain = label == 0 ? bg : label;
-    if (!count.count(subdomain))
-      vtkWarningMacro("RegionCellSizes names label " << label << ", which is not in the label map.");
+    const auto found = compactOf.find(static_cast<int>(value));
+    if (found == compactOf.end())
+    {
+      vtkWarningMacro("RegionCellSizes names label " << value << ", which is not in the label map.");
+      continue;
+    }
+    const int subdomain = found->second;
     regionSize[subdomain] = size;
   }
   SizeField cellSize(this->CellSize), facetSize(this->FacetSize);

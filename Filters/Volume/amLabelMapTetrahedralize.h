@@ -3,8 +3,11 @@
  * @brief   Multi-region tetrahedral mesh straight from a label map (CGAL Mesh_3, labeled image
  *          domain): the second backend of the volume stage, next to amTetrahedralize (TetGen).
  *
- * Input: a label map (whole-number scalars 0-255, e.g. amMorphologyCleaning's output; origin,
- * spacing and direction honoured). Every label other than BackgroundLabel becomes a subdomain.
+ * Input: a label map (whole-number scalars of any type and any values, e.g. amMorphologyCleaning's
+ * output or an int16 atlas; origin, spacing and direction honoured; non-whole values are an
+ * error). Every label other than BackgroundLabel becomes a subdomain: CGAL meshes a compact copy
+ * (background 0, the labels 1..K in increasing order; 8-bit up to 255 labels, 16-bit up to 65535)
+ * and each region is given its own label back.
  * CGAL's Delaunay refinement samples the interfaces of the (trilinearly interpolated) label
  * function and refines until the criteria hold: FacetDistance (surface approximation, mm),
  * FacetSize and FacetAngle (surface triangles), CellSize and CellRadiusEdgeRatio (tetrahedra).

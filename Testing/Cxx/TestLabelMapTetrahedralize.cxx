@@ -1,8 +1,10 @@
 // amLabelMapTetrahedralize (CGAL Mesh_3 backend): volumes against analytic balls, interfaces that
 // bound the tetrahedra exactly, the world frame (origin, direction), every phantom organ, same
 // result twice, bad input.
+#include "amAtlasChain.h" // amTest::DistinctValues
 #include "amLabelMapTetrahedralize.h"
 #include "amMeshQuality.h"
+#include "amSyntheticAtlasSource.h"
 #include "amSurfaceTestUtilities.h"
 #include "amTestUtilities.h"
 #include "amThoraxPhantomSource.h"
@@ -15,6 +17,7 @@
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnstructuredGrid.h"
@@ -367,9 +370,60 @@ TEST(LabelMapTetrahedralize, BadInput)
     EXPECT_NE(r.Errors.find("only the background"), std::string::npos) << r.Errors;
   }
   {
-    const Meshing r = MeshIt(amTest::LabelMap(8, 8, 8, 1.0, origin, [](double x, double, double) { return x > 3 ? 300 : 0; }), 2, 3, 0.5);
+    // An intensity image fed by mistake: refused, not meshed as hundreds of labels.
+    vtkNew<vtkImageData> ct;
+    ct->SetDimensions(8, 8, 8);
+    ct->AllocateScalars(VTK_FLOAT, 1);
+    for (vtkIdType i = 0; i < ct->GetNumberOfPoints(); ++i)
+      ct->GetPointData()->GetScalars()->SetTuple1(i, 0.37 * static_cast<double>(i));
+    const Meshing r = MeshIt(ct, 2, 3, 0.5);
     EXPECT_FALSE(r.Ok);
-    EXPECT_NE(r.Errors.find("0-255"), std::string::npos) << r.Errors;
+    EXPECT_NE(r.Errors.find("whole numbers"), std::string::npos) << r.Errors;
+    EXPECT_NE(r.Errors.find("float"), std::string::npos) << r.Errors;
     EXPECT_EQ(r.Mesh->GetNumberOfCells(), 0);
   }
+}
+
+TEST(LabelMapTetrahedralize, AnyWholeNumberLabelsKeepTheirValues)
+{
+  // Labels far outside 0-255, negative ones and the background not 0: each region comes back with
+  // its own label (CGAL meshes a compact copy).
+  const double origin[3] = { 0, 0, 0 };
+  auto labels = amTest::LabelMap(32, 32, 32, 1.0, origin, [](double x, double y, double z) {
+    const double r = std::sqrt((x - 15.5) * (x - 15.5) + (y - 15.5) * (y - 15.5) + (z - 15.5) * (z - 15.5));
+    return r > 13 ? 70000 : (r < 6 ? -5 : (x < 15.5 ? 1000 : 2000));
+  });
+  vtkNew<amLabelMapTetrahedralize> m;
+  m->SetInputData(labels);
+  m->SetBackgroundLabel(70000);
+  m->SetFacetSize(2);
+  m->SetCellSize(2);
+  m->SetFacetDistance(0.5);
+  m->AddRegionCellSize(-5, 1.0);
+  m->Update();
+  const std::set<int> regions = amTest::DistinctValues(m->GetOutput()->GetCellData()->GetArray("Region"));
+  EXPECT_EQ(regions, (std::set<int>{ -5, 1000, 2000 }));
+  const std::set<int> sides =
+    amTest::DistinctValues(vtkPolyData::SafeDownCast(m->GetOutputDataObject(1))->GetCellData()->GetArray("Labels"));
+  EXPECT_EQ(sides, (std::set<int>{ -5, 1000, 2000, 70000 }));
+}
+
+TEST(LabelMapTetrahedralize, MoreThan255Labels)
+{
+  // 300 int16 labels (Voronoi cells): the 16-bit path; every label a region.
+  vtkNew<amSyntheticAtlasSource> atlas;
+  atlas->SetNumberOfLabels(300);
+  atlas->SetDimensions(64, 64, 64);
+  atlas->Update();
+  ASSERT_EQ(atlas->GetOutput()->GetScalarType(), VTK_SHORT);
+  std::set<int> labels = amTest::DistinctValues(atlas->GetOutput()->GetPointData()->GetScalars());
+  labels.erase(0);
+  ASSERT_EQ(labels.size(), 300u);
+  vtkNew<amLabelMapTetrahedralize> m;
+  m->SetInputConnection(atlas->GetOutputPort());
+  m->SetFacetSize(3);
+  m->SetCellSize(3);
+  m->SetFacetDistance(1.0);
+  m->Update();
+  EXPECT_EQ(amTest::DistinctValues(m->GetOutput()->GetCellData()->GetArray("Region")), labels);
 }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -362,6 +363,59 @@ TEST(RemeshHausdorffMeasure, MeasuresALiftedVertex)
   EXPECT_EQ(r->Hausdorff.Measure(r->Mesh, r->In, upperAgain, again, edgeOf), h);
   EXPECT_EQ(upperAgain, upper);
   EXPECT_EQ(again.size(), insert.size());
+}
+
+TEST(RemeshHausdorffMeasure, ClosedStripCountsItsTwoRegions)
+{
+  // Input: a flat 4 x 4 grid of unit squares; square (0, 0) separates regions 5 and 6, the rest
+  // of column 0 regions 5 and 0, everything else regions 6 and 0.
+  const int n = 4;
+  amSurfaceMesh m = FlatGrid(n, 1.0, 6);
+  for (int j = 0; j < n; ++j)
+    for (int half = 0; half < 2; ++half)
+      m.Labels[2 * (j * n) + half] = { 5, j == 0 ? 6 : 0 };
+  auto r = Start(m, 1.2, 1.0);
+  double upper;
+  std::vector<std::pair<int, Vec3>> insert;
+  std::vector<int> edgeOf;
+  EXPECT_NEAR(r->Hausdorff.Measure(r->Mesh, r->In, upper, insert, edgeOf), 0.0, 1e-12);
+  // The 5|6 interface closed (square (0, 0) now between 5 and 0, as when a strip between two
+  // junction curves is zipped): no triangle of 5|6 is left, but regions 5 and 6 both still lie
+  // within 1 of each of its samples (6 across the edge x = 1), so the distance is 1, not inf.
+  const int sheet50 = r->Mesh.T[2 * n].Sheet; // square (0, 1)
+  for (int half = 0; half < 2; ++half)
+  {
+    Triangle& t = r->Mesh.T[half];
+    t.Labels[0] = 5;
+    t.Labels[1] = 0;
+    t.Sheet = sheet50;
+  }
+  const double h = r->Hausdorff.Measure(r->Mesh, r->In, upper, insert, edgeOf);
+  EXPECT_NEAR(h, 1.0, 1e-9);
+  EXPECT_TRUE(insert.empty()); // within the tolerance 1.2: nothing to refine
+}
+
+TEST(RemeshLabelOrder, RegionsAlternateAroundAJunctionEdge)
+{
+  // Three interfaces meet at the edge b-w (b at the origin, w on +z), at 0, 120 and 240 degrees;
+  // regions 1, 2 and 3 lie between them. Vertex 5 lies at 300 degrees.
+  amSurfaceMesh m;
+  m.Points = { { 0, 0, 0 }, { 0, 0, 1 } };
+  for (double degrees : { 0.0, 120.0, 240.0, 300.0 })
+    m.Points.push_back({ std::cos(degrees * M_PI / 180), std::sin(degrees * M_PI / 180), 0.5 });
+  // Each triangle runs b -> w -> third: its Labels[1] side is the way the angle grows.
+  m.Triangles = { { 0, 1, 2 }, { 0, 1, 3 }, { 0, 1, 4 } };
+  m.Labels = { { 3, 1 }, { 1, 2 }, { 2, 3 } };
+  m.BuildTopology();
+  auto r = Start(m, 0.1, 1.0);
+  const Vec3 b = r->Mesh.P[0];
+  EXPECT_TRUE(r->LabelsInOrderAround(0, b, {}, {}, {}));
+  // The 1|2 interface swung round past the 2|3 one (to 300 degrees): regions interleave.
+  EXPECT_FALSE(r->LabelsInOrderAround(0, b, {}, { 1 }, { { 0, 1, 5 } }));
+  // Swung less far (to 120 degrees again, by way of the same vertex): still in order.
+  EXPECT_TRUE(r->LabelsInOrderAround(0, b, {}, { 1 }, { { 0, 1, 3 } }));
+  // One interface gone: two triangles around the edge cannot interleave.
+  EXPECT_TRUE(r->LabelsInOrderAround(0, b, { 2 }, { 1 }, { { 0, 1, 5 } }));
 }
 
 TEST(RemeshScheduler, EveryItemOnceWhateverTheThreads)

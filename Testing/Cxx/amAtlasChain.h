@@ -48,12 +48,13 @@ struct AtlasChain
   }
 };
 
-/// The distinct values of a one-component array.
+/// The distinct values of an array, over all its components.
 inline std::set<int> DistinctValues(vtkDataArray* a)
 {
   std::set<int> s;
   for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-    s.insert(static_cast<int>(a->GetTuple1(i)));
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+      s.insert(static_cast<int>(a->GetComponent(i, c)));
   return s;
 }
 }

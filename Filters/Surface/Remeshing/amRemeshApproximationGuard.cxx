@@ -98,6 +98,29 @@ bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed, const
           return q.Id;
       return -1;
     };
+    // Or, where an interface narrows to nothing between two junction curves, its two regions
+    // still within Eps of x (the Hausdorff measure's rule for such a strip).
+    auto bothRegionsNear = [&](const Vec3& x, int sheet) {
+      double cl[3];
+      for (int label : this->In.SheetLabels[sheet])
+      {
+        bool found = false;
+        for (const auto& q : star)
+        {
+          const auto& sides = this->In.SheetLabels[q.Sheet];
+          if ((sides[0] == label || sides[1] == label) &&
+            amTriangleLocator::ClosestPointOnTriangle(
+              x.data(), q.X[0].data(), q.X[1].data(), q.X[2].data(), cl) <= eps2)
+          {
+            found = true;
+            break;
+          }
+        }
+        if (!found)
+          return false;
+      }
+      return true;
+    };
     for (int owner : { w, w == into ? from : -1 })
     {
       if (owner < 0)
@@ -127,7 +150,7 @@ bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed, const
           gather();
           const std::vector<int>& onInput = this->Curves.InputSheets[entry.Point];
           for (int sheet : onInput.empty() ? starSheets : onInput)
-            if (near(x, sheet, -1) < 0)
+            if (near(x, sheet, -1) < 0 && !(this->CloseStrips && bothRegionsNear(x, sheet)))
               return false;
         }
       }

@@ -34,14 +34,21 @@ public:
     const std::vector<int>& sheets, int centre, const std::vector<int>& kept) const;
   /// Whether every input vertex that an affected vertex stands for stays within Eps of that
   /// vertex's triangles of its interface (a junction-curve point: of every interface it lies on in
-  /// the input, so that no patch of an interface can vanish from around it) once the triangles 'removed' are replaced
-  /// by the new ones (ids, positions, sheets; 'newIds' the ids they will have). 'from' (or -1) is a vertex disappearing
-  /// into 'into': its points are checked with into's. The hints found go to the worker's PendingHints.
+  /// the input, so that no patch of an interface can vanish from around it, unless CloseStrips)
+  /// once the triangles 'removed' are replaced by the new ones (ids, positions, sheets; 'newIds'
+  /// the ids they will have). 'from' (or -1) is a vertex disappearing into 'into': its points are
+  /// checked with into's. The hints found go to the worker's PendingHints.
   bool ClustersStayNear(const std::vector<int>& removed, const std::vector<std::array<int, 3>>& ids,
     const std::vector<std::array<Vec3, 3>>& pos, const std::vector<int>& sheets, const std::vector<int>& newIds,
     const std::vector<int>& affected, Worker& worker, int from = -1, int into = -1) const;
   /// The hints of the worker's last ClustersStayNear kept (its operation is done).
   void KeepHints(Worker& worker) const;
+
+  /// Whether an interface may narrow to nothing between two junction curves: a junction point
+  /// then passes where its two regions stay within Eps of it, though no triangle of their
+  /// interface does (default off: only the small-angle cleanup closes such strips, under its
+  /// undo when the Hausdorff distance grows).
+  bool CloseStrips = false;
 
 private:
   Surface& S;

@@ -4,12 +4,12 @@
 
 namespace amRemesh
 {
-/// Removes triangles with an angle under SmallAngle where an operation that keeps the other
+/// Removes triangles with an angle under 'below' where an operation that keeps the other
 /// guarantees allows it: the flip of a cap's longest edge, else the collapse of the cap's apex
 /// (or of the needle's short edge) into a neighbour. Caps arise where the Hausdorff insertions
 /// refine along a crease of the input (the cut end of a vessel), which flips cannot cross.
 /// Returns the number of operations done.
-int Remesher::SmallAngleCleanup()
+int Remesher::SmallAngleCleanup(double below)
 {
   int done = 0;
   for (size_t t = 0; t < this->Mesh.T.size(); ++t)
@@ -25,7 +25,7 @@ int Remesher::SmallAngleCleanup()
       angle[k] = std::acos(std::max(-1.0, std::min(1.0, u.dot(v) / (u.norm() * v.norm()))));
     }
     const int small = static_cast<int>(std::min_element(angle, angle + 3) - angle);
-    if (!(angle[small] < SmallAngle))
+    if (!(angle[small] < below))
       continue;
     const int large = static_cast<int>(std::max_element(angle, angle + 3) - angle);
     const int apex = w[large], a = w[(large + 1) % 3], b = w[(large + 2) % 3];

@@ -14,7 +14,13 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
 {
   if (to && (this->Mesh.Kind[a] != amSurfaceMesh::Surface || this->Mesh.Kind[b] != amSurfaceMesh::Surface))
     return false;
-  if (!this->Mesh.VAlive[a] || !this->Mesh.VAlive[b] || this->Mesh.Kind[a] == amSurfaceMesh::Corner)
+  if (!this->Mesh.VAlive[a] || !this->Mesh.VAlive[b])
+    return false;
+  // Closing a strip: a junction vertex into another across the strip (or along a short curve
+  // between two corners), b then taking a's interfaces too and becoming a corner.
+  const bool zipping = !to && this->Approximation.CloseStrips && this->Mesh.Kind[a] != amSurfaceMesh::Surface &&
+    this->Mesh.Kind[b] != amSurfaceMesh::Surface;
+  if (this->Mesh.Kind[a] == amSurfaceMesh::Corner && !zipping)
     return false;
   Worker& worker = this->W();
   auto &edge = worker.C.Edge, &na = worker.C.Na, &nb = worker.C.Nb, &common = worker.C.Common, &apex = worker.C.Apex,
@@ -26,7 +32,8 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
   if (edge.empty())
     return false;
   const bool feature = this->Mesh.IsFeature(edge);
-  if ((this->Mesh.Kind[a] == amSurfaceMesh::Curve) != feature)
+  const bool zip = zipping && !(this->Mesh.Kind[a] == amSurfaceMesh::Curve && feature); // else along a curve
+  if ((this->Mesh.Kind[a] == amSurfaceMesh::Curve) != feature && !zip)
     return false;
   // Link condition: the common neighbours are exactly the apexes of the edge's triangles.
   this->Mesh.Neighbours(a, na);
@@ -83,16 +90,20 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
     const Vec3 n0 = this->Mesh.Normal(t), n1 = (p[1] - p[0]).cross(p[2] - p[0]);
     if (n1.norm() <= 1e-12 * n0.norm() || n0.normalized().dot(n1.normalized()) < 0.5)
       return false;
-    if (MinAngle(p[0], p[1], p[2]) < SmallAngle) // a cap or needle no later flip may mend
+    if (MinAngle(p[0], p[1], p[2]) < this->NewAngleFloor) // a cap or needle no later flip may mend
       return false;
-    if (!this->Curves.Allowed(this->Mesh, b, this->Mesh.T[t].Sheet))
+    if (!this->Curves.Allowed(this->Mesh, b, this->Mesh.T[t].Sheet) &&
+      !(zip && this->Curves.Allowed(this->Mesh, a, this->Mesh.T[t].Sheet)))
       return false;
-    if (this->Mesh.Length(x, mx, other[0]) > LongEdge || this->Mesh.Length(x, mx, other[1]) > LongEdge)
+    if (this->Mesh.Length(x, mx, other[0]) > this->LongestEdge ||
+      this->Mesh.Length(x, mx, other[1]) > this->LongestEdge)
       return false;
     ids.push_back(v);
     pos.push_back(p);
     sheets.push_back(this->Mesh.T[t].Sheet);
   }
+  if (!this->LabelsInOrderAround(b, x, edge, changed, ids))
+    return false;
   // The distance samples last: they cost most, and the cheaper checks above refuse many
   // collapses first. Where b stays, its edges stay.
   static const std::vector<int> none;
@@ -124,6 +135,16 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
       if (this->Mesh.T[t].V[k] == a)
         this->Mesh.T[t].V[k] = b;
     this->Mesh.VT[b].push_back(t);
+  }
+  if (zip)
+  {
+    auto& merged = this->Mesh.Merged[b];
+    const auto& sheets = this->Curves.InputSheets[this->Mesh.Anchor[a]];
+    merged.insert(merged.end(), sheets.begin(), sheets.end());
+    merged.insert(merged.end(), this->Mesh.Merged[a].begin(), this->Mesh.Merged[a].end());
+    std::sort(merged.begin(), merged.end());
+    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+    this->Mesh.Kind[b] = amSurfaceMesh::Corner;
   }
   this->Mesh.VT[a].clear();
   this->Mesh.VAlive[a] = 0;

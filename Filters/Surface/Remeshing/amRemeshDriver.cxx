@@ -36,41 +36,54 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
   h = this->Enforce(upper, inserted);
   report(0.85);
   // Triangles with small angles that the insertions left (no tetrahedron on them can be good):
-  // removed where a flip or collapse allows it, then the bound enforced again. Kept only if the
-  // distance ends no worse than before (or within the tolerance), fewer triangles have small
-  // angles and no edge got much shorter (where the bound cannot be met, more insertion rounds
-  // would only refine towards a point).
-  for (int attempt = 0; attempt < 3; ++attempt)
-  {
+  // removed where a flip or collapse allows it (junction vertices closing the strips of an
+  // interface that narrows to nothing between two curves too), then the bound enforced again.
+  // Kept only if the distance ends no worse than before (or within the tolerance), fewer
+  // triangles have small angles or the smallest is larger, and no edge got much shorter (where
+  // the bound cannot be met, more insertion rounds would only refine towards a point). Last,
+  // the degenerate triangles alone, with collapses that may leave angles down to
+  // MinimumNewAngle: the same checks undo that where it costs the bound.
+  auto attempt = [&](double below, double floor) {
     long long smallBefore, smallAfter;
-    double shortestBefore, shortestAfter;
-    this->Mesh.AngleSummary(smallBefore, shortestBefore);
-    if (smallBefore == 0)
-      break; // nothing to clean: no copy of the surface for an undo
+    double smallestBefore, smallestAfter, shortestBefore, shortestAfter;
+    this->Mesh.AngleSummary(smallBefore, smallestBefore, shortestBefore);
+    if (!(smallestBefore < below))
+      return false; // nothing to clean: no copy of the surface for an undo
     Snapshot before = this->Save();
     const double hBefore = h, upperBefore = upper;
     const long long insertedBefore = inserted;
     int cleaned = 0;
+    this->LongestEdge = 2 * LongEdge;
+    this->NewAngleFloor = floor;
+    this->Approximation.CloseStrips = true;
     for (int round = 0; round < 3; ++round)
     {
-      const int n = this->SmallAngleCleanup();
+      const int n = this->SmallAngleCleanup(below);
       cleaned += n;
       if (n == 0)
         break;
     }
+    this->LongestEdge = LongEdge;
+    this->NewAngleFloor = SmallAngle;
+    this->Approximation.CloseStrips = false;
     if (cleaned == 0)
-      break;
+      return false;
     h = this->Enforce(upper, inserted);
-    this->Mesh.AngleSummary(smallAfter, shortestAfter);
-    if (h > std::max(hBefore, this->In.Eps) || smallAfter >= smallBefore || shortestAfter < 0.5 * shortestBefore)
+    this->Mesh.AngleSummary(smallAfter, smallestAfter, shortestAfter);
+    if (h > std::max(hBefore, this->In.Eps) || (smallAfter >= smallBefore && !(smallestAfter > smallestBefore)) ||
+      shortestAfter < 0.5 * shortestBefore)
     {
       this->Restore(std::move(before));
       h = hBefore;
       upper = upperBefore;
       inserted = insertedBefore;
-      break;
+      return false;
     }
-  }
+    return true;
+  };
+  for (int n = 0; n < 3 && attempt(SmallAngle, SmallAngle); ++n)
+    ;
+  attempt(DegenerateAngle, MinimumNewAngle);
   return result;
 }
 

@@ -4,6 +4,7 @@
 
 #include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace amRemesh
@@ -22,10 +23,37 @@ bool HausdorffMeasure::Unchanged(const Surface& S, size_t t) const
   return true;
 }
 
+double HausdorffMeasure::ToBothRegions(const Surface& S, const amRemesh::Input& In, int sheet, const Vec3& x)
+{
+  double farthest = 0;
+  for (int label : In.SheetLabels[sheet])
+  {
+    auto it = this->Regions.find(label);
+    if (it == this->Regions.end())
+    {
+      std::vector<std::array<double, 3>> pts(S.P.size());
+      for (size_t i = 0; i < S.P.size(); ++i)
+        pts[i] = { S.P[i].x(), S.P[i].y(), S.P[i].z() };
+      std::vector<std::array<vtkIdType, 3>> tris;
+      for (const Triangle& t : S.T)
+        if (t.Alive && (t.Labels[0] == label || t.Labels[1] == label))
+          tris.push_back({ t.V[0], t.V[1], t.V[2] });
+      it = this->Regions.emplace(label, amTriangleLocator()).first;
+      it->second.Build(pts, tris);
+    }
+    double cl[3];
+    vtkIdType t;
+    const double d2 = it->second.ClosestPoint(x.data(), cl, t);
+    farthest = std::max(farthest, t < 0 ? std::numeric_limits<double>::infinity() : d2);
+  }
+  return farthest;
+}
+
 double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, double& upperBound,
   std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf)
 {
   edgeOf.clear();
+  this->Regions.clear(); // the regions' boundaries of this state of the surface, built on demand
   const int nSheets = static_cast<int>(In.Ref.size());
   const size_t nt = S.T.size();
   std::vector<char> same(nt, 0);
@@ -116,8 +144,12 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
     });
     for (size_t i = 0; i < samples.size(); ++i)
     {
-      worst = std::max(worst, std::sqrt(d2[i]));
-      if (d2[i] > eps2 && at[i] >= 0)
+      // Farther than Eps from its interface: a sample within Eps of both its regions'
+      // boundaries is where the interface narrowed to a junction curve (a strip between two
+      // curves that a junction point's collapse closed): the regions still meet there.
+      const double relaxed = d2[i] > eps2 ? this->ToBothRegions(S, In, s, samples[i]) : d2[i];
+      worst = std::max(worst, std::sqrt(std::min(d2[i], relaxed)));
+      if (relaxed > eps2 && at[i] >= 0)
       {
         const int t = at[i];
         if (!used[t])

@@ -4,18 +4,21 @@
  *          interface, with the points to insert where it exceeds the tolerance.
  *
  * Input -> result: every input sample (vertices, edge midpoints, centroids) to the nearest result
- * triangle of its interface. Result -> input: a grid of points on every result triangle (spacing
- * at most the tolerance, at most 12 intervals per edge), after its centroid and edge midpoints;
- * the grid's gap enters the upper bound. A later measure measures again only what changed since
- * the last one: the input is fixed, so a triangle with the same vertices at the same places has
- * the same distances, and an input sample whose nearest triangle is unchanged can only have come
- * nearer to a new one.
+ * triangle of its interface, or where that is farther than the tolerance, to the farther of its
+ * two regions' boundaries (where an interface narrows to a junction curve, the regions still meet
+ * within the tolerance although no triangle of theirs does). Result -> input: a grid of points
+ * on every result triangle (spacing at most the tolerance, at most 12 intervals per edge), after
+ * its centroid and edge midpoints; the grid's gap enters the upper bound. A later measure
+ * measures again only what changed since the last one: the input is fixed, so a triangle with
+ * the same vertices at the same places has the same distances, and an input sample whose
+ * nearest triangle is unchanged can only have come nearer to a new one.
  */
 #ifndef amRemeshHausdorffMeasure_h
 #define amRemeshHausdorffMeasure_h
 
 #include "amRemeshInput.h"
 
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -32,6 +35,11 @@ public:
     std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf);
 
 private:
+  /// The farther of the distances (squared) from x to the boundaries of the two regions of
+  /// 'sheet' (any triangle with the label on a side), inf where a region has none.
+  double ToBothRegions(const Surface& surface, const amRemesh::Input& input, int sheet, const Vec3& x);
+  std::map<int, amTriangleLocator> Regions; // per label: its region's boundary, this Measure
+
   // What the last Measure saw.
   struct MeasureCache
   {

@@ -16,6 +16,9 @@ void Input::Build(const amSurfaceMesh& mesh, const std::vector<Triangle>& triang
     this->Points[v] = Vec3(mesh.Points[v].data());
   this->Ref.resize(static_cast<size_t>(nSheets));
   this->Samples.resize(static_cast<size_t>(nSheets));
+  this->SheetLabels.assign(static_cast<size_t>(nSheets), { { 0, 0 } });
+  for (const Triangle& t : triangles)
+    this->SheetLabels[t.Sheet] = { { t.Labels[0], t.Labels[1] } };
   std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets));
   for (const Triangle& t : triangles)
     tris[t.Sheet].push_back({ t.V[0], t.V[1], t.V[2] });

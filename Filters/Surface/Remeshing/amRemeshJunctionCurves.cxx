@@ -11,6 +11,7 @@ void JunctionCurves::Build(const amSurfaceMesh& mesh, Surface& surface)
   const size_t np = surface.P.size();
   this->InputSheets.assign(np, {});
   surface.Anchor.assign(np, -1);
+  surface.Merged.assign(np, {});
   for (size_t v = 0; v < np; ++v)
     if (surface.Kind[v] != amSurfaceMesh::Surface)
     {

@@ -30,13 +30,15 @@ public:
   /// From the input surface (its topology built) and its triangles with their sheets; sets
   /// the surface's anchors (each input curve vertex is its own).
   void Build(const amSurfaceMesh& mesh, Surface& surface);
-  /// Whether vertex v may have a triangle of interface 'sheet'.
+  /// Whether vertex v may have a triangle of interface 'sheet' (its anchor's, or a merged one's).
   bool Allowed(const Surface& surface, int v, int sheet) const
   {
     if (surface.Kind[v] == amSurfaceMesh::Surface || surface.Anchor[v] < 0)
       return true;
     const auto& sheets = this->InputSheets[surface.Anchor[v]];
-    return std::binary_search(sheets.begin(), sheets.end(), sheet);
+    const auto& merged = surface.Merged[v];
+    return std::binary_search(sheets.begin(), sheets.end(), sheet) ||
+      std::binary_search(merged.begin(), merged.end(), sheet);
   }
   /// The input curve vertex halfway (by length) along the shortest input curve path from a to b
   /// no longer than maxLength, not a or b themselves (-1: no such path, or no vertex between).

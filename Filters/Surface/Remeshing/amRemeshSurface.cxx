@@ -57,6 +57,7 @@ int Surface::AddVertex(const Vec3& x, const Mat3& m, unsigned char kind, int anc
   this->M.push_back(m);
   this->Kind.push_back(kind);
   this->Anchor.push_back(anchor);
+  this->Merged.emplace_back();
   this->VAlive.push_back(1);
   this->VT.emplace_back();
   this->Cluster.emplace_back();
@@ -71,15 +72,18 @@ void Surface::SizeDirty()
     this->FlipDirty.resize(this->P.size(), 1);
 }
 
-void Surface::AngleSummary(long long& small, double& shortest) const
+void Surface::AngleSummary(long long& small, double& smallest, double& shortest) const
 {
   small = 0;
+  smallest = M_PI;
   shortest = std::numeric_limits<double>::infinity();
   for (const Triangle& t : this->T)
     if (t.Alive)
     {
       const Vec3 &a = this->P[t.V[0]], &b = this->P[t.V[1]], &c = this->P[t.V[2]];
-      small += MinAngle(a, b, c) < SmallAngle;
+      const double angle = MinAngle(a, b, c);
+      small += angle < SmallAngle;
+      smallest = std::min(smallest, angle);
       shortest = std::min({ shortest, (b - a).norm(), (c - b).norm(), (a - c).norm() });
     }
 }

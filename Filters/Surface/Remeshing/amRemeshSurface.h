@@ -30,6 +30,9 @@ using Mat3 = Eigen::Matrix3d;
 constexpr double MinimumNewAngle = 2.0 * M_PI / 180.0;
 /// Triangles with an angle under this are removed after the insertions where the checks allow.
 constexpr double SmallAngle = 10.0 * M_PI / 180.0;
+/// Triangles with an angle under this are degenerate: removed last, accepting new angles down to
+/// MinimumNewAngle.
+constexpr double DegenerateAngle = 1.0 * M_PI / 180.0;
 /// Edges shorter than ShortEdge in the metric are collapsed where no edge longer than LongEdge
 /// results (a larger ShortEdge gives fewer triangles but tetrahedra of lower quality on them).
 constexpr double ShortEdge = 0.8;
@@ -85,6 +88,9 @@ public:
   std::vector<std::vector<ClusterEntry>> Cluster; // per vertex: the input points it stands for
   /// Per vertex: the input curve vertex a curve vertex sits on (-1 for surface vertices).
   std::vector<int> Anchor;
+  /// Per vertex: the interfaces of the junction vertices closed into it (a strip's two curves
+  /// zipped), beyond its anchor's (sorted).
+  std::vector<std::vector<int>> Merged;
   /// Vertices whose neighbourhood changed since the last collapse pass began: only edges at one
   /// of them are tried again (a refused collapse whose star did not change would be refused
   /// again, unless it was refused for crossing a triangle elsewhere that has since moved: such
@@ -134,8 +140,9 @@ public:
     this->Dirty[v] = 1;
     this->FlipDirty[v] = 1;
   }
-  /// Live triangles with an angle under SmallAngle, and the shortest live edge.
-  void AngleSummary(long long& small, double& shortest) const;
+  /// Live triangles with an angle under SmallAngle, the smallest angle (radians) and the
+  /// shortest live edge.
+  void AngleSummary(long long& small, double& smallest, double& shortest) const;
 };
 }
 

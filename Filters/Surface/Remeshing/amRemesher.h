@@ -66,6 +66,11 @@ public:
   long long Flips() const { return this->Workers[0].Flips + this->Workers[1].Flips; }
   long long Moves() const { return this->Workers[0].Moves + this->Workers[1].Moves; }
 
+  /// Longest metric edge a collapse may make: LongEdge, more while small angles are cleaned (an
+  /// edge too long is split again by the insertions; a needle or cap stays).
+  double LongestEdge = LongEdge;
+  /// Smallest angle a collapse may make: SmallAngle, less while degenerate triangles are removed.
+  double NewAngleFloor = SmallAngle;
   Surface Mesh;
   amRemesh::Input In;
   JunctionCurves Curves;
@@ -109,8 +114,12 @@ public:
   int RelaxPass();
   /// Where the point x of the input is nearest a vertex of triangle t, move that vertex there.
   bool MoveVertexNearest(int t, const Vec3& x);
-  /// Removes triangles with an angle under SmallAngle where a flip or collapse allows it.
-  int SmallAngleCleanup();
+  /// Whether the regions alternate consistently around every edge at b once a collapse into b
+  /// (then at 'at') removes the triangles 'gone' and gives the triangles 'changed' the vertices 'ids'.
+  bool LabelsInOrderAround(int b, const Vec3& at, const std::vector<int>& gone, const std::vector<int>& changed,
+    const std::vector<std::array<int, 3>>& ids) const;
+  /// Removes triangles with an angle under 'below' where a flip or collapse allows it.
+  int SmallAngleCleanup(double below);
 
   /// The bound enforced: measure, insert where it is exceeded, measure again (at most 30 rounds).
   double Enforce(double& upper, long long& inserted);
