@@ -89,8 +89,11 @@ def generate():
                 if element.tag not in ("SourceProxy", "WriterProxy", "Proxy"):
                     continue
                 cls = element.get("class")
-                out.append("## %s (`%s`, class `%s`)" % (element.get("label", element.get("name")),
-                                                        element.get("name"), cls))
+                full = element.get("name")
+                short = full[len("Anatomesh"):] if full.startswith("Anatomesh") else full
+                out.append("## %s (`%s`, class `%s`)" % (element.get("label", full), short, cls))
+                out.append("")
+                out.append("Pipeline type `%s`; ParaView proxy `%s`." % (short, full))
                 out.append("")
                 doc = header_doc(cls)
                 if not doc:

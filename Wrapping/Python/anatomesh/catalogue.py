@@ -8,6 +8,8 @@ import glob
 import os
 import xml.etree.ElementTree as ET
 
+PREFIX = "Anatomesh"
+
 _TYPES = {
     "IntVectorProperty": "int",
     "DoubleVectorProperty": "double",
@@ -58,7 +60,10 @@ class Proxy:
 
     def __init__(self, group, element, xml_file):
         self.group = group
-        self.name = element.get("name")
+        # The server-manager name carries the prefix that keeps it apart from stock ParaView's
+        # proxies (ImageReader, MeshQuality); pipeline files and the CLI use the short name.
+        self.xml_name = element.get("name")
+        self.name = self.xml_name[len(PREFIX):] if self.xml_name.startswith(PREFIX) else self.xml_name
         self.class_name = element.get("class")
         self.label = element.get("label", self.name)
         self.xml_file = xml_file
@@ -89,7 +94,8 @@ def default_xml_files():
 
 
 def load(xml_files=None):
-    """Return {proxy name: Proxy} for every proxy of the server-manager XML files."""
+    """Return {short proxy name: Proxy} for every proxy of the server-manager XML files (the
+    short name is the server-manager name without its "Anatomesh" prefix)."""
     proxies = {}
     for path in xml_files or default_xml_files():
         root = ET.parse(path).getroot()
