@@ -1,0 +1,16 @@
+# ctest -P script: configure, build and run the downstream project against an installed Anatomesh.
+# -DSOURCE=... -DBINARY=... -DPREFIX=... (the install prefix)
+file(REMOVE_RECURSE "${BINARY}")
+execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE}" -B "${BINARY}" "-DCMAKE_PREFIX_PATH=${PREFIX}"
+  RESULT_VARIABLE failed)
+if (failed)
+  message(FATAL_ERROR "find_package(Anatomesh) from ${PREFIX}: configure failed")
+endif ()
+execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BINARY}" RESULT_VARIABLE failed)
+if (failed)
+  message(FATAL_ERROR "the downstream project does not build against ${PREFIX}")
+endif ()
+execute_process(COMMAND "${BINARY}/downstream" RESULT_VARIABLE failed)
+if (failed)
+  message(FATAL_ERROR "the downstream program failed")
+endif ()
