@@ -138,9 +138,12 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
   std::string key;
   mesh = Mesh();
   bool sawVersion = false, sawVertices = false, sawEnd = false;
+  std::string last = "MeshVersionFormatted";
   while (t.Next(key))
   {
     long long n = 0;
+    if (key != "End")
+      last = key;
     if (key == "MeshVersionFormatted")
     {
       if (!t.Integer(n, error, "a version number"))
@@ -230,7 +233,11 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
     return t.Fail(error, "not a Medit mesh: no MeshVersionFormatted keyword");
   if (!sawVertices)
     return t.Fail(error, "no Vertices section");
-  (void)sawEnd; // "End" is optional in practice
+  // Without End, a file cut between two sections (before its Tetrahedra, say) would read as a
+  // valid smaller mesh: every writer (Medit, Mmg, Gmsh, TetGen, CGAL, ours) ends with End.
+  if (!sawEnd)
+    return t.Fail(error, "the file ends without its End keyword after the " + last +
+        " section: it is cut short, or not a complete Medit mesh");
   return true;
 }
 

@@ -200,6 +200,9 @@ TEST(Medit, MalformedFilesNameTheLine)
     { "Dimension 3\nVertices\n1\n0 0 0 0\n", "no MeshVersionFormatted" },
     { "MeshVersionFormatted 2\nDimension 3\nVertices\n1\nnan 0 0 0\n", "non-finite" },
     { "", "no MeshVersionFormatted" },
+    // Cut between two sections (before the tetrahedra): not a smaller valid mesh.
+    { "MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1 0 0 0\n0 1 0 0\nTriangles\n1\n1 2 3 7\n",
+      "ends without its End keyword after the Triangles section" },
   };
   int k = 0;
   for (const Case& c : cases)
