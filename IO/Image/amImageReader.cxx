@@ -433,6 +433,21 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
       return false;
     }
     const bool byUID = this->SeriesUID && *this->SeriesUID;
+    if (!byUID && onlyFile.empty() && uids.size() > 1)
+    {
+      // Reading one of several series without a word would hide the others (or mix them up).
+      std::ostringstream list;
+      for (const auto& u : uids)
+      {
+        const auto f = names->GetFileNames(u);
+        list << "\n  " << (u.empty() ? std::string("(no SeriesInstanceUID)") : u) << ": " << f.size()
+             << " files, e.g. '" << (f.empty() ? std::string() : f.front()) << "'";
+      }
+      vtkErrorMacro("DICOM folder '" << folder << "' holds " << uids.size()
+                                     << " series; set SeriesUID to the one to read, or FileName to one of its files:"
+                                     << list.str());
+      return false;
+    }
     for (const auto& u : uids)
     {
       const auto f = names->GetFileNames(u);

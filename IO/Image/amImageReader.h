@@ -16,8 +16,8 @@
  * message that gives the tilt angle and the range of gaps; with ResampleIrregularSeries on, it
  * resamples the series onto a regular grid aligned with the slices (in-plane spacing kept,
  * normal spacing = the smallest gap unless OutputSliceSpacing is set), trilinearly, so no anatomy
- * is warped. A folder with several series reads the one named by SeriesUID, else the one with
- * the most slices.
+ * is warped. A folder with several series reads the one named by SeriesUID; without it, the
+ * reader refuses the folder and lists its series (UID and file count).
  *
  * Errors (missing file, unknown format, corrupt or truncated data, more than one component,
  * empty series) are reported with vtkErrorMacro naming the file; no output is produced. A NIfTI

@@ -10,6 +10,8 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkStringArray.h"
+#include <vtksys/Directory.hxx>
+#include <vtksys/SystemTools.hxx>
 
 #include <cmath>
 #include <cstdio>
@@ -198,6 +200,44 @@ TEST(ImageReader, DicomSeriesJpeg2000InHounsfieldUnits)
   seg->GetBounds(b2);
   for (int i = 0; i < 6; ++i)
     EXPECT_NEAR(b1[i], b2[i], 0.05) << "bound " << i;
+}
+
+TEST(ImageReader, DicomFolderOfTwoSeriesIsRefusedWithTheSeriesListed)
+{
+  // The abdomen series and the tilted head series side by side in one folder.
+  AM_REQUIRE_SHARED(abdomen, "totalseg_abdomen_ct_labels/example_ct_dicom");
+  AM_REQUIRE_SHARED(head, "dcm_qa_ct_ge_head_tilt");
+  const std::string folder = amTest::TempPath("two_series");
+  vtksys::SystemTools::RemoveADirectory(folder);
+  vtksys::SystemTools::MakeDirectory(folder);
+  int n = 0;
+  for (const std::string& from : { abdomen, head })
+  {
+    vtksys::Directory dir;
+    dir.Load(from);
+    for (unsigned long i = 0; i < dir.GetNumberOfFiles(); ++i)
+    {
+      const std::string name = dir.GetFile(i);
+      if (name != "." && name != "..")
+        vtksys::SystemTools::CopyAFile(from + "/" + name, folder + "/" + std::to_string(n++) + ".dcm");
+    }
+  }
+  vtkNew<amImageReader> reader;
+  vtkNew<amTest::ErrorCatcher> errors;
+  reader->SetFileName(folder.c_str());
+  errors->Watch(reader);
+  reader->Update();
+  ASSERT_TRUE(errors->HasError());
+  EXPECT_TRUE(errors->ErrorContains("holds 2 series; set SeriesUID")) << errors->AllErrors();
+  EXPECT_TRUE(errors->ErrorContains(": 20 files, e.g.")) << errors->AllErrors();
+  EXPECT_TRUE(errors->ErrorContains(": 28 files, e.g.")) << errors->AllErrors();
+
+  // Named by one of its files, the abdomen series reads as it does alone.
+  vtkNew<amImageReader> named;
+  vtkNew<amTest::ErrorCatcher> quiet;
+  vtkImageData* img = Read(named, folder + "/0.dcm", quiet);
+  ASSERT_FALSE(quiet->HasError()) << quiet->AllErrors();
+  EXPECT_EQ(img->GetDimensions()[2], 20);
 }
 
 TEST(ImageReader, DicomTiltAndUnevenGapsAreRefusedPrecisely)
