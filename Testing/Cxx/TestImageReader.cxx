@@ -224,9 +224,7 @@ TEST(ImageReader, DicomFolderOfTwoSeriesIsRefusedWithTheSeriesListed)
   }
   vtkNew<amImageReader> reader;
   vtkNew<amTest::ErrorCatcher> errors;
-  reader->SetFileName(folder.c_str());
-  errors->Watch(reader);
-  reader->Update();
+  Read(reader, folder, errors);
   ASSERT_TRUE(errors->HasError());
   EXPECT_TRUE(errors->ErrorContains("holds 2 series; set SeriesUID")) << errors->AllErrors();
   EXPECT_TRUE(errors->ErrorContains(": 20 files, e.g.")) << errors->AllErrors();
