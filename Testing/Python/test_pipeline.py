@@ -1,5 +1,6 @@
 """Pipeline XML files through the ``anatomesh`` command: the thorax job runs and writes what it
 says; every kind of mistake exits non-zero with a message naming the file and the line."""
+import io
 import os
 import shutil
 import subprocess
@@ -109,6 +110,28 @@ class ThoraxJob(unittest.TestCase):
         code, stdout, _ = run("filters")
         self.assertEqual(code, 0)
         self.assertIn("ThoraxPhantomSource", stdout)
+
+
+class ProgressLog(unittest.TestCase):
+    def test_a_filter_run_per_frame_is_summed_up_not_repeated(self):
+        # In a log (not a terminal), a filter that runs once per frame (the heart and torso of a
+        # time series) shows its first pass every 25 %, then one line with its number of passes.
+        from anatomesh.cli import _Progress
+        stream = io.StringIO()
+        progress = _Progress(stream)
+        for name, fraction in [("phantom", 0.0), ("phantom", 0.3), ("phantom", 1.0)]:
+            progress(name, fraction)
+        for frame in range(50):
+            for name in ("heart", "torso"):
+                progress(name, 0.0)
+                progress(name, 1.0)
+        progress(None, 1.0)
+        lines = stream.getvalue().splitlines()
+        self.assertEqual([l.split()[:2] for l in lines],
+                         [["phantom", "0%"], ["phantom", "25%"], ["phantom", "100%"], ["heart", "0%"],
+                          ["heart", "100%"], ["torso", "0%"], ["torso", "100%"], ["heart", "50"],
+                          ["torso", "50"]])
+        self.assertIn("50 passes", lines[-1])
 
 
 class DeprecatedNames(unittest.TestCase):

@@ -15,27 +15,39 @@ import time
 
 
 class _Progress:
-    """One line per filter on a terminal (\\r-updated), every 25 % otherwise."""
+    """One line per filter on a terminal (\\r-updated), every 25 % otherwise. A filter that runs
+    again (once per frame of a time series) is not shown again in a log: its passes are counted
+    and summed up at the end, one line per filter."""
 
     def __init__(self, stream):
         self.stream, self.tty = stream, stream.isatty()
         self.current, self.shown, self.start = None, -1, {}
+        self.best, self.last, self.passes = {}, {}, {}
 
     def __call__(self, name, fraction):
         if name is None:
             if self.tty and self.current:
                 self.stream.write("\n")
+            for other, count in self.passes.items():
+                if count > 1:
+                    elapsed = time.time() - self.start[other]
+                    self.stream.write("  %-24s %d passes %6.1f s\n" % (other, count, elapsed))
+            self.passes.clear()
             self.stream.flush()
             return
         if name != self.current:
             if self.tty and self.current:
                 self.stream.write("\n")
             self.current, self.shown = name, -1
-            self.start[name] = time.time()
+        self.start.setdefault(name, time.time())
+        if name not in self.last or fraction < self.last[name]:
+            self.passes[name] = self.passes.get(name, 0) + 1  # a new pass: its fraction starts again
+        self.last[name] = fraction
         step = int(fraction * 100) if self.tty else int(fraction * 4) * 25
-        if step == self.shown:
+        if step == self.shown or (not self.tty and step <= self.best.get(name, -1)):
             return
         self.shown = step
+        self.best[name] = max(step, self.best.get(name, -1))
         elapsed = time.time() - self.start[name]
         text = "  %-24s %3d%%  %6.1f s" % (name, step, elapsed)
         if self.tty:
