@@ -23,23 +23,22 @@ bool HausdorffMeasure::Unchanged(const Surface& S, size_t t) const
   return true;
 }
 
-double HausdorffMeasure::ToBothRegions(const Surface& S, const amRemesh::Input& In, int sheet, const Vec3& x)
+double HausdorffMeasure::ToBothRegions(
+  const Surface& S, const std::vector<std::array<double, 3>>& pts, const amRemesh::Input& In, int sheet, const Vec3& x)
 {
+  if (this->RegionTriangles.empty())
+    for (const Triangle& t : S.T) // every region's boundary in one pass, the first time one is needed
+      if (t.Alive)
+        for (int label : t.Labels)
+          this->RegionTriangles[label].push_back({ t.V[0], t.V[1], t.V[2] });
   double farthest = 0;
   for (int label : In.SheetLabels[sheet])
   {
     auto it = this->Regions.find(label);
     if (it == this->Regions.end())
     {
-      std::vector<std::array<double, 3>> pts(S.P.size());
-      for (size_t i = 0; i < S.P.size(); ++i)
-        pts[i] = { S.P[i].x(), S.P[i].y(), S.P[i].z() };
-      std::vector<std::array<vtkIdType, 3>> tris;
-      for (const Triangle& t : S.T)
-        if (t.Alive && (t.Labels[0] == label || t.Labels[1] == label))
-          tris.push_back({ t.V[0], t.V[1], t.V[2] });
       it = this->Regions.emplace(label, amTriangleLocator()).first;
-      it->second.Build(pts, tris);
+      it->second.Build(pts, this->RegionTriangles[label]);
     }
     double cl[3];
     vtkIdType t;
@@ -53,7 +52,9 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
   std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf)
 {
   edgeOf.clear();
-  this->Regions.clear(); // the regions' boundaries of this state of the surface, built on demand
+  // The regions' boundaries of this state of the surface, built on demand.
+  this->Regions.clear();
+  this->RegionTriangles.clear();
   const int nSheets = static_cast<int>(In.Ref.size());
   const size_t nt = S.T.size();
   std::vector<char> same(nt, 0);
@@ -67,12 +68,12 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
   // measures change a few triangles; querying every sample cost a tenth of a second each).
   std::vector<NearCells> changedNear(static_cast<size_t>(nSheets));
   std::vector<std::vector<int>> ids(static_cast<size_t>(nSheets)), changedIds(static_cast<size_t>(nSheets));
+  std::vector<std::array<double, 3>> pts(S.P.size());
+  for (size_t i = 0; i < S.P.size(); ++i)
+    pts[i] = { S.P[i].x(), S.P[i].y(), S.P[i].z() };
   {
     std::vector<std::vector<std::array<vtkIdType, 3>>> tris(static_cast<size_t>(nSheets)),
       changedTris(static_cast<size_t>(nSheets));
-    std::vector<std::array<double, 3>> pts(S.P.size());
-    for (size_t i = 0; i < S.P.size(); ++i)
-      pts[i] = { S.P[i].x(), S.P[i].y(), S.P[i].z() };
     for (size_t t = 0; t < nt; ++t)
       if (S.T[t].Alive)
       {
@@ -147,7 +148,7 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
       // Farther than Eps from its interface: a sample within Eps of both its regions'
       // boundaries is where the interface narrowed to a junction curve (a strip between two
       // curves that a junction point's collapse closed): the regions still meet there.
-      const double relaxed = d2[i] > eps2 ? this->ToBothRegions(S, In, s, samples[i]) : d2[i];
+      const double relaxed = d2[i] > eps2 ? this->ToBothRegions(S, pts, In, s, samples[i]) : d2[i];
       worst = std::max(worst, std::sqrt(std::min(d2[i], relaxed)));
       if (relaxed > eps2 && at[i] >= 0)
       {

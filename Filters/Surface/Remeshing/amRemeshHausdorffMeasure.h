@@ -37,8 +37,10 @@ public:
 private:
   /// The farther of the distances (squared) from x to the boundaries of the two regions of
   /// 'sheet' (any triangle with the label on a side), inf where a region has none.
-  double ToBothRegions(const Surface& surface, const amRemesh::Input& input, int sheet, const Vec3& x);
-  std::map<int, amTriangleLocator> Regions; // per label: its region's boundary, this Measure
+  double ToBothRegions(const Surface& surface, const std::vector<std::array<double, 3>>& points,
+    const amRemesh::Input& input, int sheet, const Vec3& x);
+  std::map<int, amTriangleLocator> Regions; // per label: its region's boundary, this Measure ...
+  std::map<int, std::vector<std::array<vtkIdType, 3>>> RegionTriangles; // ... and its triangles
 
   // What the last Measure saw.
   struct MeasureCache
