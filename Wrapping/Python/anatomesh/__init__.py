@@ -14,7 +14,8 @@ pipelines::
 """
 # The wrapped modules import ParaView's (or VTK's) vtkmodules themselves.
 from .AnatomeshFiltersCleaning import amMorphologyCleaning
-from .AnatomeshFiltersSegmentation import amIntensityClassifier, amLabelOverlap, amSnakeSegmentation
+from .AnatomeshFiltersSegmentation import (
+    amIntensityClassifier, amLabelOverlap, amSnakeSegmentation, amTorsoSegmentation)
 from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential
 from .AnatomeshFiltersSources import amSyntheticAtlasSource, amThoraxPhantomSource
 from .AnatomeshFiltersSurface import (
@@ -52,4 +53,5 @@ __all__ = [
     "amTetrahedralize",
     "amThoraxPhantomSource",
     "amTorsoPotential",
+    "amTorsoSegmentation",
 ]

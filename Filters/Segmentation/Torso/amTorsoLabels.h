@@ -1,0 +1,92 @@
+/**
+ * @file    amTorsoLabels.h
+ * @brief   The steps of the torso segmentation (amTorsoSegmentation) as plain functions on voxel
+ *          arrays: the tissues from the intensity classes, and the myocardium around the blood pools.
+ *
+ * The label scheme is the thorax phantom's (amThoraxPhantomModel), so a segmentation scores
+ * against the phantom's truth label by label and the simulation finds its heart in region 5.
+ */
+#ifndef amTorsoLabels_h
+#define amTorsoLabels_h
+
+#include "amVoxelGrid.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace amTorso
+{
+enum Label : std::uint8_t
+{
+  Background = 0,
+  SoftTissue = 1,
+  Fat = 2,
+  RightLung = 3,
+  LeftLung = 4,
+  Myocardium = 5,
+  LeftVentricleBlood = 6,
+  RightVentricleBlood = 7,
+  Aorta = 8,
+  Spine = 9,
+  Ribs = 10,
+  NumberOfLabels = 11
+};
+
+/// The classes of amIntensityClassifier's CT defaults.
+enum Class : std::uint8_t
+{
+  AirClass = 0,
+  LungClass = 1,
+  FatClass = 2,
+  SoftClass = 3,
+  BloodClass = 4,
+  BoneClass = 5
+};
+
+struct TissueReport
+{
+  std::size_t ExteriorVoxels = 0;
+  std::size_t FatPartialVolume = 0; // fat voxels in sheets one voxel thick, handed to neighbours
+  int LungComponents = 0;           // air/lung components inside the body of at least the minimum size
+  bool LungsSplit = false;          // one air component held both lungs: split at the body's mid-plane
+  int BoneComponents = 0;
+};
+
+/// Tissue labels from the classes: the exterior air (the air class connected to the sides of the
+/// first two index axes) 0; the body SoftTissue; fat (opened: partial-volume sheets are left
+/// Pending); the two largest air/lung components inside the body the lungs, right and left by
+/// world x against the body's centre (x to the patient's left); bone components the spine (the
+/// largest) and ribs. Components below minimumVoxels are left Pending. worldX: x = row[0] i +
+/// row[1] j + row[2] k + row[3].
+TissueReport Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const double worldX[4],
+  std::size_t minimumVoxels, std::vector<std::uint8_t>& labels);
+
+struct WallParameters
+{
+  std::vector<int> PoolLabels{ LeftVentricleBlood, RightVentricleBlood };
+  double MaximumThickness = 40.0; // mm from the pools
+  double Thickness = 10.0;        // mm, where intensity cannot tell the wall
+  double Sigma = 2.0;             // mm
+  double MinimumContrast = 5.0;   // HU
+};
+
+struct WallReport
+{
+  std::size_t PoolVoxels = 0;
+  double WallLevel = 0.0;        // median smoothed intensity 3-6 mm from the pools
+  double SurroundingLevel = 0.0; // median beyond the maximum thickness
+  double Noise = 0.0;            // robust spread of the smoothed wall intensity
+  double Threshold = 0.0;
+  bool Contrast = false; // the wall was told from its surroundings by intensity
+  std::size_t Voxels = 0;
+};
+
+/// The myocardium (see amTorsoSegmentation): soft-tissue voxels connected to the pools, within
+/// the maximum thickness, whose intensity averaged over soft tissue alone (away from partial
+/// volumes) lies on the wall's side of the half-way level between the wall next to the pools and
+/// the tissue beyond the maximum thickness. Labels Myocardium in place.
+WallReport MyocardiumWall(const amVoxelGrid& g, const std::vector<float>& hu, const std::vector<std::uint8_t>& classes,
+  const WallParameters& p, std::vector<std::uint8_t>& labels);
+}
+
+#endif

@@ -1,0 +1,137 @@
+// Tissue labels of the torso from the intensity classes: exterior, body, fat, lungs, bone.
+#include "amTorsoLabels.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace
+{
+amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes)
+{
+  amVoxelMask air(classes.size());
+  for (std::size_t v = 0; v < classes.size(); ++v)
+    air[v] = classes[v] == amTorso::AirClass;
+  std::vector<int> id;
+  std::vector<std::size_t> sizes;
+  const int n = amVoxel::Components(g, air, id, sizes);
+  // Open to the sides of the first two axes; not the ends of the third, where a trachea may leave
+  // the field of view.
+  std::vector<char> open(n, 0);
+  for (int k = 0; k < g.N[2]; ++k)
+    for (int j = 0; j < g.N[1]; ++j)
+      for (int i = 0; i < g.N[0]; ++i)
+        if (i == 0 || j == 0 || i == g.N[0] - 1 || j == g.N[1] - 1)
+        {
+          const int c = id[g.Index(i, j, k)];
+          if (c >= 0)
+            open[c] = 1;
+        }
+  amVoxelMask exterior(classes.size(), 0);
+  for (std::size_t v = 0; v < classes.size(); ++v)
+    exterior[v] = id[v] >= 0 && open[id[v]];
+  return exterior;
+}
+
+double WorldX(const amVoxelGrid& g, std::size_t v, const double row[4])
+{
+  int c[3];
+  g.Ijk(v, c);
+  return row[0] * c[0] + row[1] * c[1] + row[2] * c[2] + row[3];
+}
+
+// Components of the mask ordered by decreasing size (ties: first voxel first).
+std::vector<int> BySize(const std::vector<std::size_t>& sizes)
+{
+  std::vector<int> order(sizes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return sizes[a] > sizes[b]; });
+  return order;
+}
+}
+
+amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes,
+  const double worldX[4], std::size_t minimumVoxels, std::vector<std::uint8_t>& labels)
+{
+  TissueReport report;
+  const std::size_t n = classes.size();
+  const amVoxelMask exterior = Exterior(g, classes);
+  labels.assign(n, SoftTissue);
+  double bodyX = 0.0;
+  for (std::size_t v = 0; v < n; ++v)
+    if (exterior[v])
+    {
+      labels[v] = Background;
+      ++report.ExteriorVoxels;
+    }
+    else
+      bodyX += WorldX(g, v, worldX);
+  if (report.ExteriorVoxels < n)
+    bodyX /= static_cast<double>(n - report.ExteriorVoxels);
+
+  // Fat, without the one-voxel sheets that partial volume leaves between lung and soft tissue.
+  amVoxelMask mask(n);
+  for (std::size_t v = 0; v < n; ++v)
+    mask[v] = classes[v] == FatClass && !exterior[v];
+  const amVoxelMask fat = amVoxel::Open6(g, mask);
+  for (std::size_t v = 0; v < n; ++v)
+    if (mask[v])
+    {
+      labels[v] = fat[v] ? Fat : amVoxel::Pending;
+      report.FatPartialVolume += !fat[v];
+    }
+
+  // Lungs: the air inside the body.
+  for (std::size_t v = 0; v < n; ++v)
+    mask[v] = (classes[v] == LungClass || classes[v] == AirClass) && !exterior[v];
+  std::vector<int> id;
+  std::vector<std::size_t> sizes;
+  amVoxel::Components(g, mask, id, sizes);
+  const std::vector<int> order = BySize(sizes);
+  for (const int c : order)
+    report.LungComponents += sizes[c] >= minimumVoxels;
+  const int first = order.empty() || sizes[order[0]] < minimumVoxels ? -1 : order[0];
+  // A second lung is a component of at least a tenth of the first (else the lungs are joined).
+  const int second =
+    order.size() < 2 || sizes[order[1]] < std::max(minimumVoxels, sizes[order[0]] / 10) ? -1 : order[1];
+  std::vector<double> centre(sizes.size(), 0.0);
+  for (std::size_t v = 0; v < n; ++v)
+    if (id[v] >= 0)
+      centre[id[v]] += WorldX(g, v, worldX);
+  for (std::size_t c = 0; c < sizes.size(); ++c)
+    centre[c] /= static_cast<double>(sizes[c]);
+  report.LungsSplit = first >= 0 && second < 0;
+  const bool firstIsLeft = second >= 0 && centre[first] > centre[second];
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    const int c = id[v];
+    if (c < 0)
+      continue;
+    if (c == first && second < 0)
+      labels[v] = WorldX(g, v, worldX) > bodyX ? LeftLung : RightLung;
+    else if (c == first)
+      labels[v] = firstIsLeft ? LeftLung : RightLung;
+    else if (c == second)
+      labels[v] = firstIsLeft ? RightLung : LeftLung;
+    else
+      labels[v] = amVoxel::Pending;
+  }
+
+  // Bone: the largest piece is the spine, the others ribs.
+  for (std::size_t v = 0; v < n; ++v)
+    mask[v] = classes[v] == BoneClass && !exterior[v];
+  amVoxel::Components(g, mask, id, sizes);
+  const std::vector<int> bones = BySize(sizes);
+  for (const int c : bones)
+    report.BoneComponents += sizes[c] >= minimumVoxels;
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    const int c = id[v];
+    if (c < 0)
+      continue;
+    if (sizes[c] < minimumVoxels)
+      labels[v] = amVoxel::Pending;
+    else
+      labels[v] = c == bones[0] ? Spine : Ribs;
+  }
+  return report;
+}

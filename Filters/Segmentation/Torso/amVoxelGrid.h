@@ -1,0 +1,106 @@
+/**
+ * @file    amVoxelGrid.h
+ * @brief   Plain operations on voxel masks and label maps that the torso segmentation chains:
+ *          connected components, hole filling, erosion and opening, Gaussian smoothing, the
+ *          Euclidean distance transform, and the hand-over of dropped voxels to their neighbours.
+ *
+ * Voxels are stored x fastest, as VTK stores image scalars: index (k * N[1] + j) * N[0] + i.
+ * Distances and Gaussian widths are in millimetres (per-axis spacing).
+ */
+#ifndef amVoxelGrid_h
+#define amVoxelGrid_h
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+struct amVoxelGrid
+{
+  int N[3] = { 0, 0, 0 };
+  double Spacing[3] = { 1.0, 1.0, 1.0 };
+
+  std::size_t Size() const { return static_cast<std::size_t>(this->N[0]) * this->N[1] * this->N[2]; }
+  std::size_t Index(int i, int j, int k) const
+  {
+    return (static_cast<std::size_t>(k) * this->N[1] + j) * this->N[0] + i;
+  }
+  void Ijk(std::size_t id, int ijk[3]) const
+  {
+    ijk[0] = static_cast<int>(id % this->N[0]);
+    ijk[1] = static_cast<int>((id / this->N[0]) % this->N[1]);
+    ijk[2] = static_cast<int>(id / (static_cast<std::size_t>(this->N[0]) * this->N[1]));
+  }
+  double VoxelVolume() const { return this->Spacing[0] * this->Spacing[1] * this->Spacing[2]; }
+  /// Calls f(neighbour id) for the 6 face neighbours inside the grid.
+  template<typename F>
+  void FaceNeighbours(std::size_t id, F&& f) const
+  {
+    int c[3];
+    this->Ijk(id, c);
+    const std::size_t step[3] = { 1, static_cast<std::size_t>(this->N[0]),
+      static_cast<std::size_t>(this->N[0]) * this->N[1] };
+    for (int a = 0; a < 3; ++a)
+    {
+      if (c[a] > 0)
+        f(id - step[a]);
+      if (c[a] + 1 < this->N[a])
+        f(id + step[a]);
+    }
+  }
+  /// Calls f(neighbour id) for the up to 26 neighbours inside the grid.
+  template<typename F>
+  void AllNeighbours(std::size_t id, F&& f) const
+  {
+    int c[3];
+    this->Ijk(id, c);
+    for (int dk = -1; dk <= 1; ++dk)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+        {
+          const int i = c[0] + di, j = c[1] + dj, k = c[2] + dk;
+          if ((di || dj || dk) && i >= 0 && j >= 0 && k >= 0 && i < this->N[0] && j < this->N[1] && k < this->N[2])
+            f(this->Index(i, j, k));
+        }
+  }
+};
+
+using amVoxelMask = std::vector<std::uint8_t>;
+
+namespace amVoxel
+{
+/// 6-connected components of the mask: id[v] = component (0..n-1, in the order of their first
+/// voxel), -1 outside the mask; sizes[c] = voxels in component c. Returns n.
+int Components(const amVoxelGrid& g, const amVoxelMask& mask, std::vector<int>& id, std::vector<std::size_t>& sizes);
+
+/// Sets every voxel outside the mask that no 6-connected path outside the mask links to the
+/// border of the grid (a cavity), and returns how many it set.
+std::size_t FillHoles(const amVoxelGrid& g, amVoxelMask& mask);
+
+/// Voxels of the mask whose 26 neighbours are all in it (outside the grid counts as in it).
+amVoxelMask Erode26(const amVoxelGrid& g, const amVoxelMask& mask);
+
+/// Opening by the 6-neighbour cross: removes sheets and threads one voxel thick.
+amVoxelMask Open6(const amVoxelGrid& g, const amVoxelMask& mask);
+
+/// Separable Gaussian of standard deviation sigma (mm) in place, truncated at 3 sigma; the grid's
+/// border is extended by its edge values.
+void Gaussian(const amVoxelGrid& g, std::vector<float>& field, double sigma);
+
+/// Exact Euclidean distance (mm) of every voxel centre to the nearest voxel of the mask (0 in it;
+/// a large value everywhere when the mask is empty). Felzenszwalb-Huttenlocher, per axis.
+std::vector<float> Distance(const amVoxelGrid& g, const amVoxelMask& mask);
+
+/// Hands every voxel whose label is Pending to the most frequent label among its 26 neighbours
+/// that are not Pending, front by front (each front decided from the previous state, so the
+/// result does not depend on the visiting order). Returns the voxels handed over.
+constexpr std::uint8_t Pending = 255;
+std::size_t HandOver(const amVoxelGrid& g, std::vector<std::uint8_t>& labels);
+
+/// Marks Pending every component (6-connected) of a non-zero label smaller than minimumVoxels,
+/// and every component but the largest of the labels flagged in single[label]; then hands them
+/// over. Returns the voxels that changed label.
+std::size_t DropSmallComponents(
+  const amVoxelGrid& g, std::vector<std::uint8_t>& labels, std::size_t minimumVoxels, const std::vector<bool>& single);
+}
+
+#endif

@@ -1,0 +1,289 @@
+#include "amTorsoSegmentation.h"
+
+#include "Torso/amTorsoLabels.h"
+#include "amInputCheck.h"
+#include "amIntensityClassifier.h"
+#include "amProvenance.h"
+#include "amThoraxPhantomModel.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMatrix3x3.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(amTorsoSegmentation);
+
+amTorsoSegmentation::amTorsoSegmentation()
+  : IntensityScale(1.0)
+  , IntensityShift(0.0)
+  , MinimumComponentVolume(50.0)
+  , BloodPoolLabels{ amTorso::LeftVentricleBlood, amTorso::RightVentricleBlood }
+  , MaximumWallThickness(40.0)
+  , WallThickness(10.0)
+  , WallSmoothingSigma(2.0)
+  , MinimumWallContrast(5.0)
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+amTorsoSegmentation::~amTorsoSegmentation() = default;
+
+void amTorsoSegmentation::SetBloodPoolLabels(int lv, int rv)
+{
+  this->BloodPoolLabels = { lv, rv };
+  this->Modified();
+}
+
+void amTorsoSegmentation::AddBloodPoolLabel(int label)
+{
+  this->BloodPoolLabels.push_back(label);
+  this->Modified();
+}
+
+void amTorsoSegmentation::RemoveAllBloodPoolLabels()
+{
+  if (!this->BloodPoolLabels.empty())
+  {
+    this->BloodPoolLabels.clear();
+    this->Modified();
+  }
+}
+
+int amTorsoSegmentation::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  if (port == 1)
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int amTorsoSegmentation::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkDataObject::SetPointDataActiveScalarInfo(outputVector->GetInformationObject(0), VTK_UNSIGNED_CHAR, 1);
+  return 1;
+}
+
+namespace
+{
+// The organ map of input 1 as labels 0..254, or an error message.
+bool OrganLabels(vtkImageData* ct, vtkImageData* organs, std::vector<std::uint8_t>& out, std::string& why)
+{
+  if (!organs)
+    return true;
+  int a[3], b[3];
+  ct->GetDimensions(a);
+  organs->GetDimensions(b);
+  if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2])
+  {
+    std::ostringstream s;
+    s << "The organ label map (input 1) is " << b[0] << "x" << b[1] << "x" << b[2] << " voxels, the CT " << a[0] << "x"
+      << a[1] << "x" << a[2] << ": they must share one grid.";
+    why = s.str();
+    return false;
+  }
+  vtkDataArray* scalars = amInputCheck::ScalarImage(organs, why);
+  if (!scalars)
+  {
+    why = "The organ label map (input 1): " + why;
+    return false;
+  }
+  out.resize(static_cast<size_t>(scalars->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (!(v >= 0 && v < 255) || v != std::floor(v))
+    {
+      std::ostringstream s;
+      s << "The organ label map (input 1) has value " << v << " at voxel " << i
+        << ": a label map holds whole numbers 0..254.";
+      why = s.str();
+      return false;
+    }
+    out[i] = static_cast<std::uint8_t>(v);
+  }
+  return true;
+}
+}
+
+int amTorsoSegmentation::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkImageData* organInput = vtkImageData::GetData(inputVector[1], 0);
+  vtkImageData* output = vtkImageData::GetData(outputVector, 0);
+  std::string why;
+  vtkDataArray* scalars = amInputCheck::ScalarImage(input, why);
+  if (!scalars)
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
+  std::vector<std::uint8_t> organs;
+  if (!OrganLabels(input, organInput, organs, why))
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  vtkNew<vtkFloatArray> hu;
+  hu->SetName("HU");
+  hu->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (!std::isfinite(v))
+    {
+      vtkErrorMacro("The CT has a non-finite value (" << v << ") at voxel " << i << ": cannot segment it.");
+      return 0;
+    }
+    hu->SetValue(i, static_cast<float>(v * this->IntensityScale + this->IntensityShift));
+  }
+  vtkNew<vtkImageData> huImage;
+  huImage->CopyStructure(input);
+  huImage->GetPointData()->SetScalars(hu);
+  vtkNew<amIntensityClassifier> classifier;
+  classifier->SetInputData(huImage);
+  classifier->Update();
+  vtkDataArray* classArray = classifier->GetOutput()->GetPointData()->GetScalars();
+  if (!classArray)
+  {
+    vtkErrorMacro("Classifying the CT by intensity failed.");
+    return 0;
+  }
+  this->UpdateProgress(0.2);
+
+  amVoxelGrid grid;
+  input->GetDimensions(grid.N);
+  input->GetSpacing(grid.Spacing);
+  for (int a = 0; a < 3; ++a)
+    grid.Spacing[a] = std::fabs(grid.Spacing[a]);
+  const std::vector<std::uint8_t> classes(static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)),
+    static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)) + n);
+  const double* origin = input->GetOrigin();
+  const double* spacing = input->GetSpacing();
+  vtkMatrix3x3* direction = input->GetDirectionMatrix();
+  const double worldX[4] = { direction->GetElement(0, 0) * spacing[0], direction->GetElement(0, 1) * spacing[1],
+    direction->GetElement(0, 2) * spacing[2], origin[0] };
+  const std::size_t minimumVoxels =
+    static_cast<std::size_t>(std::ceil(this->MinimumComponentVolume / grid.VoxelVolume()));
+
+  std::vector<std::uint8_t> labels;
+  const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, minimumVoxels, labels);
+  if (tissues.LungComponents == 0)
+    vtkWarningMacro("No lungs: no air inside the body of at least " << this->MinimumComponentVolume << " mm^3.");
+  else if (tissues.LungsSplit)
+    vtkWarningMacro("The lungs are one component (joined at the trachea or bronchi): they are split at the body's "
+                    "mid-plane into right and left lung.");
+  this->UpdateProgress(0.4);
+
+  std::vector<bool> organ(256, false);
+  for (std::size_t v = 0; v < organs.size(); ++v)
+    if (organs[v])
+    {
+      labels[v] = organs[v];
+      organ[organs[v]] = true;
+    }
+
+  amTorso::WallParameters wall;
+  wall.PoolLabels = this->BloodPoolLabels;
+  wall.MaximumThickness = this->MaximumWallThickness;
+  wall.Thickness = this->WallThickness;
+  wall.Sigma = this->WallSmoothingSigma;
+  wall.MinimumContrast = this->MinimumWallContrast;
+  const std::vector<float> values(hu->GetPointer(0), hu->GetPointer(0) + n);
+  const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, values, classes, wall, labels);
+  if (!heart.PoolVoxels)
+    vtkWarningMacro("No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");
+  else if (!heart.Contrast)
+    vtkWarningMacro("The myocardium cannot be told from the tissue around it by intensity (wall "
+      << heart.WallLevel << " HU, surroundings " << heart.SurroundingLevel << " HU, noise " << heart.Noise
+      << " HU): it is the soft tissue within " << this->WallThickness << " mm of the blood pools.");
+  this->UpdateProgress(0.7);
+
+  amVoxel::HandOver(grid, labels);
+  std::vector<bool> single(256, false);
+  for (int l = 1; l < 255; ++l)
+    single[l] = l != amTorso::SoftTissue && l != amTorso::Fat && l != amTorso::Ribs;
+  amVoxel::DropSmallComponents(grid, labels, minimumVoxels, single);
+  this->UpdateProgress(0.9);
+
+  std::vector<double> volume(256, 0.0);
+  for (const auto l : labels)
+    volume[l] += grid.VoxelVolume();
+  if (heart.PoolVoxels && volume[amTorso::Myocardium] == 0.0)
+    vtkWarningMacro("The myocardium is empty: nothing around the blood pools is soft tissue.");
+  for (int l = 1; l < 255; ++l)
+    if (organ[l] && volume[l] == 0.0)
+      vtkWarningMacro("Label " << l << " of the organ map is lost (smaller than MinimumComponentVolume).");
+
+  output->CopyStructure(input);
+  vtkNew<vtkUnsignedCharArray> out;
+  out->SetName("Labels");
+  out->SetNumberOfTuples(n);
+  std::copy(labels.begin(), labels.end(), out->GetPointer(0));
+  output->GetPointData()->SetScalars(out);
+
+  int top = amTorso::NumberOfLabels - 1;
+  for (int l = 0; l < 255; ++l)
+    if (volume[l] > 0)
+      top = std::max(top, l);
+  vtkNew<vtkStringArray> names;
+  names->SetName("LabelNames");
+  for (int l = 0; l <= top; ++l)
+    names->InsertNextValue(l < amTorso::NumberOfLabels ? amThoraxPhantomModel::LabelName(l) : "Organ");
+  output->GetFieldData()->AddArray(names);
+  vtkNew<vtkDoubleArray> volumes;
+  volumes->SetName("LabelVolumes");
+  volumes->SetNumberOfComponents(2);
+  volumes->SetComponentName(0, "Label");
+  volumes->SetComponentName(1, "Volume_mm3");
+  for (int l = 1; l < 255; ++l)
+    if (volume[l] > 0)
+    {
+      const double row[2] = { static_cast<double>(l), volume[l] };
+      volumes->InsertNextTuple(row);
+    }
+  output->GetFieldData()->AddArray(volumes);
+  vtkNew<vtkDoubleArray> levels;
+  levels->SetName("MyocardiumLevels");
+  for (double v : { heart.WallLevel, heart.SurroundingLevel, heart.Threshold, heart.Noise, heart.Contrast ? 1.0 : 0.0 })
+    levels->InsertNextValue(v);
+  output->GetFieldData()->AddArray(levels);
+
+  std::ostringstream p;
+  p << "IntensityScale=" << this->IntensityScale << " IntensityShift=" << this->IntensityShift
+    << " MinimumComponentVolume=" << this->MinimumComponentVolume << " BloodPoolLabels=";
+  for (const int l : this->BloodPoolLabels)
+    p << l << ",";
+  p << " MaximumWallThickness=" << this->MaximumWallThickness << " WallThickness=" << this->WallThickness
+    << " WallSmoothingSigma=" << this->WallSmoothingSigma << " MinimumWallContrast=" << this->MinimumWallContrast;
+  amProvenance::Record(output, input, "TorsoSegmentation", p.str());
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IntensityScale: " << this->IntensityScale << "\n";
+  os << indent << "IntensityShift: " << this->IntensityShift << "\n";
+  os << indent << "MinimumComponentVolume: " << this->MinimumComponentVolume << "\n";
+  os << indent << "BloodPoolLabels:";
+  for (const int l : this->BloodPoolLabels)
+    os << " " << l;
+  os << "\n" << indent << "MaximumWallThickness: " << this->MaximumWallThickness << "\n";
+  os << indent << "WallThickness: " << this->WallThickness << "\n";
+  os << indent << "WallSmoothingSigma: " << this->WallSmoothingSigma << "\n";
+  os << indent << "MinimumWallContrast: " << this->MinimumWallContrast << "\n";
+}

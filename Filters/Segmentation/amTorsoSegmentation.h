@@ -1,0 +1,124 @@
+/**
+ * @class   amTorsoSegmentation
+ * @brief   Segments the whole simulation domain of a chest CT into one label map: body, fat,
+ *          lungs, bone, myocardium, and the organs segmented from seeds.
+ *
+ * Input 0 is the CT (Hounsfield units, or any scale that IntensityScale and IntensityShift map to
+ * them: HU = value x IntensityScale + IntensityShift). Input 1 (optional) is a label map on the
+ * same grid of organs segmented from seeds, e.g. amSnakeSegmentation's blood pools and aorta; its
+ * labels are kept as they are and take precedence over every tissue below.
+ *
+ * The output uses the thorax phantom's label scheme (names in field data "LabelNames"):
+ * 0 outside the body, 1 soft tissue, 2 fat, 3 right lung, 4 left lung, 5 myocardium, 6 LV blood,
+ * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone). Steps:
+ * 1. voxels are classed by amIntensityClassifier's CT ranges (air, lung, fat, soft tissue,
+ *    contrast blood, bone); the air connected to the sides of the first two index axes is the
+ *    exterior, everything else is the body (soft tissue unless a step below says otherwise);
+ * 2. fat is the fat class opened by the 6-neighbour cross: the one-voxel sheets that partial
+ *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
+ * 3. the lungs are the two largest components of air inside the body, right and left by their
+ *    centres' world x (x towards the patient's left); where one component holds both (joined at
+ *    the trachea), it is split at the body's mid-plane and a warning says so;
+ * 4. the largest bone component is the spine, every other one is rib (or other bone);
+ * 5. the organs of input 1 are written over these;
+ * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
+ *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a
+ *    Gaussian of WallSmoothingSigma mm over soft tissue alone (its voxels whose 26 neighbours are
+ *    all soft tissue, so partial volume with blood or lung does not bias it). The wall's level is
+ *    the median of that average 3-6 mm from the blood pools (BloodPoolLabels of input 1); the
+ *    surroundings' level the median 0-10 mm beyond MaximumWallThickness. The myocardium is the
+ *    soft tissue connected to the pools, within MaximumWallThickness of them, whose average lies
+ *    on the wall's side of the half-way level, with its cavities filled; lung, fat, bone and other
+ *    organs stop it. Where the two levels differ by less than MinimumWallContrast (or three times
+ *    the average's noise), intensity cannot tell the wall: a warning says so and the wall is the
+ *    soft tissue within WallThickness of the pools. Field data "MyocardiumLevels": wall level,
+ *    surroundings' level, threshold, noise (HU), and 1 where intensity told the wall, else 0;
+ * 7. every voxel left undecided goes to the most frequent label among its neighbours; components
+ *    smaller than MinimumComponentVolume are handed to their neighbours the same way, and every
+ *    organ but soft tissue, fat and ribs keeps only its largest component.
+ * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split, no
+ * blood pools (no myocardium), an empty myocardium, a label of input 1 lost.
+ * Errors: an empty or non-scalar CT, a non-finite voxel, input 1 on another grid or not a label map.
+ *
+ * @sa amIntensityClassifier amSnakeSegmentation amMorphologyCleaning amLabelOverlap
+ */
+#ifndef amTorsoSegmentation_h
+#define amTorsoSegmentation_h
+
+#include "AnatomeshFiltersSegmentationModule.h" // export macro
+#include "vtkImageAlgorithm.h"
+
+#include <vector>
+
+class ANATOMESHFILTERSSEGMENTATION_EXPORT amTorsoSegmentation : public vtkImageAlgorithm
+{
+public:
+  static amTorsoSegmentation* New();
+  vtkTypeMacro(amTorsoSegmentation, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The organs segmented from seeds (input port 1, optional).
+  void SetOrganConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetOrganData(vtkDataObject* data) { this->SetInputData(1, data); }
+
+  ///@{
+  /// HU = value x IntensityScale + IntensityShift (defaults 1 and 0: the input is in HU).
+  vtkSetMacro(IntensityScale, double);
+  vtkGetMacro(IntensityScale, double);
+  vtkSetMacro(IntensityShift, double);
+  vtkGetMacro(IntensityShift, double);
+  ///@}
+
+  ///@{
+  /// Components smaller than this are handed to their neighbours, mm^3 (default 50).
+  vtkSetClampMacro(MinimumComponentVolume, double, 0.0, 1e12);
+  vtkGetMacro(MinimumComponentVolume, double);
+  ///@}
+
+  /// The labels of input 1 that the myocardium wraps (default 6 7: the LV and RV blood pools).
+  void SetBloodPoolLabels(int lv, int rv);
+  void AddBloodPoolLabel(int label);
+  void RemoveAllBloodPoolLabels();
+  int GetNumberOfBloodPoolLabels() { return static_cast<int>(this->BloodPoolLabels.size()); }
+  int GetBloodPoolLabel(int i) { return this->BloodPoolLabels.at(i); }
+
+  ///@{
+  /// The farthest the myocardium reaches from the blood pools, mm (default 40); the wall's
+  /// thickness where intensity cannot tell it, mm (default 10).
+  vtkSetClampMacro(MaximumWallThickness, double, 1.0, 200.0);
+  vtkGetMacro(MaximumWallThickness, double);
+  vtkSetClampMacro(WallThickness, double, 0.5, 200.0);
+  vtkGetMacro(WallThickness, double);
+  ///@}
+
+  ///@{
+  /// The Gaussian that averages the wall's intensity, mm (default 2), and the least difference
+  /// between the wall's and the surroundings' levels that tells them apart, HU (default 5).
+  vtkSetClampMacro(WallSmoothingSigma, double, 0.1, 20.0);
+  vtkGetMacro(WallSmoothingSigma, double);
+  vtkSetClampMacro(MinimumWallContrast, double, 0.0, 1e6);
+  vtkGetMacro(MinimumWallContrast, double);
+  ///@}
+
+protected:
+  amTorsoSegmentation();
+  ~amTorsoSegmentation() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double IntensityScale;
+  double IntensityShift;
+  double MinimumComponentVolume;
+  std::vector<int> BloodPoolLabels;
+  double MaximumWallThickness;
+  double WallThickness;
+  double WallSmoothingSigma;
+  double MinimumWallContrast;
+
+private:
+  amTorsoSegmentation(const amTorsoSegmentation&) = delete;
+  void operator=(const amTorsoSegmentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,282 @@
+// The whole simulation domain from a CT: every organ of the noisy phantom against its truth, a
+// synthetic heart whose wall has no contrast, the voxel operations, and bad input.
+#include "Torso/amVoxelGrid.h"
+#include "amSnakeSegmentation.h"
+#include "amTestUtilities.h"
+#include "amThoraxPhantomSource.h"
+#include "amTorsoSegmentation.h"
+
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <random>
+
+namespace
+{
+double Dice(vtkImageData* seg, vtkImageData* truth, int label)
+{
+  vtkDataArray* a = seg->GetPointData()->GetScalars();
+  vtkDataArray* b = truth->GetPointData()->GetScalars();
+  long both = 0, na = 0, nb = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    const bool p = a->GetComponent(i, 0) == label, q = b->GetComponent(i, 0) == label;
+    both += p && q;
+    na += p;
+    nb += q;
+  }
+  return na + nb ? 2.0 * both / (na + nb) : 1.0;
+}
+
+// A 2 mm box torso of soft tissue with a spherical heart: blood pool (label 6, radius 15 mm)
+// inside a wall (radius 30 mm) of wallHU, two lungs, the air outside; f gives each voxel's
+// label and value from its position.
+struct Torso
+{
+  vtkNew<vtkImageData> CT, Organs, Truth;
+  Torso(double wallHU, double noise)
+  {
+    const int n = 60;
+    for (vtkImageData* image : { CT.Get(), Organs.Get(), Truth.Get() })
+    {
+      image->SetDimensions(n, n, n);
+      image->SetSpacing(2, 2, 2);
+      image->SetOrigin(-59, -59, -59);
+    }
+    vtkNew<vtkFloatArray> ct;
+    vtkNew<vtkUnsignedCharArray> organs, truth;
+    ct->SetNumberOfTuples(n * n * n);
+    organs->SetNumberOfTuples(n * n * n);
+    truth->SetNumberOfTuples(n * n * n);
+    organs->SetName("Labels");
+    truth->SetName("Labels");
+    std::mt19937 random(7);
+    std::normal_distribution<double> gauss(0.0, noise);
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+          const double x = -59 + 2 * i, y = -59 + 2 * j, z = -59 + 2 * k;
+          const double r = std::sqrt(x * x + y * y + z * z);
+          int label = 1;
+          double hu = 40;
+          if (std::fabs(x) > 52 || std::fabs(y) > 52 || std::fabs(z) > 52)
+            label = 0, hu = -1000;
+          else if (r < 15)
+            label = 6, hu = 300;
+          else if (r < 30)
+            label = 5, hu = wallHU;
+          else if (std::fabs(x) > 36 && std::fabs(x) < 48 && std::fabs(y) < 30 && std::fabs(z) < 30)
+            label = x < 0 ? 3 : 4, hu = -850;
+          const vtkIdType id = (static_cast<vtkIdType>(k) * n + j) * n + i;
+          ct->SetValue(id, static_cast<float>(hu + (label ? gauss(random) : 0.0)));
+          organs->SetValue(id, label == 6 ? 6 : 0);
+          truth->SetValue(id, static_cast<unsigned char>(label));
+        }
+    CT->GetPointData()->SetScalars(ct);
+    Organs->GetPointData()->SetScalars(organs);
+    Truth->GetPointData()->SetScalars(truth);
+  }
+};
+}
+
+TEST(TorsoSegmentation, EveryOrganOfTheNoisyPhantomFromThreeSeededOrgans)
+{
+  // 2 mm, the default noise (20 HU): the snake gives the blood pools and the aorta from four
+  // seeds, the torso segmentation everything else.
+  vtkNew<amThoraxPhantomSource> phantom;
+  phantom->SetSpacing(2, 2, 2);
+  phantom->SetSeed(1);
+  vtkNew<amSnakeSegmentation> snake;
+  snake->SetInputConnection(phantom->GetOutputPort(0));
+  snake->AddSeed(29.4, -24.1, -28.0, 6);
+  snake->AddSeed(-15.0, -25.0, -28.0, 7);
+  snake->AddSeed(5.0, 40.0, 0.0, 8);
+  snake->AddSeed(5.0, -20.0, 30.0, 8);
+  vtkNew<amTorsoSegmentation> torso;
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(torso);
+  torso->SetInputConnection(phantom->GetOutputPort(0));
+  torso->SetOrganConnection(snake->GetOutputPort());
+  torso->Update();
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  EXPECT_TRUE(errors->Warnings.empty()) << errors->Warnings[0];
+  auto* seg = vtkImageData::SafeDownCast(torso->GetOutputDataObject(0));
+  auto* truth = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1));
+  for (int label = 1; label <= 10; ++label)
+    EXPECT_GE(Dice(seg, truth, label), label == 10 ? 0.95 : 0.96) << "label " << label;
+  vtkDataArray* levels = seg->GetFieldData()->GetArray("MyocardiumLevels");
+  ASSERT_NE(levels, nullptr);
+  EXPECT_NEAR(levels->GetComponent(0, 0), 50.0, 1.0); // the wall's level, HU
+  EXPECT_NEAR(levels->GetComponent(1, 0), 40.0, 1.0); // the surroundings'
+  EXPECT_EQ(levels->GetComponent(4, 0), 1.0);
+  EXPECT_NE(seg->GetFieldData()->GetAbstractArray("LabelNames"), nullptr);
+}
+
+TEST(TorsoSegmentation, AWallWithContrastIsFoundAndOneWithoutIsTheNominalThickness)
+{
+  for (const double wall : { 55.0, 40.0 })
+  {
+    Torso t(wall, 20.0);
+    vtkNew<amTorsoSegmentation> torso;
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(torso);
+    torso->SetInputData(t.CT);
+    torso->SetOrganData(t.Organs);
+    torso->SetBloodPoolLabels(6, 7);
+    torso->Update();
+    ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+    auto* seg = vtkImageData::SafeDownCast(torso->GetOutputDataObject(0));
+    EXPECT_GE(Dice(seg, t.Truth, 3), 0.95);
+    EXPECT_GE(Dice(seg, t.Truth, 4), 0.95);
+    if (wall > 40)
+    {
+      // 15 HU of contrast: the wall is found at its 30 mm radius.
+      EXPECT_GE(Dice(seg, t.Truth, 5), 0.95);
+      EXPECT_TRUE(errors->Warnings.empty());
+    }
+    else
+    {
+      // No contrast: a warning, and the wall is 10 mm thick (radius 25 mm, 4/7 of the volume).
+      ASSERT_EQ(errors->Warnings.size(), 1u);
+      EXPECT_NE(errors->Warnings[0].find("cannot be told from the tissue around it"), std::string::npos);
+      vtkDataArray* labels = seg->GetPointData()->GetScalars();
+      double volume = 0;
+      for (vtkIdType i = 0; i < labels->GetNumberOfTuples(); ++i)
+        volume += labels->GetComponent(i, 0) == 5 ? 8.0 : 0.0;
+      const double expected = 4.0 / 3.0 * M_PI * (25.0 * 25.0 * 25.0 - 15.0 * 15.0 * 15.0);
+      EXPECT_NEAR(volume / expected, 1.0, 0.08);
+    }
+  }
+}
+
+TEST(TorsoSegmentation, WarningsNameTheMissingOrgan)
+{
+  Torso t(55.0, 20.0);
+  vtkNew<amTorsoSegmentation> torso;
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(torso);
+  torso->SetInputData(t.CT);
+  torso->Update(); // no organ map: no blood pool
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  ASSERT_EQ(errors->Warnings.size(), 1u);
+  EXPECT_NE(errors->Warnings[0].find("no myocardium"), std::string::npos) << errors->Warnings[0];
+}
+
+TEST(TorsoSegmentation, BadInputGivesClearErrors)
+{
+  Torso t(55.0, 0.0);
+  vtkNew<amTorsoSegmentation> torso;
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(torso);
+  torso->SetInputData(t.CT);
+  vtkNew<vtkImageData> small;
+  small->SetDimensions(4, 4, 4);
+  small->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  torso->SetOrganData(small);
+  torso->Update();
+  EXPECT_TRUE(errors->ErrorContains("must share one grid")) << errors->AllErrors();
+
+  errors->Errors.clear();
+  vtkNew<vtkImageData> floats;
+  floats->DeepCopy(t.Organs);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfTuples(floats->GetNumberOfPoints());
+  values->FillValue(0.5f);
+  floats->GetPointData()->SetScalars(values);
+  torso->SetOrganData(floats);
+  torso->Update();
+  EXPECT_TRUE(errors->ErrorContains("whole numbers")) << errors->AllErrors();
+
+  errors->Errors.clear();
+  torso->SetOrganData(t.Organs);
+  vtkFloatArray::SafeDownCast(t.CT->GetPointData()->GetScalars())->SetValue(100, std::nanf(""));
+  t.CT->Modified();
+  torso->Update();
+  EXPECT_TRUE(errors->ErrorContains("non-finite value")) << errors->AllErrors();
+
+  errors->Errors.clear();
+  vtkNew<vtkImageData> empty;
+  torso->SetInputData(empty);
+  torso->Update();
+  EXPECT_TRUE(errors->ErrorContains("empty")) << errors->AllErrors();
+}
+
+TEST(VoxelGrid, DistanceIsExactOnAnAnisotropicGrid)
+{
+  amVoxelGrid g;
+  g.N[0] = 9, g.N[1] = 7, g.N[2] = 5;
+  g.Spacing[0] = 0.7, g.Spacing[1] = 1.3, g.Spacing[2] = 2.5;
+  std::mt19937 random(3);
+  amVoxelMask mask(g.Size(), 0);
+  for (auto& m : mask)
+    m = random() % 17 == 0;
+  const std::vector<float> d = amVoxel::Distance(g, mask);
+  for (std::size_t v = 0; v < g.Size(); ++v)
+  {
+    int a[3], b[3];
+    g.Ijk(v, a);
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t w = 0; w < g.Size(); ++w)
+      if (mask[w])
+      {
+        g.Ijk(w, b);
+        double s = 0;
+        for (int c = 0; c < 3; ++c)
+          s += std::pow((a[c] - b[c]) * g.Spacing[c], 2);
+        best = std::min(best, std::sqrt(s));
+      }
+    ASSERT_NEAR(d[v], best, 1e-4) << "voxel " << v;
+  }
+}
+
+TEST(VoxelGrid, HolesSpecksAndHandOver)
+{
+  amVoxelGrid g;
+  g.N[0] = g.N[1] = g.N[2] = 12;
+  // A hollow cube (walls 2 voxels) of label 1 with one voxel of label 2 in its wall, and a
+  // separate speck of label 1.
+  std::vector<std::uint8_t> labels(g.Size(), 0);
+  amVoxelMask shell(g.Size(), 0);
+  for (int k = 1; k < 9; ++k)
+    for (int j = 1; j < 9; ++j)
+      for (int i = 1; i < 9; ++i)
+      {
+        const bool inner = i >= 3 && i < 7 && j >= 3 && j < 7 && k >= 3 && k < 7;
+        labels[g.Index(i, j, k)] = inner ? 0 : 1;
+        shell[g.Index(i, j, k)] = !inner;
+      }
+  labels[g.Index(1, 4, 4)] = 2;
+  labels[g.Index(1, 5, 4)] = 2;
+  labels[g.Index(4, 4, 1)] = 2;
+  labels[g.Index(10, 10, 10)] = 1;
+  amVoxelMask filled = shell;
+  EXPECT_EQ(amVoxel::FillHoles(g, filled), 64u);
+  EXPECT_EQ(amVoxel::Erode26(g, shell)[g.Index(2, 2, 2)], 0); // beside the cavity
+  EXPECT_EQ(amVoxel::Erode26(g, filled)[g.Index(2, 2, 2)], 1);
+  EXPECT_EQ(amVoxel::Erode26(g, filled)[g.Index(1, 1, 1)], 0);
+
+  std::vector<bool> single(256, false);
+  single[2] = true;
+  std::vector<std::uint8_t> cleaned = labels;
+  // The speck of label 1 (below 2 voxels) and label 2's smaller piece (label 2 keeps one piece)
+  // go to their neighbours; a label's largest piece is kept whatever its size.
+  EXPECT_EQ(amVoxel::DropSmallComponents(g, cleaned, 2, single), 2u);
+  EXPECT_EQ(cleaned[g.Index(10, 10, 10)], 0);
+  EXPECT_EQ(cleaned[g.Index(4, 4, 1)], 1);
+  EXPECT_EQ(cleaned[g.Index(1, 4, 4)], 2);
+
+  std::vector<std::uint8_t> pending(g.Size(), amVoxel::Pending);
+  EXPECT_EQ(amVoxel::HandOver(g, pending), g.Size());
+  EXPECT_EQ(pending[0], 0); // nothing to hand them to: background
+}
