@@ -25,8 +25,8 @@
 vtkStandardNewMacro(amTorsoSegmentation);
 
 amTorsoSegmentation::amTorsoSegmentation()
-  : IntensityScale(1.0)
-  , IntensityShift(0.0)
+  : BodyGapClosing(0.0)
+  , LungOpening(0.0)
   , MinimumComponentVolume(50.0)
   , BloodPoolLabels{ amTorso::LeftVentricleBlood, amTorso::RightVentricleBlood }
   , MaximumWallThickness(40.0)
@@ -34,6 +34,7 @@ amTorsoSegmentation::amTorsoSegmentation()
   , WallSmoothingSigma(2.0)
   , MinimumWallContrast(5.0)
 {
+  this->InputWindow[0] = this->InputWindow[1] = 0.0;
   this->SetNumberOfInputPorts(2);
 }
 
@@ -136,6 +137,19 @@ int amTorsoSegmentation::RequestData(
     return 0;
   }
   const vtkIdType n = scalars->GetNumberOfTuples();
+  const bool windowed = this->InputWindow[0] > 0.0;
+  if (windowed)
+  {
+    double range[2];
+    scalars->GetRange(range, 0);
+    if (range[0] < 0.0 || range[1] > 255.0)
+    {
+      vtkErrorMacro(
+        "InputWindow says the CT is windowed to 0..255, but its values span " << range[0] << " .. " << range[1] << ".");
+      return 0;
+    }
+  }
+  const double lowest = this->InputWindow[1] - 0.5 * this->InputWindow[0];
   vtkNew<vtkFloatArray> hu;
   hu->SetName("HU");
   hu->SetNumberOfTuples(n);
@@ -147,7 +161,10 @@ int amTorsoSegmentation::RequestData(
       vtkErrorMacro("The CT has a non-finite value (" << v << ") at voxel " << i << ": cannot segment it.");
       return 0;
     }
-    hu->SetValue(i, static_cast<float>(v * this->IntensityScale + this->IntensityShift));
+    double h = v;
+    if (windowed)
+      h = v <= 0.0 ? -1000.0 : v >= 255.0 ? 1000.0 : lowest + v * this->InputWindow[0] / 255.0;
+    hu->SetValue(i, static_cast<float>(h));
   }
   vtkNew<vtkImageData> huImage;
   huImage->CopyStructure(input);
@@ -179,7 +196,13 @@ int amTorsoSegmentation::RequestData(
     static_cast<std::size_t>(std::ceil(this->MinimumComponentVolume / grid.VoxelVolume()));
 
   std::vector<std::uint8_t> labels;
-  const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, minimumVoxels, labels);
+  amTorso::TissueParameters tissueParameters;
+  tissueParameters.MinimumVoxels = minimumVoxels;
+  tissueParameters.BodyGap = this->BodyGapClosing;
+  tissueParameters.LungOpening = this->LungOpening;
+  // Below a window that starts above fat's -100 HU, fat reads as air: what is not lung is fat.
+  tissueParameters.LeftoverAirIsFat = windowed && lowest > -100.0;
+  const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
   if (tissues.LungComponents == 0)
     vtkWarningMacro("No lungs: no air inside the body of at least " << this->MinimumComponentVolume << " mm^3.");
   else if (tissues.LungsSplit)
@@ -205,7 +228,14 @@ int amTorsoSegmentation::RequestData(
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, values, classes, wall, labels);
   if (!heart.PoolVoxels)
     vtkWarningMacro("No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");
-  else if (!heart.Contrast)
+  else if (heart.PoolLevel < heart.WallLevel + this->MinimumWallContrast)
+    vtkWarningMacro("The blood pools (median " << heart.PoolLevel
+                                               << " HU) are not brighter than the tissue around "
+                                                  "them ("
+                                               << heart.WallLevel
+                                               << " HU): a scan without contrast, or a seed outside the blood pool; "
+                                                  "the myocardium around them is unreliable.");
+  if (heart.PoolVoxels && !heart.Contrast)
     vtkWarningMacro("The myocardium cannot be told from the tissue around it by intensity (wall "
       << heart.WallLevel << " HU, surroundings " << heart.SurroundingLevel << " HU, noise " << heart.Noise
       << " HU): it is the soft tissue within " << this->WallThickness << " mm of the blood pools.");
@@ -257,12 +287,14 @@ int amTorsoSegmentation::RequestData(
   output->GetFieldData()->AddArray(volumes);
   vtkNew<vtkDoubleArray> levels;
   levels->SetName("MyocardiumLevels");
-  for (double v : { heart.WallLevel, heart.SurroundingLevel, heart.Threshold, heart.Noise, heart.Contrast ? 1.0 : 0.0 })
+  for (double v : { heart.WallLevel, heart.SurroundingLevel, heart.Threshold, heart.Noise, heart.Contrast ? 1.0 : 0.0,
+         heart.PoolLevel })
     levels->InsertNextValue(v);
   output->GetFieldData()->AddArray(levels);
 
   std::ostringstream p;
-  p << "IntensityScale=" << this->IntensityScale << " IntensityShift=" << this->IntensityShift
+  p << "InputWindow=" << this->InputWindow[0] << "," << this->InputWindow[1]
+    << " BodyGapClosing=" << this->BodyGapClosing << " LungOpening=" << this->LungOpening
     << " MinimumComponentVolume=" << this->MinimumComponentVolume << " BloodPoolLabels=";
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
@@ -276,8 +308,9 @@ int amTorsoSegmentation::RequestData(
 void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "IntensityScale: " << this->IntensityScale << "\n";
-  os << indent << "IntensityShift: " << this->IntensityShift << "\n";
+  os << indent << "InputWindow: " << this->InputWindow[0] << " " << this->InputWindow[1] << "\n";
+  os << indent << "BodyGapClosing: " << this->BodyGapClosing << "\n";
+  os << indent << "LungOpening: " << this->LungOpening << "\n";
   os << indent << "MinimumComponentVolume: " << this->MinimumComponentVolume << "\n";
   os << indent << "BloodPoolLabels:";
   for (const int l : this->BloodPoolLabels)

@@ -3,8 +3,9 @@
  * @brief   Segments the whole simulation domain of a chest CT into one label map: body, fat,
  *          lungs, bone, myocardium, and the organs segmented from seeds.
  *
- * Input 0 is the CT (Hounsfield units, or any scale that IntensityScale and IntensityShift map to
- * them: HU = value x IntensityScale + IntensityShift). Input 1 (optional) is a label map on the
+ * Input 0 is the CT in Hounsfield units, or windowed to 0..255 (InputWindow: the width and level
+ * in HU that made it; 0 below the window is read as air, -1000 HU, 255 above it as bone, +1000 HU,
+ * as the classes need). Input 1 (optional) is a label map on the
  * same grid of organs segmented from seeds, e.g. amSnakeSegmentation's blood pools and aorta; its
  * labels are kept as they are and take precedence over every tissue below.
  *
@@ -13,12 +14,15 @@
  * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone). Steps:
  * 1. voxels are classed by amIntensityClassifier's CT ranges (air, lung, fat, soft tissue,
  *    contrast blood, bone); the air connected to the sides of the first two index axes is the
- *    exterior, everything else is the body (soft tissue unless a step below says otherwise);
+ *    exterior (through no gap of the body wall narrower than twice BodyGapClosing), everything
+ *    else is the body (soft tissue unless a step below says otherwise);
  * 2. fat is the fat class opened by the 6-neighbour cross: the one-voxel sheets that partial
  *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
- * 3. the lungs are the two largest components of air inside the body, right and left by their
- *    centres' world x (x towards the patient's left); where one component holds both (joined at
- *    the trachea), it is split at the body's mid-plane and a warning says so;
+ * 3. the lungs are the two largest components of air inside the body (opened by a ball of
+ *    LungOpening mm when it is set), right and left by their centres' world x (x towards the
+ *    patient's left); where one component holds both (joined at the trachea), it is split at the
+ *    body's mid-plane and a warning says so. Other air inside the body goes to its neighbours,
+ *    or is fat when InputWindow starts above fat's -100 HU (fat then reads as air);
  * 4. the largest bone component is the spine, every other one is rib (or other bone);
  * 5. the organs of input 1 are written over these;
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
@@ -32,12 +36,15 @@
  *    organs stop it. Where the two levels differ by less than MinimumWallContrast (or three times
  *    the average's noise), intensity cannot tell the wall: a warning says so and the wall is the
  *    soft tissue within WallThickness of the pools. Field data "MyocardiumLevels": wall level,
- *    surroundings' level, threshold, noise (HU), and 1 where intensity told the wall, else 0;
+ *    surroundings' level, threshold, noise (HU), 1 where intensity told the wall (else 0), and the
+ *    blood pools' level (HU; pools not brighter than the wall by MinimumWallContrast give a
+ *    warning: a scan without contrast, or a seed outside the blood pool);
  * 7. every voxel left undecided goes to the most frequent label among its neighbours; components
  *    smaller than MinimumComponentVolume are handed to their neighbours the same way, and every
  *    organ but soft tissue, fat and ribs keeps only its largest component.
  * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split, no
- * blood pools (no myocardium), an empty myocardium, a label of input 1 lost.
+ * blood pools (no myocardium), pools no brighter than the wall, an empty myocardium, a label of
+ * input 1 lost.
  * Errors: an empty or non-scalar CT, a non-finite voxel, input 1 on another grid or not a label map.
  *
  * @sa amIntensityClassifier amSnakeSegmentation amMorphologyCleaning amLabelOverlap
@@ -62,11 +69,25 @@ public:
   void SetOrganData(vtkDataObject* data) { this->SetInputData(1, data); }
 
   ///@{
-  /// HU = value x IntensityScale + IntensityShift (defaults 1 and 0: the input is in HU).
-  vtkSetMacro(IntensityScale, double);
-  vtkGetMacro(IntensityScale, double);
-  vtkSetMacro(IntensityShift, double);
-  vtkGetMacro(IntensityShift, double);
+  /// The window (width, level; HU) that mapped the input to 0..255, e.g. 400 40 for a mediastinal
+  /// window (default 0 0: the input is in HU).
+  vtkSetVector2Macro(InputWindow, double);
+  vtkGetVector2Macro(InputWindow, double);
+  ///@}
+
+  ///@{
+  /// Gaps in the body wall (mm) that the outside air may not pass (default 0: none). A scan
+  /// windowed above fat (its fat reads as air) shows the body wall as muscle and bone alone, with
+  /// holes; closing them by this distance keeps the lungs inside the body.
+  vtkSetClampMacro(BodyGapClosing, double, 0.0, 100.0);
+  vtkGetMacro(BodyGapClosing, double);
+  ///@}
+
+  ///@{
+  /// The lungs are the air inside the body opened by a ball of this radius, mm (default 0: not
+  /// opened). For scans windowed above fat, where fat beside the lungs reads as air too.
+  vtkSetClampMacro(LungOpening, double, 0.0, 100.0);
+  vtkGetMacro(LungOpening, double);
   ///@}
 
   ///@{
@@ -107,8 +128,9 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double IntensityScale;
-  double IntensityShift;
+  double InputWindow[2];
+  double BodyGapClosing;
+  double LungOpening;
   double MinimumComponentVolume;
   std::vector<int> BloodPoolLabels;
   double MaximumWallThickness;

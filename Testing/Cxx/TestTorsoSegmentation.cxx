@@ -171,6 +171,26 @@ TEST(TorsoSegmentation, WarningsNameTheMissingOrgan)
   ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
   ASSERT_EQ(errors->Warnings.size(), 1u);
   EXPECT_NE(errors->Warnings[0].find("no myocardium"), std::string::npos) << errors->Warnings[0];
+
+  // A "blood pool" seeded in soft tissue, away from the heart: the pool is not brighter than the
+  // tissue around it.
+  vtkNew<vtkImageData> wrong;
+  wrong->DeepCopy(t.Organs);
+  vtkDataArray* labels = wrong->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < wrong->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    wrong->GetPoint(i, x);
+    labels->SetComponent(i, 0, std::hypot(x[0], x[1] - 40.0, x[2] - 40.0) < 8.0 ? 6 : 0);
+  }
+  torso->SetOrganData(wrong);
+  errors->Warnings.clear();
+  torso->Update();
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  bool named = false;
+  for (const auto& w : errors->Warnings)
+    named = named || w.find("are not brighter than the tissue around them") != std::string::npos;
+  EXPECT_TRUE(named) << (errors->Warnings.empty() ? "no warning" : errors->Warnings[0]);
 }
 
 TEST(TorsoSegmentation, BadInputGivesClearErrors)

@@ -98,7 +98,11 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const std::vec
 
   const std::vector<float> d = amVoxel::Distance(b, pools);
   const double shellIn = std::max(3.0, 1.5 * hmax), shellOut = std::max(6.0, 3.0 * hmax);
-  std::vector<float> wall, around;
+  std::vector<float> wall, around, blood;
+  for (std::size_t v = 0; v < n; ++v)
+    if (pools[v])
+      blood.push_back(value[v]);
+  report.PoolLevel = Median(blood);
   for (std::size_t v = 0; v < n; ++v)
   {
     if (!candidate[v] || !inner[v])

@@ -52,14 +52,22 @@ struct TissueReport
   int BoneComponents = 0;
 };
 
+struct TissueParameters
+{
+  std::size_t MinimumVoxels = 0; // smaller components are left Pending
+  double BodyGap = 0.0;          // mm: see amTorsoSegmentation::BodyGapClosing
+  double LungOpening = 0.0;      // mm: the lungs are the air inside the body opened by this ball
+  bool LeftoverAirIsFat = false; // air inside the body that is not lung is fat (below the window)
+};
+
 /// Tissue labels from the classes: the exterior air (the air class connected to the sides of the
 /// first two index axes) 0; the body SoftTissue; fat (opened: partial-volume sheets are left
 /// Pending); the two largest air/lung components inside the body the lungs, right and left by
 /// world x against the body's centre (x to the patient's left); bone components the spine (the
-/// largest) and ribs. Components below minimumVoxels are left Pending. worldX: x = row[0] i +
-/// row[1] j + row[2] k + row[3].
+/// largest) and ribs. Small components and the air that is not lung are left Pending (or Fat).
+/// worldX: x = row[0] i + row[1] j + row[2] k + row[3].
 TissueReport Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const double worldX[4],
-  std::size_t minimumVoxels, std::vector<std::uint8_t>& labels);
+  const TissueParameters& p, std::vector<std::uint8_t>& labels);
 
 struct WallParameters
 {
@@ -73,6 +81,7 @@ struct WallParameters
 struct WallReport
 {
   std::size_t PoolVoxels = 0;
+  double PoolLevel = 0.0;        // median intensity of the pools (HU)
   double WallLevel = 0.0;        // median smoothed intensity 3-6 mm from the pools
   double SurroundingLevel = 0.0; // median beyond the maximum thickness
   double Noise = 0.0;            // robust spread of the smoothed wall intensity

@@ -6,11 +6,23 @@
 
 namespace
 {
-amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes)
+amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, double gap)
 {
   amVoxelMask air(classes.size());
   for (std::size_t v = 0; v < classes.size(); ++v)
     air[v] = classes[v] == amTorso::AirClass;
+  std::vector<float> fromBody;
+  if (gap > 0.0)
+  {
+    // Air farther than the gap from the body: a body wall with holes narrower than twice the gap
+    // (a thin wall whose fat reads as air) does not let the outside in.
+    amVoxelMask body(classes.size());
+    for (std::size_t v = 0; v < classes.size(); ++v)
+      body[v] = !air[v];
+    fromBody = amVoxel::Distance(g, body);
+    for (std::size_t v = 0; v < classes.size(); ++v)
+      air[v] = air[v] && fromBody[v] > gap;
+  }
   std::vector<int> id;
   std::vector<std::size_t> sizes;
   const int n = amVoxel::Components(g, air, id, sizes);
@@ -29,6 +41,13 @@ amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
   amVoxelMask exterior(classes.size(), 0);
   for (std::size_t v = 0; v < classes.size(); ++v)
     exterior[v] = id[v] >= 0 && open[id[v]];
+  if (gap > 0.0)
+  {
+    // Back to the body's surface: the air within the gap of the outside air is outside too.
+    const std::vector<float> fromOutside = amVoxel::Distance(g, exterior);
+    for (std::size_t v = 0; v < classes.size(); ++v)
+      exterior[v] = classes[v] == amTorso::AirClass && fromOutside[v] <= gap;
+  }
   return exterior;
 }
 
@@ -50,11 +69,12 @@ std::vector<int> BySize(const std::vector<std::size_t>& sizes)
 }
 
 amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes,
-  const double worldX[4], std::size_t minimumVoxels, std::vector<std::uint8_t>& labels)
+  const double worldX[4], const TissueParameters& p, std::vector<std::uint8_t>& labels)
 {
+  const std::size_t minimumVoxels = p.MinimumVoxels;
   TissueReport report;
   const std::size_t n = classes.size();
-  const amVoxelMask exterior = Exterior(g, classes);
+  const amVoxelMask exterior = Exterior(g, classes, p.BodyGap);
   labels.assign(n, SoftTissue);
   double bodyX = 0.0;
   for (std::size_t v = 0; v < n; ++v)
@@ -83,9 +103,25 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   // Lungs: the air inside the body.
   for (std::size_t v = 0; v < n; ++v)
     mask[v] = (classes[v] == LungClass || classes[v] == AirClass) && !exterior[v];
+  amVoxelMask lungs = mask;
+  if (p.LungOpening > 0.0)
+  {
+    // Opening by a ball: the lungs are thick, the fat that reads as air beside them (below a
+    // window that starts above fat) is a layer a few mm thick.
+    amVoxelMask other(n);
+    for (std::size_t v = 0; v < n; ++v)
+      other[v] = !mask[v];
+    const std::vector<float> depth = amVoxel::Distance(g, other);
+    amVoxelMask core(n);
+    for (std::size_t v = 0; v < n; ++v)
+      core[v] = depth[v] > p.LungOpening;
+    const std::vector<float> fromCore = amVoxel::Distance(g, core);
+    for (std::size_t v = 0; v < n; ++v)
+      lungs[v] = mask[v] && fromCore[v] <= p.LungOpening;
+  }
   std::vector<int> id;
   std::vector<std::size_t> sizes;
-  amVoxel::Components(g, mask, id, sizes);
+  amVoxel::Components(g, lungs, id, sizes);
   const std::vector<int> order = BySize(sizes);
   for (const int c : order)
     report.LungComponents += sizes[c] >= minimumVoxels;
@@ -105,7 +141,11 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   {
     const int c = id[v];
     if (c < 0)
+    {
+      if (mask[v])
+        labels[v] = p.LeftoverAirIsFat ? Fat : amVoxel::Pending;
       continue;
+    }
     if (c == first && second < 0)
       labels[v] = WorldX(g, v, worldX) > bodyX ? LeftLung : RightLung;
     else if (c == first)
@@ -113,7 +153,7 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     else if (c == second)
       labels[v] = firstIsLeft ? RightLung : LeftLung;
     else
-      labels[v] = amVoxel::Pending;
+      labels[v] = p.LeftoverAirIsFat ? Fat : amVoxel::Pending;
   }
 
   // Bone: the largest piece is the spine, the others ribs.

@@ -1,0 +1,101 @@
+"""The one chain on the phantom: the simulation on the mesh segmented from the CT agrees with the
+same simulation on the mesh of the phantom's exact labels (the reference run, kept only here)."""
+import unittest
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkProbeFilter
+
+import anatomesh
+
+SPACING, TOLERANCE, END = 2.0, 1.0, 400.0
+MAXIMUM_SIZE = 4.0  # mm: a mesh fine enough for the wave front, on both sides alike
+STIMULUS = (61.0, -51.5, -25.0)  # near the apex, as in the main job
+
+
+def simulate(labels):
+    """Label map -> surface -> remeshing -> TetGen -> FitzHugh-Nagumo -> torso potentials, as the
+    main job (Examples/Pipelines/thorax.xml) chains them."""
+    surface = anatomesh.amLabelSurface()
+    surface.SetInputConnection(labels)
+    smooth = anatomesh.amSurfaceSmoothing()
+    smooth.SetInputConnection(surface.GetOutputPort(0))
+    metric = anatomesh.amCurvatureMetric()
+    metric.SetInputConnection(smooth.GetOutputPort())
+    metric.SetTolerance(TOLERANCE)
+    metric.SetMinimumSize(SPACING)
+    metric.SetAnisotropic(False)
+    metric.SetMaximumSize(MAXIMUM_SIZE)
+    remesh = anatomesh.amMetricRemeshing()
+    remesh.SetInputConnection(metric.GetOutputPort())
+    remesh.SetTolerance(TOLERANCE)
+    tets = anatomesh.amTetrahedralize()
+    tets.SetInputConnection(remesh.GetOutputPort())
+    heart = anatomesh.amFitzHughNagumoSolver()
+    heart.SetInputConnection(tets.GetOutputPort(0))
+    heart.SetStimulusCenter(*STIMULUS)
+    heart.SetTimeStep(0.5)
+    heart.SetEndTime(END)
+    heart.SetOutputInterval(5)
+    torso = anatomesh.amTorsoPotential()
+    torso.SetInputConnection(0, tets.GetOutputPort(0))
+    torso.SetInputConnection(1, heart.GetOutputPort())
+    torso.Update()
+    heart.UpdateTimeStep(END)
+    h = heart.GetOutputDataObject(0).NewInstance()
+    h.DeepCopy(heart.GetOutputDataObject(0))
+    table = torso.GetOutputDataObject(1)
+    leads = {table.GetColumn(c).GetName(): vtk_to_numpy(table.GetColumn(c)).copy()
+             for c in range(table.GetNumberOfColumns())}
+    return h, leads
+
+
+class SegmentedAgainstTruth(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.phantom = anatomesh.amThoraxPhantomSource()
+        cls.phantom.SetSpacing(SPACING, SPACING, SPACING)
+        cls.phantom.SetSeed(1)
+        cls.snake = anatomesh.amSnakeSegmentation()
+        cls.snake.SetInputConnection(cls.phantom.GetOutputPort(0))
+        for x, y, z, label in [(29.4, -24.1, -28.0, 6), (-15.0, -25.0, -28.0, 7), (5.0, 40.0, 0.0, 8),
+                               (5.0, -20.0, 30.0, 8)]:
+            cls.snake.AddSeed(x, y, z, label)
+        cls.torso = anatomesh.amTorsoSegmentation()
+        cls.torso.SetInputConnection(cls.phantom.GetOutputPort(0))
+        cls.torso.SetOrganConnection(cls.snake.GetOutputPort())
+        cls.segmented = simulate(cls.torso.GetOutputPort())
+        cls.truth = simulate(cls.phantom.GetOutputPort(1))
+
+    def test_activation_times_agree(self):
+        seg_heart, truth_heart = self.segmented[0], self.truth[0]
+        seg_act = vtk_to_numpy(seg_heart.GetPointData().GetArray("ActivationTime"))
+        self.assertTrue(np.all(seg_act >= 0), "part of the segmented heart never activated")
+        points = vtkPolyData()
+        points.SetPoints(seg_heart.GetPoints())
+        probe = vtkProbeFilter()
+        probe.SetInputData(points)
+        probe.SetSourceData(truth_heart)
+        probe.Update()
+        valid = vtk_to_numpy(probe.GetOutput().GetPointData().GetArray("vtkValidPointMask")).astype(bool)
+        truth_act = vtk_to_numpy(probe.GetOutput().GetPointData().GetArray("ActivationTime"))
+        self.assertGreater(valid.mean(), 0.6)  # the two myocardia overlap (boundary nodes fall on either side)
+        rms = np.sqrt(np.mean((seg_act[valid] - truth_act[valid]) ** 2))
+        print("activation: RMS difference %.2f ms over %d common nodes (%.1f %%); last %.1f vs %.1f ms"
+              % (rms, valid.sum(), 100 * valid.mean(), seg_act.max(), truth_act[valid].max()))
+        self.assertLessEqual(rms, 5.0)
+
+    def test_every_lead_correlates(self):
+        seg, truth = self.segmented[1], self.truth[1]
+        self.assertEqual(list(seg), list(truth))
+        np.testing.assert_array_equal(seg["Time"], truth["Time"])
+        for name in list(seg)[1:]:
+            r = np.corrcoef(seg[name], truth[name])[0, 1]
+            print("lead %-4s correlation %.4f, peak %.1f vs %.1f mV" % (name, r, np.abs(seg[name]).max(),
+                                                                     np.abs(truth[name]).max()))
+            self.assertGreaterEqual(r, 0.95, name)
+
+
+if __name__ == "__main__":
+    unittest.main()
