@@ -1,17 +1,21 @@
 """The ``anatomesh`` command.
 
     anatomesh run PIPELINE.xml [--set NAME=VALUE ...] [--output DIR] [--quiet]
+    anatomesh batch PIPELINE.xml MANIFEST.csv [--jobs N] [--resume] [--output DIR] [--set NAME=VALUE ...]
     anatomesh filters            list the filter catalogue (from the plugin's server-manager XML)
     anatomesh --version
 
 Exit status: 0 on success, 1 when the pipeline or its data is wrong (the message names the file
-and, for pipeline files, the line), 2 for a command-line mistake.
+and, for pipeline files, the line), 2 for a command-line mistake. A run writes ``anatomesh-run.json``
+in its output folder last: "complete" with its key figures, or "failed" with the error.
 """
 import argparse
 import os
 import re
 import sys
 import time
+
+from . import marker
 
 
 class _Progress:
@@ -146,16 +150,27 @@ def _run(args):
         variables["output"] = args.output
     try:
         p = pl.Pipeline(args.pipeline, variables)
-        if not args.quiet:
-            sys.stderr.write("Running %s (%d filters)\n" % (args.pipeline, len(p.steps)))
-        t0 = time.time()
-        written = p.run(progress=None if args.quiet else _Progress(sys.stderr))
     except pl.UndeclaredVariableError as e:
         sys.stderr.write("anatomesh: error: %s\n" % e)
         return 2
     except pl.PipelineError as e:
         sys.stderr.write("anatomesh: error: %s\n" % e)
+        if variables.get("output") and os.path.isdir(variables["output"]):
+            marker.write_failed(variables["output"], args.pipeline, variables, str(e))
         return 1
+    folder = p.variables["output"]
+    marker.clear(folder)  # a run in progress, or one that fails, is never taken for a complete one
+    if not args.quiet:
+        sys.stderr.write("Running %s (%d filters)\n" % (args.pipeline, len(p.steps)))
+    t0 = time.time()
+    try:
+        written = p.run(progress=None if args.quiet else _Progress(sys.stderr))
+    except pl.PipelineError as e:
+        sys.stderr.write("anatomesh: error: %s\n" % e)
+        if os.path.isdir(folder):
+            marker.write_failed(folder, args.pipeline, p.variables, str(e))
+        return 1
+    marker.write_complete(folder, args.pipeline, p.variables, written, p.written_data, time.time() - t0)
     if not args.quiet:
         _summary(written, p.written_data, sys.stdout)
         sys.stdout.write("Done in %.1f s.\n" % (time.time() - t0))
@@ -183,11 +198,22 @@ def main(argv=None):
     run.add_argument("--set", action="append", metavar="NAME=VALUE", help="set a pipeline variable")
     run.add_argument("--output", metavar="DIR", help="output folder (sets the variable 'output')")
     run.add_argument("--quiet", action="store_true", help="no progress or summary")
+    bat = sub.add_parser("batch", help="run a pipeline once per row of a CSV manifest")
+    bat.add_argument("pipeline", help="pipeline XML file")
+    bat.add_argument("manifest", help="CSV file: a header of pipeline variables (and 'case'), one row per case")
+    bat.add_argument("--jobs", type=int, default=1, metavar="N", help="cases run at once on this machine")
+    bat.add_argument("--resume", action="store_true", help="skip cases whose outputs are complete")
+    bat.add_argument("--output", metavar="DIR", default="batch",
+                     help="folder of the summary, and of each case's output when the manifest has no 'output'")
+    bat.add_argument("--set", action="append", metavar="NAME=VALUE", help="a variable for every case")
     flt = sub.add_parser("filters", help="list the filter catalogue")
     flt.add_argument("--verbose", "-v", action="store_true", help="show properties")
     args = parser.parse_args(argv)
     if args.command == "run":
         return _run(args)
+    if args.command == "batch":
+        from . import batch
+        return batch.main(args)
     if args.command == "filters":
         return _filters(args)
     parser.print_help()

@@ -1,0 +1,184 @@
+"""``anatomesh batch``: one pipeline over the cases of a CSV manifest.
+
+    anatomesh batch PIPELINE.xml MANIFEST.csv [--jobs N] [--resume] [--output DIR] [--set NAME=VALUE ...]
+
+The manifest's header names pipeline variables (and optionally ``case``, the case's name); each row is a case.
+A case's output folder is its ``output`` column, or DIR/CASE. Every case runs as its own ``anatomesh run``
+process, its progress and messages in CASE_OUTPUT/anatomesh.log, so one failing (or crashing) case never stops
+the others. ``--jobs N`` runs N cases at once. ``--resume`` skips a case whose folder holds a complete run marker
+(anatomesh-run.json, written last) for the same pipeline and variables. Under ``mpirun -n K`` (mpi4py) the ranks
+share the cases, case i on rank i mod K, and rank 0 writes the summary. The summary, DIR/batch_summary.csv and
+.html, has every case's status, seconds, log and key figures (label volumes, Hausdorff distance, Table 1's
+whole-mesh row, smallest Dice). Exit status: 0 when every case is complete, 1 when any failed, 2 for a mistake in
+the command or the manifest (named with its line).
+"""
+import concurrent.futures
+import csv
+import html
+import os
+import subprocess
+import sys
+import time
+
+from . import marker
+
+
+class ManifestError(Exception):
+    pass
+
+
+def read_manifest(path, declared):
+    """Cases as (name, variables) from the CSV manifest; variables must be declared by the pipeline."""
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+    except (OSError, UnicodeDecodeError) as e:
+        raise ManifestError("%s: cannot read the manifest: %s" % (path, e))
+    rows = [(n + 1, r) for n, r in enumerate(rows) if any(cell.strip() for cell in r)]
+    if len(rows) < 2:
+        raise ManifestError("%s: a manifest needs a header of variable names and at least one case" % path)
+    header = [h.strip() for h in rows[0][1]]
+    unknown = [h for h in header if h != "case" and h not in declared]
+    if unknown or len(set(header)) != len(header) or "" in header:
+        raise ManifestError("%s:%d: columns must be distinct pipeline variables or 'case'; %s (declared: %s)" % (
+            path, rows[0][0], "unknown: " + ", ".join(unknown) if unknown else "empty or repeated names",
+            ", ".join(sorted(declared))))
+    cases, names = [], set()
+    for line, row in rows[1:]:
+        if len(row) != len(header):
+            raise ManifestError("%s:%d: %d values for %d columns" % (path, line, len(row), len(header)))
+        values = dict(zip(header, (cell.strip() for cell in row)))
+        name = values.pop("case", "") or "case%03d" % (len(cases) + 1)
+        if name in names or os.sep in name:
+            raise ManifestError("%s:%d: case name %r is repeated or holds a '%s'" % (path, line, name, os.sep))
+        names.add(name)
+        cases.append((name, values))
+    return cases
+
+
+def run_case(pipeline, name, variables, resume):
+    """Runs one case in its own process; returns its summary row."""
+    folder = variables["output"]
+    row = {"case": name, "output": folder, "log": os.path.join(folder, "anatomesh.log")}
+    done = marker.read(folder) if resume else None
+    if done and done.get("status") == "complete" and done.get("pipeline") == os.path.abspath(pipeline) and all(
+            done.get("variables", {}).get(k) == v for k, v in variables.items()):
+        row.update(status="skipped (complete)", exit=0, seconds=done.get("seconds", 0.0),
+                   figures=done.get("figures", {}))
+        return row
+    os.makedirs(folder, exist_ok=True)
+    command = [sys.executable, "-m", "anatomesh.cli", "run", pipeline]
+    for k, v in variables.items():
+        command += ["--set", "%s=%s" % (k, v)]
+    t0 = time.time()
+    with open(row["log"], "w") as log:
+        code = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
+    done = marker.read(folder) or {}
+    ok = code == 0 and done.get("status") == "complete"
+    row.update(status="complete" if ok else "failed", exit=code, seconds=round(time.time() - t0, 2),
+               figures=done.get("figures", {}))
+    if not ok:
+        row["error"] = done.get("error") or _last_error(row["log"]) or "exit status %d (see the log)" % code
+    return row
+
+
+def _last_error(log):
+    """The last 'anatomesh: error:' line of a case's log (a mistake found before the run has no marker)."""
+    try:
+        with open(log, errors="replace") as f:
+            lines = [l.strip() for l in f if l.startswith("anatomesh: error:")]
+    except OSError:
+        return None
+    return lines[-1][len("anatomesh: error:"):].strip() if lines else None
+
+
+def write_summary(folder, rows):
+    """batch_summary.csv and batch_summary.html: one row per case, one column per key figure."""
+    figure_columns = []
+    for row in rows:
+        for file, values in row["figures"].items():
+            for key in values:
+                if (file, key) not in figure_columns:
+                    figure_columns.append((file, key))
+    head = ["case", "status", "exit", "seconds", "output", "log", "error"]
+    table = [head + ["%s: %s" % c for c in figure_columns]]
+    for row in rows:
+        table.append([row.get(h, "") for h in head] +
+                     [row["figures"].get(f, {}).get(k, "") for f, k in figure_columns])
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, "batch_summary.csv"), "w", newline="") as f:
+        csv.writer(f).writerows(table)
+    failed = sum(1 for r in rows if r["status"] == "failed")
+    with open(os.path.join(folder, "batch_summary.html"), "w") as f:
+        f.write("<!DOCTYPE html><html><head><meta charset='utf-8'><title>Anatomesh batch</title>"
+                "<style>td,th{border:1px solid #bbb;padding:2px 6px}table{border-collapse:collapse}"
+                ".failed{background:#fdd}</style></head><body>\n")
+        f.write("<h1>Anatomesh batch: %d cases, %d failed</h1>\n<table>\n" % (len(rows), failed))
+        f.write("<tr>" + "".join("<th>%s</th>" % html.escape(str(h)) for h in table[0]) + "</tr>\n")
+        for row, cells in zip(rows, table[1:]):
+            cls = " class='failed'" if row["status"] == "failed" else ""
+            f.write("<tr%s>" % cls + "".join("<td>%s</td>" % html.escape(str(c)) for c in cells) + "</tr>\n")
+        f.write("</table></body></html>\n")
+
+
+def _mpi():
+    """(communicator, rank, size) under mpirun with mpi4py, else (None, 0, 1)."""
+    if int(os.environ.get("OMPI_COMM_WORLD_SIZE", os.environ.get("PMI_SIZE", "1"))) <= 1:
+        return None, 0, 1
+    from mpi4py import MPI
+    comm = MPI.COMM_WORLD
+    return comm, comm.Get_rank(), comm.Get_size()
+
+
+def main(args):
+    from . import pipeline as pl
+    given = {}
+    for item in args.set or []:
+        if "=" not in item:
+            sys.stderr.write("anatomesh: error: --set takes NAME=VALUE, got %r\n" % item)
+            return 2
+        k, v = item.split("=", 1)
+        given[k] = v
+    if args.jobs < 1:
+        sys.stderr.write("anatomesh: error: --jobs must be at least 1\n")
+        return 2
+    try:
+        declared = set(pl.Pipeline(args.pipeline, given).variables)
+        cases = read_manifest(args.manifest, declared)
+    except (pl.PipelineError, ManifestError) as e:
+        sys.stderr.write("anatomesh: error: %s\n" % e)
+        return 2
+    work = []
+    for name, values in cases:
+        variables = dict(given)
+        variables.update(values)
+        variables.setdefault("output", os.path.join(args.output, name))
+        work.append((name, variables))
+    comm, rank, size = _mpi()
+    mine = [(i, w) for i, w in enumerate(work) if i % size == rank]
+    results = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        futures = {pool.submit(run_case, args.pipeline, name, variables, args.resume): i
+                   for i, (name, variables) in mine}
+        for future in concurrent.futures.as_completed(futures):
+            row = future.result()
+            results[futures[future]] = row
+            sys.stderr.write("  %-24s %-20s %8.1f s  %s\n" % (row["case"], row["status"], row["seconds"],
+                                                            row.get("error", "")))
+    if comm is not None:
+        gathered = comm.gather(results, root=0)
+        if rank == 0:
+            for part in gathered:
+                results.update(part)
+        failed = comm.bcast(sum(1 for r in results.values() if r["status"] == "failed") if rank == 0 else None,
+                            root=0)
+    else:
+        failed = sum(1 for r in results.values() if r["status"] == "failed")
+    if rank == 0:
+        rows = [results[i] for i in sorted(results)]
+        write_summary(args.output, rows)
+        sys.stdout.write("%d cases: %d complete, %d skipped, %d failed; summary in %s\n" % (
+            len(rows), sum(r["status"] == "complete" for r in rows), sum(r["status"].startswith("skipped")
+                                                                         for r in rows), failed,
+            os.path.join(args.output, "batch_summary.csv")))
+    return 1 if failed else 0

@@ -1,0 +1,88 @@
+"""The run marker: ``anatomesh-run.json`` in a run's output folder, written last.
+
+A complete run says so (status "complete", with the pipeline, its variables, the files written, the seconds
+and the key figures of its outputs); a failed run leaves status "failed" and the error beside whatever partial
+outputs it made; a run in progress has no marker (the old one is removed when a run starts). ``anatomesh batch
+--resume`` trusts only a complete marker whose pipeline and variables are the case's.
+"""
+import json
+import os
+
+NAME = "anatomesh-run.json"
+
+
+def path(folder):
+    return os.path.join(folder, NAME)
+
+
+def clear(folder):
+    try:
+        os.remove(path(folder))
+    except FileNotFoundError:
+        pass
+
+
+def _write(folder, record):
+    os.makedirs(folder, exist_ok=True)
+    tmp = path(folder) + ".tmp%d" % os.getpid()
+    with open(tmp, "w") as f:
+        json.dump(record, f, indent=1, sort_keys=True)
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(tmp, path(folder))
+
+
+def write_complete(folder, pipeline, variables, written, data, seconds):
+    _write(folder, {"status": "complete", "pipeline": os.path.abspath(pipeline), "variables": variables,
+                    "files": written, "seconds": round(seconds, 3), "figures": figures(data)})
+
+
+def write_failed(folder, pipeline, variables, message):
+    _write(folder, {"status": "failed", "pipeline": os.path.abspath(pipeline), "variables": variables,
+                    "error": message})
+
+
+def read(folder):
+    try:
+        with open(path(folder)) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return None
+
+
+def figures(data):
+    """Key figures of a run's outputs: each label map's volumes (cm3), the surface's Hausdorff distance, the
+    mesh quality table's whole-mesh row, the smallest Dice."""
+    out = {}
+    for file, obj in sorted(data.items()):
+        if obj is None:
+            continue
+        name = os.path.basename(file)
+        if obj.IsA("vtkImageData"):
+            scalars = obj.GetPointData().GetScalars()
+            if scalars is None or scalars.GetName() != "Labels":
+                continue
+            from vtkmodules.util.numpy_support import vtk_to_numpy
+            import numpy as np
+            values, counts = np.unique(vtk_to_numpy(scalars), return_counts=True)
+            sx, sy, sz = obj.GetSpacing()
+            out[name] = {"label %d cm3" % v: round(float(c) * sx * sy * sz / 1000.0, 3)
+                         for v, c in zip(values.tolist(), counts.tolist()) if v != 0}
+        elif obj.IsA("vtkPolyData"):
+            h = obj.GetFieldData().GetArray("Hausdorff")
+            if h is not None:
+                out[name] = {"Hausdorff mm": round(h.GetValue(0), 4), "triangles": obj.GetNumberOfCells()}
+        elif obj.IsA("vtkTable"):
+            columns = {obj.GetColumnName(c): obj.GetColumn(c) for c in range(obj.GetNumberOfColumns())}
+            if "MeanQuality" in columns and "Region" in columns:
+                for r in range(obj.GetNumberOfRows()):
+                    if columns["Region"].GetValue(r) == -1:
+                        out[name] = {k: round(float(columns[c].GetValue(r)), 4) for k, c in (
+                            ("tetrahedra", "ne"), ("mean Q", "MeanQuality"), ("worst Q", "MaximumQuality"),
+                            ("smallest dihedral", "MinimumDihedralAngle"))}
+            elif "Dice" in columns and "Label" in columns:
+                dice = [columns["Dice"].GetValue(r) for r in range(obj.GetNumberOfRows())
+                        if columns["Label"].GetValue(r) > 0]
+                if dice:
+                    out[name] = {"smallest Dice": round(min(dice), 4)}
+    return out
