@@ -100,6 +100,21 @@ void amFitzHughNagumoSolver::AddHeartRegion(int label)
   this->Modified();
 }
 
+void amFitzHughNagumoSolver::AddEndocardialRegion(int label)
+{
+  this->EndocardialRegions.push_back(label);
+  this->Modified();
+}
+
+void amFitzHughNagumoSolver::RemoveAllEndocardialRegions()
+{
+  if (!this->EndocardialRegions.empty())
+  {
+    this->EndocardialRegions.clear();
+    this->Modified();
+  }
+}
+
 void amFitzHughNagumoSolver::RemoveAllHeartRegions()
 {
   if (!this->HeartRegions.empty())
@@ -248,7 +263,23 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   // Stimulated nodes.
   std::vector<unsigned char> stimulated(n, 0);
   vtkIdType nStimulated = 0;
-  if (this->StimulusRegion >= 0)
+  if (!this->EndocardialRegions.empty())
+  {
+    // The Purkinje network's stand-in: every heart node on a cell of the given regions (the
+    // blood pools) is stimulated at once.
+    const std::set<int> endo(this->EndocardialRegions.begin(), this->EndocardialRegions.end());
+    for (vtkIdType c = 0; regions && c < input->GetNumberOfCells(); ++c)
+      if (endo.count(static_cast<int>(regions->GetComponent(c, 0))))
+      {
+        const vtkIdType* ids;
+        vtkIdType npts;
+        input->GetCellPoints(c, npts, ids);
+        for (vtkIdType k = 0; k < npts; ++k)
+          if (subset.Local[ids[k]] >= 0)
+            stimulated[subset.Local[ids[k]]] = 1;
+      }
+  }
+  else if (this->StimulusRegion >= 0)
   {
     for (std::size_t k = 0; k < heartCells.size(); ++k)
       if (regions && static_cast<int>(regions->GetComponent(heartCells[k], 0)) == this->StimulusRegion)
@@ -271,7 +302,9 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   if (nStimulated == 0)
   {
     std::ostringstream where;
-    if (this->StimulusRegion >= 0)
+    if (!this->EndocardialRegions.empty())
+      where << "no cell of the endocardial regions touches the heart";
+    else if (this->StimulusRegion >= 0)
       where << "region " << this->StimulusRegion << " is not a heart region with cells";
     else
       where << "the sphere of radius " << this->StimulusRadius << " mm around (" << this->StimulusCenter[0] << ", "
@@ -356,8 +389,9 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   params << " Conductivity=" << this->Conductivity << " C1=" << c1 << " C2=" << c2 << " C3=" << c3 << " C4=" << c4
          << " A=" << a << " TimeStep=" << dt << " EndTime=" << this->EndTime << " Stimulus=(" << this->StimulusCenter[0]
          << "," << this->StimulusCenter[1] << "," << this->StimulusCenter[2] << ") r=" << this->StimulusRadius
-         << " region=" << this->StimulusRegion << " start=" << this->StimulusStart
-         << " duration=" << this->StimulusDuration << " strength=" << this->StimulusStrength;
+         << " region=" << this->StimulusRegion << " endocardial=" << this->EndocardialRegions.size()
+         << " start=" << this->StimulusStart << " duration=" << this->StimulusDuration
+         << " strength=" << this->StimulusStrength;
   amProvenance::Record(heart, input, "amFitzHughNagumoSolver", params.str());
   this->Cache = std::move(run);
   return 1;

@@ -10,6 +10,7 @@
 #include "amThoraxPhantomModel.h"
 #include "amThreading.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -22,9 +23,8 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPolyData.h"
-#include "vtkCellArray.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
@@ -56,6 +56,12 @@ struct amTorsoPotential::Model
   amConjugateGradient CG;
   amSparseCholesky Cholesky;
   std::vector<double> X, Zero;
+  // Current-source coupling: the intracellular stiffness over the heart, the right-hand side
+  // -Ki Vm of each step (batched like X for the direct solver), the body-surface nodes whose mean
+  // potential is the reference.
+  bool Source = false;
+  amSparseMatrix Ki;
+  std::vector<double> Vm, Rhs, PendingRhs;
   std::vector<vtkIdType> Electrodes; // torso nodes
   std::vector<std::array<double, 3>> ElectrodePoints;
   std::vector<double> Times;
@@ -72,9 +78,19 @@ struct amTorsoPotential::Model
   {
     this->Times.push_back(time);
     this->Phi.emplace_back(x, x + this->X.size());
+    if (this->Source && !this->BodyNodes.empty())
+    {
+      // Potentials are defined up to a constant: the body surface's mean is zero.
+      double mean = 0.0;
+      for (vtkIdType b : this->BodyNodes)
+        mean += x[b];
+      mean /= static_cast<double>(this->BodyNodes.size());
+      for (auto& v : this->Phi.back())
+        v = static_cast<float>(v - mean);
+    }
     std::vector<double> row;
     for (vtkIdType e : this->Electrodes)
-      row.push_back(x[e]);
+      row.push_back(this->Phi.back()[e]);
     this->Leads.push_back(row);
   }
 };
@@ -106,6 +122,8 @@ amTorsoPotential::amTorsoPotential()
   , PotentialScale(100.0)
   , Conductivity(0.2)
   , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02 }
+  , Coupling(DIRICHLET)
+  , IntracellularConductivity(0.17)
   , Solver(DIRECT)
   , SolverTolerance(1e-6)
   , MaximumIterations(5000)
@@ -175,8 +193,8 @@ int amTorsoPotential::FillInputPortInformation(int port, vtkInformation* info)
 
 int amTorsoPotential::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkDataObject::DATA_TYPE_NAME(),
-    port == 0 ? "vtkUnstructuredGrid" : (port == 1 ? "vtkTable" : "vtkPolyData"));
+  info->Set(
+    vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : (port == 1 ? "vtkTable" : "vtkPolyData"));
   return 1;
 }
 
@@ -257,10 +275,16 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   for (vtkIdType c = 0; c < heartRegions->GetNumberOfTuples(); ++c)
     heartSet.insert(static_cast<int>(heartRegions->GetComponent(c, 0)));
 
+  // Dirichlet coupling: the torso is the cells outside the heart. Current source: every cell.
+  model->Source = this->Coupling == CURRENT_SOURCE;
   std::vector<vtkIdType> torsoCells;
+  std::vector<char> inHeart;
+  vtkIdType outside = 0;
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
   {
-    if (heartSet.count(static_cast<int>(regions->GetComponent(c, 0))))
+    const bool heartCell = heartSet.count(static_cast<int>(regions->GetComponent(c, 0))) > 0;
+    outside += !heartCell;
+    if (heartCell && !model->Source)
       continue;
     if (mesh->GetCellType(c) != VTK_TETRA)
     {
@@ -268,8 +292,9 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
       return false;
     }
     torsoCells.push_back(c);
+    inHeart.push_back(heartCell);
   }
-  if (torsoCells.empty())
+  if (outside == 0)
   {
     vtkErrorMacro(<< "no torso: every cell of the mesh is in the heart's regions");
     return false;
@@ -296,11 +321,10 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   for (vtkIdType h = 0; h < ids->GetNumberOfTuples(); ++h)
   {
     const vtkIdType p = static_cast<vtkIdType>(ids->GetComponent(h, 0));
-    if (p >= 0 && p < nMesh && local[p] >= 0 && model->HeartIndex[local[p]] < 0 &&
-      (model->Fixed[local[p]] == 0))
+    if (p >= 0 && p < nMesh && local[p] >= 0 && model->HeartIndex[local[p]] < 0)
     {
       model->HeartIndex[local[p]] = h;
-      model->Fixed[local[p]] = 1;
+      model->Fixed[local[p]] = !model->Source;
       ++nFixed;
     }
   }
@@ -322,8 +346,12 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     }
   std::vector<unsigned char> grounded(n, 0);
   for (vtkIdType i = 0; i < n; ++i)
-    if (model->Fixed[i])
+    if (model->Fixed[i] || (model->Source && model->HeartIndex[i] >= 0 && !grounded[Find(parent, i)]))
+    {
+      // Current source: one node of each part that holds heart nodes is the reference (0).
+      model->Fixed[i] = 1;
       grounded[Find(parent, i)] = 1;
+    }
   vtkIdType floating = 0;
   for (vtkIdType i = 0; i < n; ++i)
     if (!grounded[Find(parent, i)])
@@ -338,16 +366,26 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   std::map<int, double> sigmaOf;
   for (std::size_t k = 0; k + 1 < this->RegionConductivities.size(); k += 2)
     sigmaOf[static_cast<int>(this->RegionConductivities[k])] = this->RegionConductivities[k + 1];
-  std::vector<std::array<double, 6>> tensors(torsoCells.size());
+  std::vector<std::array<double, 6>> tensors(torsoCells.size()), intra(torsoCells.size());
   for (std::size_t k = 0; k < torsoCells.size(); ++k)
   {
     const auto it = sigmaOf.find(static_cast<int>(regions->GetComponent(torsoCells[k], 0)));
-    const double sigma = it != sigmaOf.end() ? it->second : this->Conductivity;
+    double sigma = it != sigmaOf.end() ? it->second : this->Conductivity;
+    const double si = inHeart[k] ? this->IntracellularConductivity : 0.0;
+    sigma += si; // in the heart the bulk conductivity is the extracellular plus the intracellular
     tensors[k] = { sigma, sigma, sigma, 0, 0, 0 };
+    intra[k] = { si, si, si, 0, 0, 0 };
   }
   this->UpdateProgress(0.02);
   amSparseMatrix mass;
   fem.Assemble(&tensors, mass, model->K);
+  if (model->Source)
+  {
+    amSparseMatrix unused;
+    fem.Assemble(&intra, unused, model->Ki);
+    model->Vm.assign(n, 0.0);
+    model->Rhs.assign(n, 0.0);
+  }
   this->FactorSeconds = 0;
   this->FactorNonZeros = 0;
   if (this->Solver == DIRECT)
@@ -426,7 +464,8 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
         continue;
       double d2 = 0;
       for (int c = 0; c < 3; ++c)
-        d2 += (fem.Points[i][c] - this->ElectrodePositions[e + c]) * (fem.Points[i][c] - this->ElectrodePositions[e + c]);
+        d2 +=
+          (fem.Points[i][c] - this->ElectrodePositions[e + c]) * (fem.Points[i][c] - this->ElectrodePositions[e + c]);
       if (d2 < bestD)
       {
         bestD = d2;
@@ -453,7 +492,10 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     params << (k ? "," : "") << this->RegionConductivities[k];
   params << " PotentialArray=" << (this->PotentialArrayName ? this->PotentialArrayName : "")
          << " PotentialScale=" << this->PotentialScale << " Electrodes=" << model->Electrodes.size()
-         << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG");
+         << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG")
+         << " Coupling=" << (model->Source ? "current source" : "Dirichlet");
+  if (model->Source)
+    params << " IntracellularConductivity=" << this->IntracellularConductivity;
   amProvenance::Record(torso, heart, "amTorsoPotential", params.str());
   model->Torso = torso;
   model->MeshTime = mesh->GetMTime();
@@ -485,16 +527,26 @@ bool amTorsoPotential::Solve(vtkUnstructuredGrid* heart, double time)
                       << " ms)");
         return false;
       }
-      m.X[i] = this->PotentialScale * value;
+      (m.Source ? m.Vm[i] : m.X[i]) = this->PotentialScale * value;
     }
+  const double* rhs = m.Zero.data();
+  if (m.Source)
+  {
+    m.Ki.Multiply(m.Vm.data(), m.Rhs.data());
+    for (double& b : m.Rhs)
+      b = -b;
+    rhs = m.Rhs.data();
+  }
   if (this->Solver == DIRECT)
   {
+    if (m.Source)
+      m.PendingRhs.insert(m.PendingRhs.end(), m.Rhs.begin(), m.Rhs.end());
     m.Pending.insert(m.Pending.end(), m.X.begin(), m.X.end());
     m.PendingTimes.push_back(time);
     return static_cast<int>(m.PendingTimes.size()) < Model::Batch || this->Flush();
   }
   const auto start = std::chrono::steady_clock::now();
-  const amConjugateGradient::Result result = m.CG.Solve(m.Zero.data(), m.X.data());
+  const amConjugateGradient::Result result = m.CG.Solve(rhs, m.X.data());
   m.Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   m.Iterations += result.Iterations;
   if (!result.Converged)
@@ -515,7 +567,7 @@ bool amTorsoPotential::Flush()
   if (count == 0)
     return true;
   const auto start = std::chrono::steady_clock::now();
-  const bool ok = m.Cholesky.Solve(nullptr, m.Pending.data(), count);
+  const bool ok = m.Cholesky.Solve(m.Source ? m.PendingRhs.data() : nullptr, m.Pending.data(), count);
   m.Seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!ok)
   {
@@ -525,6 +577,7 @@ bool amTorsoPotential::Flush()
   for (int k = 0; k < count; ++k)
     m.Record(m.PendingTimes[k], m.Pending.data() + k * m.X.size());
   m.Pending.clear();
+  m.PendingRhs.clear();
   m.PendingTimes.clear();
   return true;
 }
@@ -690,6 +743,8 @@ void amTorsoPotential::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Conductivity: " << this->Conductivity << "\n";
   os << indent << "PotentialScale: " << this->PotentialScale << "\n";
   os << indent << "Electrodes: " << this->ElectrodePositions.size() / 3 << "\n";
+  os << indent << "Coupling: " << (this->Coupling == DIRICHLET ? "DIRICHLET" : "CURRENT_SOURCE") << "\n";
+  os << indent << "IntracellularConductivity: " << this->IntracellularConductivity << "\n";
   os << indent << "Solver: " << (this->Solver == DIRECT ? "DIRECT" : "CONJUGATE_GRADIENT") << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";

@@ -93,6 +93,34 @@ public:
   ///@}
 
   ///@{
+  /// How the heart drives the torso. DIRICHLET (default, the paper's): the heart's potential
+  /// (PotentialScale x u) is imposed on the torso nodes it shares with the heart, and the torso
+  /// alone is solved; the leads are then monophasic, tens of mV. CURRENT_SOURCE: the
+  /// transmembrane potential Vm = PotentialScale x u (mV) is a current source in the whole
+  /// mesh, div((sigma_i + sigma_e) grad phi) = -div(sigma_i grad Vm), sigma_i =
+  /// IntracellularConductivity in the heart's regions (0 elsewhere) and sigma_e the region's
+  /// conductivity (RegionConductivities / Conductivity, for the heart too); zero flux on the body
+  /// surface, whose mean potential is the reference. Output 0 is then the whole mesh. The
+  /// potential of a dipole in a homogeneous sphere checks it (TestTorsoPotential).
+  enum CouplingType
+  {
+    DIRICHLET = 0,
+    CURRENT_SOURCE = 1
+  };
+  vtkSetClampMacro(Coupling, int, DIRICHLET, CURRENT_SOURCE);
+  vtkGetMacro(Coupling, int);
+  void SetCouplingToDirichlet() { this->SetCoupling(DIRICHLET); }
+  void SetCouplingToCurrentSource() { this->SetCoupling(CURRENT_SOURCE); }
+  ///@}
+
+  ///@{
+  /// The heart's intracellular conductivity for the current-source coupling (default 0.17, S/m
+  /// like the region conductivities: a bidomain model's value along the fibres).
+  vtkSetClampMacro(IntracellularConductivity, double, 0.0, 1e6);
+  vtkGetMacro(IntracellularConductivity, double);
+  ///@}
+
+  ///@{
   /// Linear solver. DIRECT (default): the torso matrix is factored once (sparse Cholesky,
   /// CHOLMOD) and every time step costs two triangular sweeps — exact to rounding, and the fast
   /// choice when many steps are solved. CONJUGATE_GRADIENT: Jacobi-preconditioned CG warm-started
@@ -148,6 +176,8 @@ protected:
   double Conductivity;
   std::vector<double> RegionConductivities;
   std::vector<double> ElectrodePositions;
+  int Coupling;
+  double IntracellularConductivity;
   int Solver;
   double SolverTolerance;
   int MaximumIterations;

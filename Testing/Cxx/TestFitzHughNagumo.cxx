@@ -205,6 +205,36 @@ TEST(FitzHughNagumo, TimeDependentOutputAndFullCycle)
   EXPECT_LT(a1, a2);
 }
 
+TEST(FitzHughNagumo, EndocardialRegionsActivateTheHeartFromInside)
+{
+  // A slab x in [0, 30] mm: a "blood pool" (region 6) for x < 6, the heart (region 5) beyond.
+  // With EndocardialRegions 6 the heart starts at its face x = 6 at once: activation grows with
+  // x alone (a plane wave), and no stimulus sphere is needed.
+  const int n[3] = { 30, 4, 2 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 30, 4, 2 };
+  auto mesh = amTest::BoxMesh(n, origin, size, [](const double* c) { return c[0] < 6 ? 6 : 5; });
+  vtkNew<amFitzHughNagumoSolver> solver;
+  solver->SetInputData(mesh);
+  solver->AddEndocardialRegion(6);
+  solver->SetStimulusCenter(1000, 1000, 1000); // far away: ignored
+  // A single layer of nodes drains into the wall: it needs more charge than a sphere of 10 mm.
+  solver->SetStimulusStrength(2);
+  solver->SetTimeStep(0.5);
+  solver->SetEndTime(80);
+  solver->SetOutputInterval(10);
+  solver->UpdateTimeStep(80);
+  vtkUnstructuredGrid* out = solver->GetOutput();
+  ASSERT_GT(out->GetNumberOfPoints(), 0);
+  vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");
+  auto at = [&](double x, double y) { return act->GetComponent(out->FindPoint(x, y, 1), 0); };
+  EXPECT_LT(at(6, 0), 5.0); // the endocardial face: within the stimulus
+  EXPECT_NEAR(at(6, 0), at(6, 4), 0.5);
+  EXPECT_LT(at(6, 2), at(16, 2));
+  EXPECT_LT(at(16, 2), at(26, 2));
+  EXPECT_NEAR(at(16, 0), at(16, 4), 0.5); // a plane wave
+  EXPECT_DOUBLE_EQ(solver->GetActivatedFraction(), 1.0);
+}
+
 TEST(FitzHughNagumo, SameInputSameResult)
 {
   const int n[3] = { 20, 4, 2 };

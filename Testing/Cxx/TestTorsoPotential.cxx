@@ -296,6 +296,102 @@ TEST(TorsoPotential, DipoleInsensitiveToRefinement)
   }
 }
 
+TEST(TorsoPotential, CurrentSourceDipoleInASphereMatchesTheClosedForm)
+{
+  // A ball of radius R = 50 mm (a cube mapped radially onto it) of bulk conductivity 0.2 holds a
+  // "heart" ball of radius 10 mm (region 5: 0.15 extracellular + 0.05 intracellular) whose
+  // transmembrane potential is Vm = g z (g = 1 mV/mm: u = z / 100). The impressed current
+  // -sigma_i grad Vm is uniform over the heart: a dipole p = -sigma_i g V_heart along z, whose
+  // potential on the sphere's insulated surface is phi = 3 p cos(theta) / (4 pi sigma R^2).
+  const int n = 32;
+  const double R = 50.0, a = 10.0;
+  const int dims[3] = { n, n, n };
+  const double origin[3] = { -1, -1, -1 }, size[3] = { 2, 2, 2 };
+  auto mesh = amTest::BoxMesh(dims, origin, size);
+  vtkPoints* points = mesh->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    points->GetPoint(i, x);
+    const double inf = std::max({ std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
+    const double two = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    const double scale = two > 0 ? R * inf / two : 0.0;
+    points->SetPoint(i, x[0] * scale, x[1] * scale, x[2] * scale);
+  }
+  vtkDataArray* regions = mesh->GetCellData()->GetArray("Region");
+  double heartVolume = 0.0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const vtkIdType* ids;
+    vtkIdType npts;
+    mesh->GetCellPoints(c, npts, ids);
+    double centre[3] = { 0, 0, 0 }, p[4][3];
+    for (int k = 0; k < 4; ++k)
+    {
+      mesh->GetPoint(ids[k], p[k]);
+      for (int d = 0; d < 3; ++d)
+        centre[d] += 0.25 * p[k][d];
+    }
+    const bool heart = std::sqrt(centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2]) < a;
+    regions->SetComponent(c, 0, heart ? 5 : 1);
+    if (heart)
+    {
+      double e[3][3];
+      for (int k = 0; k < 3; ++k)
+        for (int d = 0; d < 3; ++d)
+          e[k][d] = p[k + 1][d] - p[0][d];
+      heartVolume += std::fabs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                       e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                       e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+        6.0;
+    }
+  }
+  auto heart = StaticHeart(mesh, [](const double* x) { return x[2] / 100.0; });
+  vtkNew<amTorsoPotential> torso;
+  torso->SetInputData(0, mesh);
+  torso->SetInputData(1, heart);
+  torso->SetCouplingToCurrentSource();
+  torso->RemoveAllRegionConductivities();
+  torso->SetConductivity(0.2);
+  torso->AddRegionConductivity(5, 0.15);
+  torso->SetIntracellularConductivity(0.05);
+  torso->RemoveAllElectrodes();
+  torso->AddElectrode(0, 0, R);
+  torso->AddElectrode(0, 0, -R);
+  torso->Update();
+  auto* body = vtkPolyData::SafeDownCast(torso->GetOutputDataObject(2));
+  ASSERT_NE(body, nullptr);
+  ASSERT_GT(body->GetNumberOfPoints(), 1000);
+  // The whole mesh is solved: output 0 holds the heart's cells too.
+  EXPECT_EQ(vtkUnstructuredGrid::SafeDownCast(torso->GetOutputDataObject(0))->GetNumberOfCells(),
+    mesh->GetNumberOfCells());
+  const double dipole = -0.05 * 1.0 * heartVolume;
+  const double amplitude = 3.0 * dipole / (4.0 * M_PI * 0.2 * R * R);
+  vtkDataArray* phi = body->GetPointData()->GetArray("Potential");
+  double error2 = 0.0, norm2 = 0.0, fit = 0.0, cos2 = 0.0;
+  for (vtkIdType i = 0; i < body->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    body->GetPoint(i, x);
+    const double c = x[2] / std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    const double expected = amplitude * c, got = phi->GetComponent(i, 0);
+    error2 += (got - expected) * (got - expected);
+    norm2 += expected * expected;
+    fit += got * c;
+    cos2 += c * c;
+  }
+  const double relative = std::sqrt(error2 / norm2), ratio = fit / cos2 / amplitude;
+  std::printf("dipole in a sphere: heart volume %.1f mm3, closed-form amplitude %.4f mV, fitted %.4f (ratio %.4f), "
+              "relative RMS error %.2f%%\n",
+    heartVolume, amplitude, fit / cos2, ratio, 100 * relative);
+  EXPECT_NEAR(ratio, 1.0, 0.02);
+  EXPECT_LT(relative, 0.02);
+  // The leads: the poles, against their mean.
+  auto* table = vtkTable::SafeDownCast(torso->GetOutputDataObject(1));
+  ASSERT_EQ(table->GetNumberOfColumns(), 3);
+  EXPECT_NEAR(table->GetValue(0, 1).ToDouble(), amplitude, 0.08 * std::fabs(amplitude));
+}
+
 TEST(TorsoPotential, TimeSeriesAndLeads)
 {
   auto mesh = NestedCubes(24, 24.0); // 2 mm elements, heart [-8, 8]^3

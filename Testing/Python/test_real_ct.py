@@ -94,5 +94,44 @@ class HeartOfRealCT(unittest.TestCase):
         self.assertTrue(np.all(vtk_to_numpy(grid.GetCellData().GetArray("Volume")) > 0))
 
 
+
+CHEST = os.path.join(SHARED, "lidc_chest_ct_vtkjs", "LIDC2.mha")
+
+
+@unittest.skipUnless(os.path.exists(CHEST), "shared chest CT absent: " + CHEST)
+class ChestCTToECG(unittest.TestCase):
+    """Examples/Pipelines/chest_ct.xml: the real chest CT (8-bit) through the one chain to an ECG."""
+
+    def test_chest_ct_to_ecg(self):
+        import numpy as np
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        out = os.path.join(TMP, "chest_ct")
+        cli = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh"), "run",
+               os.path.join(SOURCE, "Examples", "Pipelines", "chest_ct.xml"), "--set", "input=" + CHEST,
+               "--set", "endtime=300", "--output", out]
+        p = subprocess.run(cli, capture_output=True, text=True, timeout=1200)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        # The warnings say what the scan does not allow.
+        self.assertIn("split at the body's mid-plane", p.stderr)
+        self.assertIn("cannot be told from the tissue around it", p.stderr)
+        labels = reader(os.path.join(out, "chest_labels.nii.gz"))
+        labels.Update()
+        image = labels.GetOutput()
+        values, counts = np.unique(vtk_to_numpy(image.GetPointData().GetScalars()), return_counts=True)
+        volume = dict(zip(values.tolist(), (counts * np.prod(image.GetSpacing()) / 1000.0).tolist()))  # cm3
+        self.assertEqual(sorted(volume), [0, 1, 2, 3, 4, 5, 6, 7, 9, 10])
+        for lung in (3, 4):  # adult lungs hold litres
+            self.assertTrue(1000 < volume[lung] < 4000, volume)
+        self.assertTrue(100 < volume[5] < 600, volume)  # the myocardium, 10 mm around the pools
+        self.assertTrue(10 < volume[9] < 400, volume)  # spine (with the ribs joined to it)
+        with open(os.path.join(out, "chest_ecg.csv")) as f:
+            rows = [line.strip().split(",") for line in f]
+        self.assertEqual(rows[0], ["Time", "I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6"])
+        leads = np.array(rows[1:], dtype=float)
+        self.assertEqual(len(leads), 61)  # 0, 5, ..., 300 ms
+        self.assertTrue(np.all(np.isfinite(leads)))
+        self.assertGreater(np.abs(leads[:, 1:]).max(), 1.0)  # mV: the heart's activation shows on the body
+
+
 if __name__ == "__main__":
     unittest.main()
