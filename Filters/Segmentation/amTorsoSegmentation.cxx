@@ -28,7 +28,7 @@ amTorsoSegmentation::amTorsoSegmentation()
   : BodyGapClosing(0.0)
   , LungOpening(0.0)
   , MinimumComponentVolume(50.0)
-  , BloodPoolLabels{ amTorso::LeftVentricleBlood, amTorso::RightVentricleBlood }
+  , BloodPoolLabels{ amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood }
   , MaximumWallThickness(40.0)
   , WallThickness(10.0)
   , WallSmoothingSigma(2.0)
@@ -244,14 +244,14 @@ int amTorsoSegmentation::RequestData(
   amVoxel::HandOver(grid, labels);
   std::vector<bool> single(256, false);
   for (int l = 1; l < 255; ++l)
-    single[l] = l != amTorso::SoftTissue && l != amTorso::Fat && l != amTorso::Ribs;
+    single[l] = l != amThoraxPhantomModel::SoftTissue && l != amThoraxPhantomModel::Fat && l != amThoraxPhantomModel::Ribs;
   amVoxel::DropSmallComponents(grid, labels, minimumVoxels, single);
   this->UpdateProgress(0.9);
 
   std::vector<double> volume(256, 0.0);
   for (const auto l : labels)
     volume[l] += grid.VoxelVolume();
-  if (heart.PoolVoxels && volume[amTorso::Myocardium] == 0.0)
+  if (heart.PoolVoxels && volume[amThoraxPhantomModel::Myocardium] == 0.0)
     vtkWarningMacro("The myocardium is empty: nothing around the blood pools is soft tissue.");
   for (int l = 1; l < 255; ++l)
     if (organ[l] && volume[l] == 0.0)
@@ -264,14 +264,14 @@ int amTorsoSegmentation::RequestData(
   std::copy(labels.begin(), labels.end(), out->GetPointer(0));
   output->GetPointData()->SetScalars(out);
 
-  int top = amTorso::NumberOfLabels - 1;
+  int top = amThoraxPhantomModel::NumberOfLabels - 1;
   for (int l = 0; l < 255; ++l)
     if (volume[l] > 0)
       top = std::max(top, l);
   vtkNew<vtkStringArray> names;
   names->SetName("LabelNames");
   for (int l = 0; l <= top; ++l)
-    names->InsertNextValue(l < amTorso::NumberOfLabels ? amThoraxPhantomModel::LabelName(l) : "Organ");
+    names->InsertNextValue(l < amThoraxPhantomModel::NumberOfLabels ? amThoraxPhantomModel::LabelName(l) : "Organ");
   output->GetFieldData()->AddArray(names);
   vtkNew<vtkDoubleArray> volumes;
   volumes->SetName("LabelVolumes");

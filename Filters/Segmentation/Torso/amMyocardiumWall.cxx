@@ -78,7 +78,7 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const std::vec
   {
     const std::size_t w = box.Global(g, v);
     pools[v] = pool[labels[w]];
-    candidate[v] = labels[w] == SoftTissue || labels[w] == amVoxel::Pending;
+    candidate[v] = labels[w] == Phantom::SoftTissue || labels[w] == amVoxel::Pending;
     soft[v] = classes[w] == SoftClass;
     value[v] = hu[w];
   }
@@ -153,7 +153,7 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const std::vec
   for (std::size_t v = 0; v < n; ++v)
     if ((heart[v] || (filled[v] && candidate[v])) && !pools[v])
     {
-      labels[box.Global(g, v)] = Myocardium;
+      labels[box.Global(g, v)] = Phantom::Myocardium;
       ++report.Voxels;
     }
   return report;

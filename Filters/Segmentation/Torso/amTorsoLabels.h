@@ -9,6 +9,7 @@
 #ifndef amTorsoLabels_h
 #define amTorsoLabels_h
 
+#include "amThoraxPhantomModel.h"
 #include "amVoxelGrid.h"
 
 #include <cstdint>
@@ -16,21 +17,8 @@
 
 namespace amTorso
 {
-enum Label : std::uint8_t
-{
-  Background = 0,
-  SoftTissue = 1,
-  Fat = 2,
-  RightLung = 3,
-  LeftLung = 4,
-  Myocardium = 5,
-  LeftVentricleBlood = 6,
-  RightVentricleBlood = 7,
-  Aorta = 8,
-  Spine = 9,
-  Ribs = 10,
-  NumberOfLabels = 11
-};
+/// The output labels are the phantom's (amThoraxPhantomModel::Label).
+using Phantom = amThoraxPhantomModel;
 
 /// The classes of amIntensityClassifier's CT defaults.
 enum Class : std::uint8_t
@@ -71,7 +59,7 @@ TissueReport Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
 
 struct WallParameters
 {
-  std::vector<int> PoolLabels{ LeftVentricleBlood, RightVentricleBlood };
+  std::vector<int> PoolLabels{ Phantom::LeftVentricleBlood, Phantom::RightVentricleBlood };
   double MaximumThickness = 40.0; // mm from the pools
   double Thickness = 10.0;        // mm, where intensity cannot tell the wall
   double Sigma = 2.0;             // mm

@@ -75,12 +75,12 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   TissueReport report;
   const std::size_t n = classes.size();
   const amVoxelMask exterior = Exterior(g, classes, p.BodyGap);
-  labels.assign(n, SoftTissue);
+  labels.assign(n, Phantom::SoftTissue);
   double bodyX = 0.0;
   for (std::size_t v = 0; v < n; ++v)
     if (exterior[v])
     {
-      labels[v] = Background;
+      labels[v] = Phantom::Background;
       ++report.ExteriorVoxels;
     }
     else
@@ -96,7 +96,7 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   for (std::size_t v = 0; v < n; ++v)
     if (mask[v])
     {
-      labels[v] = fat[v] ? Fat : amVoxel::Pending;
+      labels[v] = fat[v] ? Phantom::Fat : amVoxel::Pending;
       report.FatPartialVolume += !fat[v];
     }
 
@@ -143,17 +143,17 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     if (c < 0)
     {
       if (mask[v])
-        labels[v] = p.LeftoverAirIsFat ? Fat : amVoxel::Pending;
+        labels[v] = p.LeftoverAirIsFat ? Phantom::Fat : amVoxel::Pending;
       continue;
     }
     if (c == first && second < 0)
-      labels[v] = WorldX(g, v, worldX) > bodyX ? LeftLung : RightLung;
+      labels[v] = WorldX(g, v, worldX) > bodyX ? Phantom::LeftLung : Phantom::RightLung;
     else if (c == first)
-      labels[v] = firstIsLeft ? LeftLung : RightLung;
+      labels[v] = firstIsLeft ? Phantom::LeftLung : Phantom::RightLung;
     else if (c == second)
-      labels[v] = firstIsLeft ? RightLung : LeftLung;
+      labels[v] = firstIsLeft ? Phantom::RightLung : Phantom::LeftLung;
     else
-      labels[v] = p.LeftoverAirIsFat ? Fat : amVoxel::Pending;
+      labels[v] = p.LeftoverAirIsFat ? Phantom::Fat : amVoxel::Pending;
   }
 
   // Bone: the largest piece is the spine, the others ribs.
@@ -171,7 +171,7 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     if (sizes[c] < minimumVoxels)
       labels[v] = amVoxel::Pending;
     else
-      labels[v] = c == bones[0] ? Spine : Ribs;
+      labels[v] = c == bones[0] ? Phantom::Spine : Phantom::Ribs;
   }
   return report;
 }
