@@ -132,13 +132,10 @@ def _mpi():
 
 def main(args):
     from . import pipeline as pl
-    given = {}
-    for item in args.set or []:
-        if "=" not in item:
-            sys.stderr.write("anatomesh: error: --set takes NAME=VALUE, got %r\n" % item)
-            return 2
-        k, v = item.split("=", 1)
-        given[k] = v
+    from .cli import variables_of
+    given = variables_of(args.set)
+    if given is None:
+        return 2
     if args.jobs < 1:
         sys.stderr.write("anatomesh: error: --jobs must be at least 1\n")
         return 2

@@ -137,15 +137,23 @@ def _version():
     return "anatomesh %s (VTK %s)" % (__version__, vtkVersion.GetVTKVersion())
 
 
-def _run(args):
-    from . import pipeline as pl
+def variables_of(items):
+    """The --set NAME=VALUE items as a dict, or None (with a message) when one has no '='."""
     variables = {}
-    for item in args.set or []:
+    for item in items or []:
         if "=" not in item:
             sys.stderr.write("anatomesh: error: --set takes NAME=VALUE, got %r\n" % item)
-            return 2
+            return None
         k, v = item.split("=", 1)
         variables[k] = v
+    return variables
+
+
+def _run(args):
+    from . import pipeline as pl
+    variables = variables_of(args.set)
+    if variables is None:
+        return 2
     if args.output:
         variables["output"] = args.output
     try:
