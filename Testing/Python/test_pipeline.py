@@ -45,6 +45,9 @@ class ThoraxJob(unittest.TestCase):
         self.assertEqual(len(rows), 102)  # header + 0, 5, ..., 500 ms
         self.assertTrue(rows[0].startswith("Time,I,II,III"), rows[0])
         self.assertIn("phantom", stderr)  # progress lines
+        # Warnings in a log: one plain line naming the filter, no terminal colour codes.
+        self.assertIn("anatomesh: warning: surface: ", stderr)
+        self.assertNotIn("\x1b[", stderr)
         import anatomesh
         from vtkmodules.util.numpy_support import vtk_to_numpy
 

@@ -217,6 +217,12 @@ def main(argv=None):
     flt = sub.add_parser("filters", help="list the filter catalogue")
     flt.add_argument("--verbose", "-v", action="store_true", help="show properties")
     args = parser.parse_args(argv)
+    if not sys.stderr.isatty():
+        # In a log, VTK's own messages (from filters inside filters) as plain text, without the
+        # terminal colour codes of its logger.
+        from vtkmodules.vtkCommonCore import vtkLogger, vtkOutputWindow
+        vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
+        vtkOutputWindow.GetInstance().SetDisplayModeToAlwaysStdErr()
     if args.command == "run":
         return _run(args)
     if args.command == "batch":

@@ -419,6 +419,15 @@ class _Watcher:
 
         error_cb.CallDataType = "string0"
         algorithm.AddObserver("ErrorEvent", error_cb)
+
+        def warning_cb(obj, event, data=None):
+            # One plain line naming the filter (VTK would print its file, line and object address).
+            text = (str(data) if data is not None else "").strip().splitlines()
+            body = re.sub(r"^\w+ \(0x[0-9a-f]+\): ", "", text[-1] if text else "")
+            sys.stderr.write("anatomesh: warning: %s: %s\n" % (name, body.strip()))
+
+        warning_cb.CallDataType = "string0"
+        algorithm.AddObserver("WarningEvent", warning_cb)
         # The executive reports wrong connections (a port that does not exist, a data type the
         # filter does not take): a failure of this filter too.
         algorithm.GetExecutive().AddObserver("ErrorEvent", error_cb)
