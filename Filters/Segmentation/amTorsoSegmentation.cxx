@@ -235,6 +235,9 @@ int amTorsoSegmentation::RequestData(
                                                << heart.WallLevel
                                                << " HU): a scan without contrast, or a seed outside the blood pool; "
                                                   "the myocardium around them is unreliable.");
+  if (heart.PoolsAtBorder)
+    vtkWarningMacro("A blood pool reaches the border of the image: the scan may cut the heart, and the myocardium "
+                    "stops there.");
   if (heart.PoolVoxels && !heart.Contrast)
     vtkWarningMacro("The myocardium cannot be told from the tissue around it by intensity (wall "
       << heart.WallLevel << " HU, surroundings " << heart.SurroundingLevel << " HU, noise " << heart.Noise
@@ -244,7 +247,8 @@ int amTorsoSegmentation::RequestData(
   amVoxel::HandOver(grid, labels);
   std::vector<bool> single(256, false);
   for (int l = 1; l < 255; ++l)
-    single[l] = l != amThoraxPhantomModel::SoftTissue && l != amThoraxPhantomModel::Fat && l != amThoraxPhantomModel::Ribs;
+    single[l] =
+      l != amThoraxPhantomModel::SoftTissue && l != amThoraxPhantomModel::Fat && l != amThoraxPhantomModel::Ribs;
   amVoxel::DropSmallComponents(grid, labels, minimumVoxels, single);
   this->UpdateProgress(0.9);
 

@@ -43,8 +43,8 @@
  *    smaller than MinimumComponentVolume are handed to their neighbours the same way, and every
  *    organ but soft tissue, fat and ribs keeps only its largest component.
  * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split, no
- * blood pools (no myocardium), pools no brighter than the wall, an empty myocardium, a label of
- * input 1 lost.
+ * blood pools (no myocardium), pools no brighter than the wall, a pool at the image's border (a
+ * scan that cuts the heart), an empty myocardium, a label of input 1 lost.
  * Errors: an empty or non-scalar CT, a non-finite voxel, input 1 on another grid or not a label map.
  *
  * @sa amIntensityClassifier amSnakeSegmentation amMorphologyCleaning amLabelOverlap

@@ -191,6 +191,25 @@ TEST(TorsoSegmentation, WarningsNameTheMissingOrgan)
   for (const auto& w : errors->Warnings)
     named = named || w.find("are not brighter than the tissue around them") != std::string::npos;
   EXPECT_TRUE(named) << (errors->Warnings.empty() ? "no warning" : errors->Warnings[0]);
+
+  // A scan cropped through the heart: the blood pool reaches the border.
+  vtkNew<vtkImageData> cropped;
+  cropped->DeepCopy(t.Organs);
+  labels = cropped->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < cropped->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    cropped->GetPoint(i, x);
+    if (x[2] < -56 && std::hypot(x[0], x[1]) < 10)
+      labels->SetComponent(i, 0, 6); // the pool runs out through the bottom slice
+  }
+  torso->SetOrganData(cropped);
+  errors->Warnings.clear();
+  torso->Update();
+  named = false;
+  for (const auto& w : errors->Warnings)
+    named = named || w.find("may cut the heart") != std::string::npos;
+  EXPECT_TRUE(named) << (errors->Warnings.empty() ? "no warning" : errors->Warnings[0]);
 }
 
 TEST(TorsoSegmentation, BadInputGivesClearErrors)

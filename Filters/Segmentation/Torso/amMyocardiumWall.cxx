@@ -53,6 +53,7 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const std::vec
       {
         box.Lo[a] = std::min(box.Lo[a], c[a]);
         box.Hi[a] = std::max(box.Hi[a], c[a]);
+        report.PoolsAtBorder = report.PoolsAtBorder || c[a] == 0 || c[a] == g.N[a] - 1;
       }
       ++report.PoolVoxels;
     }

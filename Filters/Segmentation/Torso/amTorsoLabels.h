@@ -70,6 +70,7 @@ struct WallReport
 {
   std::size_t PoolVoxels = 0;
   double PoolLevel = 0.0;        // median intensity of the pools (HU)
+  bool PoolsAtBorder = false;    // a pool reaches the image's border: the scan may cut the heart
   double WallLevel = 0.0;        // median smoothed intensity 3-6 mm from the pools
   double SurroundingLevel = 0.0; // median beyond the maximum thickness
   double Noise = 0.0;            // robust spread of the smoothed wall intensity
