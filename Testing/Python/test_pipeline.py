@@ -33,7 +33,7 @@ class ThoraxJob(unittest.TestCase):
         out = os.path.join(TMP, "thorax_job")
         shutil.rmtree(out, ignore_errors=True)
         code, stdout, stderr = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"),
-                                   "--output", out, "--set", "spacing=4", "--set", "tolerance=1")
+                                   "--output", out, "--set", "spacing=4", "--set", "tolerance=1", "--set", "size=8")
         self.assertEqual(code, 0, stderr)
         # 10 files of the meshing chain; the simulation: heart and body-surface time series (101 frames + .pvd
         # each) and the ECG table.
@@ -103,6 +103,43 @@ class ThoraxJob(unittest.TestCase):
             self.assertEqual(f.read(30).split("\n")[:2], ["$MeshFormat", "4.1 0 8"])
         leftovers = [f for f in os.listdir(out) if ".tmp" in f]
         self.assertEqual(leftovers, [])
+
+    def test_meshio_reads_every_mesh_output(self):
+        try:
+            import meshio
+        except ImportError:
+            self.skipTest("meshio is not installed (python3-meshio)")
+        path = pipeline_file("interop.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="8 8 8"/>
+              </Filter>
+              <Filter name="surface" type="LabelSurface"><Input from="p" port="Labels"/></Filter>
+              <Filter name="tets" type="Tetrahedralize"><Input from="surface"/></Filter>
+              <Output from="tets" port="Mesh" file="${output}/mesh.vtu"/>
+              <Filter name="medit" type="MeditWriter">
+                <Input from="tets" port="Mesh"/>
+                <Property name="FileName" value="${output}/mesh.mesh"/>
+              </Filter>
+              <Filter name="gmsh" type="GmshWriter">
+                <Input from="tets" port="Mesh"/>
+                <Property name="FileName" value="${output}/mesh.msh"/>
+              </Filter>
+            </AnatomeshPipeline>""")
+        out = os.path.join(TMP, "interop_out")
+        code, _, stderr = run("run", path, "--output", out, "--quiet")
+        self.assertEqual(code, 0, stderr)
+        counts = {}
+        for name in ("mesh.vtu", "mesh.mesh", "mesh.msh"):
+            mesh = meshio.read(os.path.join(out, name))
+            counts[name] = sum(len(block.data) for block in mesh.cells if block.type == "tetra")
+        self.assertGreater(counts["mesh.vtu"], 1000)
+        self.assertEqual(len(set(counts.values())), 1, counts)  # the same tetrahedra in every format
+        # The .vtu's provenance: UTF-8 text as bytes, one line per step.
+        vtu = meshio.read(os.path.join(out, "mesh.vtu"))
+        provenance = bytes(vtu.field_data["Provenance"].astype(np.uint8)).decode("utf-8")
+        self.assertIn("Tetrahedralize", provenance)
+        self.assertIn("Region", vtu.cell_data)
 
     def test_vtk_xml_output_and_filters_listing(self):
         path = pipeline_file("vtkxml.xml", """

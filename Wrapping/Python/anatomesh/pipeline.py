@@ -506,6 +506,38 @@ def write_time_series(algorithm, port, path, error=lambda: None):
     return written
 
 
+def _plain_field_data(data):
+    """A shallow copy whose field data other readers take too (meshio reads no String arrays and no empty
+    ones): text arrays become UTF-8 bytes (UInt8, one line per value; bytes(array).decode() gives the text),
+    empty arrays are left out."""
+    from vtkmodules.vtkCommonCore import vtkStringArray, vtkUnsignedCharArray
+    fields = data.GetFieldData()
+    if fields is None:
+        return data
+    if all(fields.GetAbstractArray(i).GetNumberOfTuples() > 0 and not fields.GetAbstractArray(i).IsA("vtkStringArray")
+           for i in range(fields.GetNumberOfArrays())):
+        return data
+    copy = data.NewInstance()
+    copy.ShallowCopy(data)
+    plain = copy.GetFieldData().NewInstance()
+    for i in range(fields.GetNumberOfArrays()):
+        array = fields.GetAbstractArray(i)
+        if array.GetNumberOfTuples() == 0:
+            continue
+        if isinstance(array, vtkStringArray):
+            text = "\n".join(array.GetValue(k) for k in range(array.GetNumberOfValues())).encode("utf-8")
+            import numpy as np
+            from vtkmodules.util.numpy_support import numpy_to_vtk
+            encoded = numpy_to_vtk(np.frombuffer(text, dtype=np.uint8), deep=1,
+                                   array_type=vtkUnsignedCharArray().GetDataType())
+            encoded.SetName(array.GetName())
+            plain.AddArray(encoded)
+        else:
+            plain.AddArray(array)
+    copy.SetFieldData(plain)
+    return copy
+
+
 def write_vtk_xml(data, path):
     """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm), or a table to .csv, atomically."""
     from vtkmodules.vtkIOXML import (vtkXMLImageDataWriter, vtkXMLPolyDataWriter,
@@ -519,6 +551,8 @@ def write_vtk_xml(data, path):
     if ext not in writers:
         raise PipelineError("%s: unknown output extension %r (use %s)" % (path, ext, ", ".join(sorted(writers))))
     writer = writers[ext]()
+    if not data.IsA("vtkMultiBlockDataSet"):
+        data = _plain_field_data(data)
     folder, base = os.path.split(os.path.abspath(path))
     tmp = os.path.join(folder, ".%s.tmp%d%s" % (os.path.splitext(base)[0], os.getpid(), ext))
     writer.SetFileName(tmp)
