@@ -1,6 +1,7 @@
 #include "amImageWriter.h"
 
 #include "amAtomicFile.h"
+#include "amLabelTable.h"
 #include "amITKBridge.h"
 #include "amNiftiCheck.h"
 
@@ -184,6 +185,11 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
   if (!file.Commit(why))
   {
     vtkErrorMacro("Cannot write '" << target << "': " << why);
+    return 0;
+  }
+  if (!amLabelTable::Write(input, target, why))
+  {
+    vtkErrorMacro("Wrote '" << target << "', but " << why << ".");
     return 0;
   }
   this->LastWriteOk = true;

@@ -12,6 +12,8 @@
 #include "vtkPointData.h"
 
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -98,4 +100,43 @@ TEST(ImageWriter, FailuresLeaveNoFile)
   writer->SetFileName(amTest::TempPath("empty.nii").c_str());
   EXPECT_EQ(writer->Write(), 0);
   EXPECT_TRUE(errors->ErrorContains("empty")) << errors->AllErrors();
+}
+
+TEST(ImageWriter, LabelNamesGoToATableBeside)
+{
+  // The phantom's label map has LabelNames: its NIfTI file gets "<name>.ctbl" beside it, one line
+  // per label with a fixed colour; a CT (no names) gets none.
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(8, 8, 8);
+  src->Update();
+  const std::string path = amTest::TempPath("labels_with_names.nii.gz");
+  const std::string table = amTest::TempPath("labels_with_names.ctbl");
+  std::remove(table.c_str());
+  vtkNew<amImageWriter> writer;
+  writer->SetInputConnection(src->GetOutputPort(1));
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  FILE* f = std::fopen(table.c_str(), "r");
+  ASSERT_NE(f, nullptr);
+  char line[256];
+  std::vector<std::string> lines;
+  while (std::fgets(line, sizeof(line), f))
+    lines.emplace_back(line);
+  std::fclose(f);
+  ASSERT_EQ(lines.size(), 12u); // a comment, then labels 0..10
+  EXPECT_EQ(lines[1], "0 Background 0 0 0 0\n");
+  int value = -1, r = -1, g = -1, b = -1, a = -1;
+  char name[64];
+  ASSERT_EQ(std::sscanf(lines[6].c_str(), "%d %63s %d %d %d %d", &value, name, &r, &g, &b, &a), 6);
+  EXPECT_EQ(value, 5);
+  EXPECT_STREQ(name, "Myocardium");
+  EXPECT_EQ(a, 255);
+  EXPECT_GT(r + g + b, 0);
+
+  const std::string ct = amTest::TempPath("ct_without_names.nii.gz");
+  std::remove(amTest::TempPath("ct_without_names.ctbl").c_str());
+  writer->SetInputConnection(src->GetOutputPort(0));
+  writer->SetFileName(ct.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  EXPECT_FALSE(amTest::Exists(amTest::TempPath("ct_without_names.ctbl")));
 }
