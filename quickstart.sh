@@ -19,7 +19,7 @@ packages=(
   paraview paraview-dev python3-paraview libopenmpi-dev
   libinsighttoolkit5-dev libcgal-dev libtet1.5-dev libeigen3-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-numpy python3-matplotlib python3-mpi4py openmpi-bin python3-meshio xvfb xauth
+  python3 python3-numpy python3-matplotlib python3-mpi4py openmpi-bin python3-meshio python3-nibabel xvfb xauth
 )
 
 # ParaView 5.11's Python package ships its own VTK 9.2 'vtkmodules' and conflicts with python3-vtk9.

@@ -64,6 +64,24 @@ class ThoraxJob(unittest.TestCase):
         # the Dice table that scores it is written and printed.
         labels = read("thorax_labels.nii.gz")
         self.assertEqual(sorted(set(labels.tolist())), list(range(11)))
+        # Names and colours beside it; nibabel reads the same voxels at the same place (RAS = LPS with x, y negated).
+        with open(os.path.join(out, "thorax_labels.ctbl")) as f:
+            table = [line.split() for line in f if not line.startswith("#")]
+        self.assertEqual([row[:2] for row in table[5:7]], [["5", "Myocardium"], ["6", "LeftVentricleBlood"]])
+        try:
+            import nibabel
+        except ImportError:
+            nibabel = None
+        if nibabel is not None:
+            image = nibabel.load(os.path.join(out, "thorax_labels.nii.gz"))
+            voxels = np.asarray(image.dataobj)
+            self.assertEqual(voxels.shape, (80, 60, 53))
+            np.testing.assert_array_equal(voxels.transpose(2, 1, 0).ravel(), labels)
+            reader = anatomesh.amImageReader()
+            reader.SetFileName(os.path.join(out, "thorax_labels.nii.gz"))
+            reader.Update()
+            origin = reader.GetOutput().GetOrigin()
+            np.testing.assert_allclose(image.affine[:3, 3], [-origin[0], -origin[1], origin[2]], atol=1e-4)
         for label in range(1, 11):
             a, b = labels == label, truth == label
             self.assertGreater(2.0 * (a & b).sum() / (a.sum() + b.sum()), 0.8, label)
