@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <csignal>
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,6 +19,34 @@ std::string DirectoryOf(const std::string& path)
   if (slash == std::string::npos)
     return ".";
   return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+// Removes ".<stem>.tmp<pid>[_<n>]<ext>" files of processes that no longer run: what a killed
+// writer of the same target left.
+void RemoveStaleTemporaries(const std::string& dir, const std::string& stem, const std::string& ext)
+{
+  DIR* d = opendir(dir.c_str());
+  if (!d)
+    return;
+  const std::string prefix = "." + stem + ".tmp";
+  while (const dirent* e = readdir(d))
+  {
+    const std::string name = e->d_name;
+    if (name.size() <= prefix.size() + ext.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+      continue;
+    const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - ext.size());
+    const std::string digits = middle.substr(0, middle.find('_'));
+    if (digits.empty() || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit))
+      continue;
+    const std::string rest = middle.substr(digits.size());
+    if (!rest.empty() && (rest[0] != '_' || !std::all_of(rest.begin() + 1, rest.end(), ::isdigit)))
+      continue;
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH)
+      std::remove((dir + "/" + name).c_str());
+  }
+  closedir(d);
 }
 }
 
@@ -47,6 +77,7 @@ amAtomicFile::amAtomicFile(const std::string& target)
   const std::string name = slash == std::string::npos ? target : target.substr(slash + 1);
   const std::string ext = Extension(target);
   const std::string stem = name.substr(0, name.size() - std::min(name.size(), ext.size()));
+  RemoveStaleTemporaries(dir, stem, ext);
   this->Temporary = (dir == "." && slash == std::string::npos ? std::string() : dir + "/") + "." + stem + ".tmp" +
     std::to_string(::getpid()) + "_" + std::to_string(counter++) + ext;
 }

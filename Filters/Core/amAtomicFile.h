@@ -5,7 +5,9 @@
  * The content goes to a temporary path in the same folder (same extension, so format-sniffing
  * libraries such as ITK still pick the right codec); Commit() renames it over the target, and the
  * destructor removes the temporary when Commit() was never reached (an error, an exception).
- * Writers therefore never leave a half-written file behind.
+ * Writers therefore never leave a half-written file behind. A process killed mid-write cannot
+ * run its destructor: its temporary stays until the next writer of the same target, which removes
+ * the temporaries of processes that no longer run.
  */
 #ifndef amAtomicFile_h
 #define amAtomicFile_h

@@ -3,6 +3,9 @@
 
 #include <cstdio>
 #include <fstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 
 TEST(AtomicFile, Extensions)
 {
@@ -43,4 +46,29 @@ TEST(AtomicFile, RefusesMissingFolder)
   std::string why;
   EXPECT_FALSE(f.CanWrite(why));
   EXPECT_NE(why.find("does not exist"), std::string::npos);
+}
+
+TEST(AtomicFile, TheNextWriterRemovesTheTemporariesOfKilledRuns)
+{
+  // A run killed mid-write leaves ".<stem>.tmp<pid>_<n><ext>"; the next writer of the same target
+  // removes it when that process is gone, and leaves those of running processes and other targets.
+  const pid_t dead = fork();
+  if (dead == 0)
+    _exit(0);
+  ASSERT_GT(dead, 0);
+  waitpid(dead, nullptr, 0); // reaped: the PID no longer runs
+  const std::string target = amTest::TempPath("stale.nii.gz");
+  const std::string stale = amTest::TempPath(".stale.tmp" + std::to_string(dead) + "_0.nii.gz");
+  const std::string live = amTest::TempPath(".stale.tmp1_0.nii.gz"); // PID 1 always runs
+  const std::string other = amTest::TempPath(".other.tmp" + std::to_string(dead) + "_0.nii.gz");
+  for (const auto& path : { stale, live, other })
+    std::ofstream(path) << "half";
+  {
+    amAtomicFile f(target);
+  }
+  EXPECT_FALSE(amTest::Exists(stale));
+  EXPECT_TRUE(amTest::Exists(live));
+  EXPECT_TRUE(amTest::Exists(other));
+  std::remove(live.c_str());
+  std::remove(other.c_str());
 }

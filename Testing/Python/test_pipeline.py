@@ -169,9 +169,17 @@ class ThoraxJob(unittest.TestCase):
               <Output from="p" port="Labels" file="${output}/labels.vti"/>
             </AnatomeshPipeline>""")
         out = os.path.join(TMP, "vtkxml_out")
+        # What a killed run left: a temporary of a process that is gone, which this run removes.
+        os.makedirs(out, exist_ok=True)
+        gone = subprocess.Popen([sys.executable, "-c", "pass"])
+        gone.wait()
+        stale = os.path.join(out, ".labels.tmp%d.vti" % gone.pid)
+        with open(stale, "w") as f:
+            f.write("half")
         code, _, stderr = run("run", path, "--output", out, "--quiet")
         self.assertEqual(code, 0, stderr)
         self.assertTrue(os.path.getsize(os.path.join(out, "labels.vti")) > 0)
+        self.assertFalse(os.path.exists(stale))
         code, stdout, _ = run("filters")
         self.assertEqual(code, 0)
         self.assertIn("ThoraxPhantomSource", stdout)

@@ -454,7 +454,7 @@ def _write_csv(table, path):
     if table is None or not table.IsA("vtkTable"):
         raise PipelineError("%s: .csv takes a table, got %s" % (path, table.GetClassName() if table else "nothing"))
     folder, base = os.path.split(os.path.abspath(path))
-    tmp = os.path.join(folder, ".%s.tmp%d.csv" % (os.path.splitext(base)[0], os.getpid()))
+    tmp = temporary_path(folder, os.path.splitext(base)[0], ".csv")
     columns = [table.GetColumn(c) for c in range(table.GetNumberOfColumns())]
     try:
         with open(tmp, "w") as f:
@@ -498,7 +498,7 @@ def write_time_series(algorithm, port, path, error=lambda: None):
         entries.append('    <DataSet timestep="%r" part="0" file="%s"/>' % (0.0 if t is None else t, name))
     text = ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n'
             + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n")
-    tmp = os.path.join(folder, ".%s.tmp%d.pvd" % (stem, os.getpid()))
+    tmp = temporary_path(folder, stem, ".pvd")
     with open(tmp, "w") as f:
         f.write(text)
     os.replace(tmp, path)
@@ -538,6 +538,34 @@ def _plain_field_data(data):
     return copy
 
 
+def temporary_path(folder, stem, ext):
+    """A temporary file name beside the target (".STEM.tmpPID EXT"), after removing those a killed run of
+    another process left for the same target (their process is gone)."""
+    pattern = re.compile(r"^\.%s\.tmp(\d+)(_\d+)?%s$" % (re.escape(stem), re.escape(ext)))
+    try:
+        names = os.listdir(folder or ".")
+    except OSError:
+        names = []
+    for name in names:
+        m = pattern.match(name)
+        if m and int(m.group(1)) != os.getpid() and not _alive(int(m.group(1))):
+            try:
+                os.remove(os.path.join(folder, name))
+            except OSError:
+                pass
+    return os.path.join(folder, ".%s.tmp%d%s" % (stem, os.getpid(), ext))
+
+
+def _alive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
 def write_vtk_xml(data, path):
     """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm), or a table to .csv, atomically."""
     from vtkmodules.vtkIOXML import (vtkXMLImageDataWriter, vtkXMLPolyDataWriter,
@@ -554,7 +582,7 @@ def write_vtk_xml(data, path):
     if not data.IsA("vtkMultiBlockDataSet"):
         data = _plain_field_data(data)
     folder, base = os.path.split(os.path.abspath(path))
-    tmp = os.path.join(folder, ".%s.tmp%d%s" % (os.path.splitext(base)[0], os.getpid(), ext))
+    tmp = temporary_path(folder, os.path.splitext(base)[0], ext)
     writer.SetFileName(tmp)
     writer.SetInputData(data)
     # Inline base64 ("binary"), not appended: Debian 12's expat (2.5.0+deb12u5, with the backported
