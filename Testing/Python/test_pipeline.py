@@ -11,7 +11,7 @@ import unittest
 
 import numpy as np
 
-SOURCE = os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+SOURCE = os.path.abspath(os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
 TMP = os.environ.get("ANATOMESH_TEST_TMP", tempfile.gettempdir())
 CLI = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh")]
 
@@ -121,6 +121,26 @@ class ThoraxJob(unittest.TestCase):
             self.assertEqual(f.read(30).split("\n")[:2], ["$MeshFormat", "4.1 0 8"])
         leftovers = [f for f in os.listdir(out) if ".tmp" in f]
         self.assertEqual(leftovers, [])
+
+    def test_defaults_can_name_files_beside_the_pipeline(self):
+        folder = os.path.join(TMP, "beside_pipeline")
+        shutil.rmtree(folder, ignore_errors=True)
+        os.makedirs(folder)
+        path = os.path.join(folder, "beside.xml")
+        with open(path, "w") as f:
+            f.write(textwrap.dedent("""
+                <AnatomeshPipeline version="1">
+                  <Variable name="here" default="${pipeline_dir}/results"/>
+                  <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+                  <Filter name="w" type="ImageWriter">
+                    <Input from="p" port="Labels"/>
+                    <Property name="FileName" value="${here}/labels.nii.gz"/>
+                  </Filter>
+                </AnatomeshPipeline>""").lstrip())
+        p = subprocess.run(CLI + ["run", path, "--quiet", "--output", os.path.join(folder, "out")],
+                           capture_output=True, text=True, timeout=600, cwd=tempfile.gettempdir())
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertTrue(os.path.exists(os.path.join(folder, "results", "labels.nii.gz")))
 
     def test_meshio_reads_every_mesh_output(self):
         try:

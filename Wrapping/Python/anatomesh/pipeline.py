@@ -118,13 +118,19 @@ class Pipeline:
             raise self._error(root.line, "unsupported pipeline format version %r (this Anatomesh reads %s)"
                               % (version, FORMAT_VERSION))
         # "output" always exists (the command line's --output); a pipeline may give it a default.
+        # "pipeline_dir" is the pipeline file's folder, so defaults can name files beside it whatever
+        # the current folder ("${pipeline_dir}/data/ct.nii.gz"); defaults may use the variables above them.
+        self.variables["pipeline_dir"] = os.path.dirname(os.path.abspath(self.path))
         self.variables["output"] = self._given.get("output", "out")
         for node in root.children:
             if node.tag == "Variable":
                 name = node.attrs.get("name")
                 if not name or not re.match(r"^[A-Za-z_][A-Za-z0-9_]*$", name):
                     raise self._error(node.line, "a <Variable> needs a name made of letters, digits and _")
-                self.variables[name] = self._given.get(name, node.attrs.get("default", ""))
+                if name in self._given:
+                    self.variables[name] = self._given[name]
+                else:
+                    self.variables[name] = self._expand(node.attrs.get("default", ""), node.line)
         unknown = set(self._given) - set(self.variables)
         if unknown:
             raise UndeclaredVariableError("%s: --set names variables the pipeline does not declare: %s (declared: %s)" % (
