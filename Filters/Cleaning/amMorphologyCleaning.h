@@ -3,7 +3,11 @@
  * @brief   Cleans a label map: per-label morphology in millimetres, small-component removal,
  *          hole filling, largest component, label-preserving Gaussian regularisation.
  *
- * The paper's cleaning stage. For each processed label (AddLabel; all non-zero labels when none
+ * The paper's cleaning stage. First, with ModeFilterRadius > 0, ModeFilterPasses of a mode
+ * (majority) filter: every voxel takes the most frequent label of its (2r+1)^3 neighbourhood (its
+ * own on a tie), which removes the salt and pepper of a noisy intensity classification (it also
+ * rounds a region's edges and corners, and parts thinner than the neighbourhood go); the voxels it
+ * changed are field data "ModeFilterChanged". Then, for each processed label (AddLabel; all non-zero labels when none
  * is given), in increasing label order, on that label's own mask:
  * 1. Operation (None, Erode, Dilate, Open, Close) with a ball of Radius millimetres (an
  *    ellipsoid in voxels when the spacing is anisotropic);
@@ -74,6 +78,14 @@ public:
   ///@}
 
   ///@{
+  /// Mode filter: neighbourhood radius in voxels (default 0: off) and passes (default 1).
+  vtkSetClampMacro(ModeFilterRadius, int, 0, 5);
+  vtkGetMacro(ModeFilterRadius, int);
+  vtkSetClampMacro(ModeFilterPasses, int, 1, 100);
+  vtkGetMacro(ModeFilterPasses, int);
+  ///@}
+
+  ///@{
   /// Label-preserving Gaussian regularisation, mm (default 0: off).
   vtkSetClampMacro(SmoothingSigma, double, 0.0, 50.0);
   vtkGetMacro(SmoothingSigma, double);
@@ -94,6 +106,8 @@ protected:
   bool KeepLargestComponent;
   bool FillHoles;
   double SmoothingSigma;
+  int ModeFilterRadius;
+  int ModeFilterPasses;
   std::vector<int> Labels;
 
 private:
