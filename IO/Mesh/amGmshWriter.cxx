@@ -6,9 +6,11 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(amGmshWriter);
@@ -115,8 +118,16 @@ int amGmshWriter::WriteData(vtkDataObject* data)
     out.precision(17);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
     out << "$PhysicalNames\n" << byRegion.size() << "\n";
+    // The organ's name where the mesh carries its label map's "LabelNames" (indexed by label).
+    auto* names = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("LabelNames"));
     for (const auto& kv : byRegion)
-      out << "3 " << kv.first << " \"Region " << kv.first << "\"\n";
+    {
+      std::string name = "Region " + std::to_string(kv.first);
+      if (names && kv.first < names->GetNumberOfValues() && !names->GetValue(kv.first).empty())
+        name = names->GetValue(kv.first);
+      name.erase(std::remove(name.begin(), name.end(), '"'), name.end());
+      out << "3 " << kv.first << " \"" << name << "\"\n";
+    }
     out << "$EndPhysicalNames\n";
     // One volume entity per region, tagged like its physical group; no lower-dimensional entities.
     out << "$Entities\n0 0 0 " << byRegion.size() << "\n";

@@ -6,7 +6,8 @@
  * Input: a vtkUnstructuredGrid of tetrahedra (e.g. Tetrahedralize or Label Map Tetrahedralize)
  * with the cell-data array RegionArrayName (default "Region"; one region 1 when absent). Each
  * region becomes an elementary volume entity and a physical group whose tag is the region label
- * (labels must be positive: Gmsh tags are) and whose name is "Region <label>"; nodes are numbered
+ * (labels must be positive: Gmsh tags are) and whose name is the organ's where the mesh's field
+ * data "LabelNames" (carried from the label map) has it, else "Region <label>"; nodes are numbered
  * from 1 in point order, elements from 1 in cell order. Coordinates are written with 17 significant
  * digits. Any other cell type, a non-positive label or a non-finite coordinate is an error naming
  * it. The file appears atomically (temporary name, then rename).

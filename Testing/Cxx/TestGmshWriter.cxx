@@ -5,9 +5,11 @@
 
 #include "vtkCellData.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
@@ -82,6 +84,25 @@ TEST(GmshWriter, TwoRegionsAsPhysicalVolumes)
   EXPECT_EQ(c[2], -1.0 / 3);
   // Elements: one block per region (sorted by label), 1-based node tags, cell order kept as tags.
   EXPECT_EQ(s["Elements"], (std::vector<std::string>{ "2 2 1 2", "3 3 4 1", "2 1 3 2 5", "3 6 4 1", "1 1 2 3 4" }));
+}
+
+TEST(GmshWriter, PhysicalGroupsTakeTheLabelNames)
+{
+  // A mesh carrying its label map's LabelNames (indexed by label) names its groups after the
+  // organs; a label without a name keeps "Region N".
+  auto mesh = TwoRegions();
+  vtkNew<vtkStringArray> names;
+  names->SetName("LabelNames");
+  for (const char* name : { "Background", "", "", "Right lung", "", "" })
+    names->InsertNextValue(name);
+  mesh->GetFieldData()->AddArray(names);
+  const std::string path = amTest::TempPath("named.msh");
+  vtkNew<amGmshWriter> w;
+  w->SetInputData(mesh);
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  EXPECT_EQ(Sections(path)["PhysicalNames"],
+    (std::vector<std::string>{ "2", "3 3 \"Right lung\"", "3 6 \"Region 6\"" }));
 }
 
 TEST(GmshWriter, BadInputLeavesNoFile)
