@@ -104,16 +104,11 @@ int amMorphologyCleaning::RequestData(
     return 0;
   }
   const vtkIdType n = scalars->GetNumberOfTuples();
-  std::vector<unsigned char> out(static_cast<size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
+  std::vector<unsigned char> out;
+  if (!amInputCheck::LabelBytes(scalars, 255, out, why))
   {
-    const double v = scalars->GetComponent(i, 0);
-    if (!(v >= 0 && v <= 255) || v != std::floor(v))
-    {
-      vtkErrorMacro("Voxel " << i << " has value " << v << ": a label map holds whole numbers 0..255.");
-      return 0;
-    }
-    out[i] = static_cast<unsigned char>(v);
+    vtkErrorMacro(<< why);
+    return 0;
   }
   int dims[3];
   input->GetDimensions(dims);

@@ -4,6 +4,8 @@
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 
+#include <cmath>
+
 vtkDataArray* amInputCheck::ScalarImage(vtkImageData* image, std::string& why)
 {
   if (!image || image->GetNumberOfPoints() == 0)
@@ -24,4 +26,22 @@ vtkDataArray* amInputCheck::ScalarImage(vtkImageData* image, std::string& why)
     return nullptr;
   }
   return scalars;
+}
+
+bool amInputCheck::LabelBytes(vtkDataArray* scalars, int maximum, std::vector<unsigned char>& out, std::string& why)
+{
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  out.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const double v = scalars->GetComponent(i, 0);
+    if (!(v >= 0 && v <= maximum) || v != std::floor(v))
+    {
+      why = "Voxel " + std::to_string(i) + " has value " + std::to_string(v) +
+        ": a label map holds whole numbers 0.." + std::to_string(maximum) + ".";
+      return false;
+    }
+    out[i] = static_cast<unsigned char>(v);
+  }
+  return true;
 }

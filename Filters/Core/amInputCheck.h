@@ -8,6 +8,7 @@
 #include "AnatomeshFiltersCoreModule.h" // export macro
 
 #include <string>
+#include <vector>
 
 class vtkDataArray;
 class vtkImageData;
@@ -18,6 +19,10 @@ public:
   /// The one-component point scalars of a non-empty image, or null with 'why' set
   /// ("The input image is empty.", "... has no scalars ...", "... has 3 components ...").
   static vtkDataArray* ScalarImage(vtkImageData* image, std::string& why);
+
+  /// The values of a one-component label array as bytes, each a whole number in 0..maximum
+  /// (at most 255); false with 'why' naming the first voxel that is not.
+  static bool LabelBytes(vtkDataArray* scalars, int maximum, std::vector<unsigned char>& out, std::string& why);
 };
 
 #endif

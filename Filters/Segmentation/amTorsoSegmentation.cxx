@@ -99,19 +99,10 @@ bool OrganLabels(vtkImageData* ct, vtkImageData* organs, std::vector<std::uint8_
     why = "The organ label map (input 1): " + why;
     return false;
   }
-  out.resize(static_cast<size_t>(scalars->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  if (!amInputCheck::LabelBytes(scalars, 254, out, why))
   {
-    const double v = scalars->GetComponent(i, 0);
-    if (!(v >= 0 && v < 255) || v != std::floor(v))
-    {
-      std::ostringstream s;
-      s << "The organ label map (input 1) has value " << v << " at voxel " << i
-        << ": a label map holds whole numbers 0..254.";
-      why = s.str();
-      return false;
-    }
-    out[i] = static_cast<std::uint8_t>(v);
+    why = "The organ label map (input 1): " + why;
+    return false;
   }
   return true;
 }
@@ -224,8 +215,7 @@ int amTorsoSegmentation::RequestData(
   wall.Thickness = this->WallThickness;
   wall.Sigma = this->WallSmoothingSigma;
   wall.MinimumContrast = this->MinimumWallContrast;
-  const std::vector<float> values(hu->GetPointer(0), hu->GetPointer(0) + n);
-  const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, values, classes, wall, labels);
+  const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);
   if (!heart.PoolVoxels)
     vtkWarningMacro("No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");
   else if (heart.PoolLevel < heart.WallLevel + this->MinimumWallContrast)

@@ -30,7 +30,7 @@ double Median(std::vector<float> values)
 }
 }
 
-amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const std::vector<float>& hu,
+amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* hu,
   const std::vector<std::uint8_t>& classes, const WallParameters& p, std::vector<std::uint8_t>& labels)
 {
   WallReport report;

@@ -83,7 +83,7 @@ struct WallReport
 /// the maximum thickness, whose intensity averaged over soft tissue alone (away from partial
 /// volumes) lies on the wall's side of the half-way level between the wall next to the pools and
 /// the tissue beyond the maximum thickness. Labels Myocardium in place.
-WallReport MyocardiumWall(const amVoxelGrid& g, const std::vector<float>& hu, const std::vector<std::uint8_t>& classes,
+WallReport MyocardiumWall(const amVoxelGrid& g, const float* hu, const std::vector<std::uint8_t>& classes,
   const WallParameters& p, std::vector<std::uint8_t>& labels);
 }
 
