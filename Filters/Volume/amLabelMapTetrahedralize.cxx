@@ -72,6 +72,9 @@ amLabelMapTetrahedralize::amLabelMapTetrahedralize()
   , SliverBound(12.0)
   , ImproveQuality(0)
   , ImprovementPasses(4)
+  , MaximumSurfaceDeviation(0.2)
+  , NumberOfSlivers(0)
+  , SurfaceDeviation(0)
   , NumberOfTetrahedra(0)
 {
   this->SetNumberOfOutputPorts(2);
@@ -398,10 +401,13 @@ int amLabelMapTetrahedralize::RequestData(
   interfaces->GetCellData()->AddArray(adjacent);
 
   std::ostringstream improvement;
+  this->NumberOfSlivers = 0;
+  this->SurfaceDeviation = 0;
   if (this->ImproveQuality && this->ImprovementPasses > 0)
   {
     amTetraMeshOptimizer::Options options;
     options.Passes = this->ImprovementPasses;
+    options.MaximumSurfaceDeviation = this->MaximumSurfaceDeviation;
     amTetraMeshOptimizer::Report report;
     std::string why;
     if (!amTetraMeshOptimizer::ImproveGrid(output, interfaces, options, report, why,
@@ -411,6 +417,8 @@ int amLabelMapTetrahedralize::RequestData(
       return 0;
     }
     improvement << " improvement: " << report.Describe();
+    this->NumberOfSlivers = report.Slivers;
+    this->SurfaceDeviation = report.SurfaceDeviation;
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
@@ -422,7 +430,8 @@ int amLabelMapTetrahedralize::RequestData(
          << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
          << " Perturb=" << this->Perturb << " Exude=" << this->Exude
          << " SliverBound=" << this->SliverBound << " ImproveQuality=" << this->ImproveQuality
-         << " ImprovementPasses=" << this->ImprovementPasses << " tetrahedra=" << this->NumberOfTetrahedra
+         << " ImprovementPasses=" << this->ImprovementPasses
+         << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " tetrahedra=" << this->NumberOfTetrahedra
          << improvement.str();
   for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)
     params << (k ? "," : " RegionCellSizes=") << this->RegionCellSizes[k] << "," << this->RegionCellSizes[k + 1];
@@ -448,5 +457,6 @@ void amLabelMapTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
      << " Exude: " << this->Exude << "\n"
      << indent << "SliverBound: " << this->SliverBound << "\n"
      << indent << "ImproveQuality: " << this->ImproveQuality << " ImprovementPasses: " << this->ImprovementPasses
+     << " MaximumSurfaceDeviation: " << this->MaximumSurfaceDeviation
      << "\n";
 }

@@ -133,13 +133,19 @@ public:
   /// After CGAL, improve the elements as amTetrahedralize does (default off, as CGAL's own
   /// optimisers run): edge removals and 2-3 flips that make the worst element they touch better,
   /// smoothing and local search on the vertices off the surface (amTetraMeshOptimizer). The
-  /// surface and interface triangles stay exactly as CGAL made them. ImprovementPasses: rounds
-  /// (default 4).
+  /// surface and interface triangles stay as CGAL made them, but for the slivers that need them
+  /// to move (at most MaximumSurfaceDeviation, mm, default 0.2; 0: never; see amTetrahedralize).
+  /// ImprovementPasses: rounds (default 4). NumberOfSlivers: elements left above Q 10 or below 10
+  /// degrees after the improvement; SurfaceDeviation: how far the surface moved (mm).
   vtkSetMacro(ImproveQuality, vtkTypeBool);
   vtkGetMacro(ImproveQuality, vtkTypeBool);
   vtkBooleanMacro(ImproveQuality, vtkTypeBool);
   vtkSetClampMacro(ImprovementPasses, int, 0, 100);
   vtkGetMacro(ImprovementPasses, int);
+  vtkSetClampMacro(MaximumSurfaceDeviation, double, 0.0, 1e6);
+  vtkGetMacro(MaximumSurfaceDeviation, double);
+  vtkGetMacro(NumberOfSlivers, vtkIdType);
+  vtkGetMacro(SurfaceDeviation, double);
   ///@}
 
   /// Tetrahedra of the last run.
@@ -169,6 +175,9 @@ protected:
   double SliverBound;
   vtkTypeBool ImproveQuality;
   int ImprovementPasses;
+  double MaximumSurfaceDeviation;
+  vtkIdType NumberOfSlivers;
+  double SurfaceDeviation;
   vtkIdType NumberOfTetrahedra;
 
 private:

@@ -1,6 +1,7 @@
 #include "amTetraMeshOptimizer.h"
 
 #include "amMeshQuality.h"
+#include "amTetraInterfaceUpdate.h"
 #include "amTetraImproveMesh.h"
 
 #include "vtkCellArray.h"
@@ -53,7 +54,12 @@ std::string amTetraMeshOptimizer::Report::Describe() const
   std::ostringstream os;
   os << "worst Q " << this->WorstBefore << " -> " << this->WorstAfter << ", mean " << this->MeanBefore << " -> "
      << this->MeanAfter << " (" << this->EdgeRemovals << " edge removals, " << this->Flips23 << " 2-3 flips, "
-     << this->EdgeSplits << " edge splits, " << this->Moves << " vertex moves)";
+     << this->EdgeSplits << " edge splits, " << this->Moves << " vertex moves";
+  if (this->SurfaceMoves + this->Relabels + this->SurfaceSplits > 0)
+    os << "; around slivers " << this->SurfaceMoves << " surface vertex slides, " << this->Relabels
+       << " region changes, " << this->SurfaceSplits << " surface edge splits: the surface moved by "
+       << this->SurfaceDeviation << " mm";
+  os << "; " << this->Slivers << " slivers left)";
   return os.str();
 }
 
@@ -101,18 +107,25 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
       if (kv.second == 1)
         m.FixedFaces.insert(kv.first);
   }
-  for (const Tri& f : m.FixedFaces)
-    for (int k = 0; k < 3; ++k)
-    {
-      m.FixedVertex[f[k]] = 1;
-      m.FixedEdges.insert(EdgeKey(f[k], f[(k + 1) % 3]));
-    }
+  auto fixEdges = [&m]() {
+    m.FixedEdges.clear();
+    for (const Tri& f : m.FixedFaces)
+      for (int k = 0; k < 3; ++k)
+      {
+        m.FixedVertex[f[k]] = 1;
+        m.FixedEdges.insert(EdgeKey(f[k], f[(k + 1) % 3]));
+      }
+  };
+  fixEdges();
 
   const double bad = 1.0 / options.FlipQuality, poor = 1.0 / options.SearchQuality,
                split = 1.0 / options.SplitQuality;
   const int maxRing = std::min(options.MaxRing, 15);
   std::vector<int> ringTets, ring;
-  for (int pass = 0; pass < options.Passes; ++pass)
+  const int rounds = options.MaximumSurfaceDeviation > 0 ? std::max(0, options.SliverRounds) : 0;
+  auto improve = [&](int round) {
+  const int passes = round == 0 ? options.Passes : std::min(options.Passes, 2);
+  for (int pass = 0; pass < passes; ++pass)
   {
     long changes = 0;
     // Topology: the bad tetrahedra's edges, then faces.
@@ -161,8 +174,10 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
       }
       m.Tried[t] = 1;
     }
-    // Geometry: smoothing of every free vertex, then a local search around the bad elements.
+    // Geometry: smoothing of every free vertex, then a local search around the bad elements
+    // (in the sliver rounds, only where something changed since the last pass).
     const size_t nv = m.Inc.size();
+    const std::vector<char> changed = m.Dirty;
     for (size_t v = 0; v < nv; ++v)
     {
       if (m.FixedVertex[v] || !m.Dirty[v])
@@ -178,7 +193,7 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     for (size_t t = 0; t < m.T.size(); ++t)
       if (m.Alive[t] && m.Q[t] < poor)
         for (int w : m.T[t])
-          climb[w] = !m.FixedVertex[w];
+          climb[w] = !m.FixedVertex[w] && (round == 0 || changed[w]);
     for (size_t v = 0; v < nv; ++v)
       if (climb[v] && Climb(m, static_cast<int>(v)))
       {
@@ -186,10 +201,22 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
         ++changes;
       }
     if (progress)
-      progress(static_cast<double>(pass + 1) / options.Passes);
+      progress((round + static_cast<double>(pass + 1) / passes) / (rounds + 1));
     if (changes == 0)
       break;
   }
+  };
+  improve(0);
+  if (rounds > 0)
+  {
+    // The sliver rounds improve only around what they change.
+    std::fill(m.Dirty.begin(), m.Dirty.end(), 0);
+    std::fill(m.Tried.begin(), m.Tried.end(), 1);
+    FreeSlivers(m, options, report, improve, fixEdges);
+  }
+  for (size_t t = 0; t < m.T.size(); ++t)
+    if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options))
+      ++report.Slivers;
 
   tets.clear();
   regions.clear();
@@ -209,7 +236,8 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
   vtkPoints* gridPoints = grid->GetPoints();
   vtkDataArray* regionArray = grid->GetCellData()->GetArray("Region");
   vtkDataArray* labels = surface->GetCellData()->GetArray("Labels");
-  const vtkIdType np = grid->GetNumberOfPoints(), ne = grid->GetNumberOfCells(), ns = surface->GetNumberOfCells();
+  const vtkIdType np = grid->GetNumberOfPoints(), ne = grid->GetNumberOfCells();
+  vtkIdType ns = surface->GetNumberOfCells();
   if (!gridPoints || !regionArray || !labels || labels->GetNumberOfComponents() != 2 ||
     surface->GetPoints() != gridPoints)
   {
@@ -251,6 +279,7 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
     }
     fixed[s] = { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) };
   }
+  const int background = amTetraInterfaceUpdate::Background(surface, regions);
   report = Optimize(points, tets, regions, fixed, options, progress);
 
   // Back into the grid: moved and new points (-1 in every point array: they lie inside, on no
@@ -288,6 +317,13 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
   grid->GetCellData()->Initialize(); // per-cell data of the old cells no longer applies
   grid->GetCellData()->AddArray(region);
   grid->GetCellData()->SetActiveScalars(region->GetName());
+
+  // Slivers that changed region moved the surface: its triangles are the mesh's faces anew.
+  if (report.Relabels > 0)
+  {
+    fixed = amTetraInterfaceUpdate::Rebuild(surface, points, tets, regions, background);
+    ns = static_cast<vtkIdType>(fixed.size());
+  }
 
   // The surface's "Tetra": the tetrahedron on the Labels[0] and on the Labels[1] side of each
   // triangle (the normal points into the Labels[1] side).

@@ -18,8 +18,10 @@
  *
  * The fixed faces (the surface and interface triangles) and fixed vertices (those on them) never
  * change, so the boundary and every interface stay exactly as they were; an operation never
- * crosses a fixed face, so every tetrahedron keeps its region. Deterministic: one thread, fixed
- * order.
+ * crosses a fixed face, so every tetrahedron keeps its region. The exception, off unless
+ * Options::MaximumSurfaceDeviation is positive: around the slivers the operations above leave,
+ * surface vertices slide, elements change region and surface edges are split (see Options),
+ * which moves the surface by at most that distance. Deterministic: one thread, fixed order.
  */
 #ifndef amTetraMeshOptimizer_h
 #define amTetraMeshOptimizer_h
@@ -43,11 +45,29 @@ public:
     double SearchQuality = 2.5;     // the vertices of elements above this get the local search
     int MaxRing = 7;                // largest edge ring the edge removal triangulates
     double SplitQuality = 5;        // elements with Q above this that no flip mends get an edge split
+    // Slivers: elements with Q above SliverQuality or a dihedral angle below SliverDihedral
+    // (degrees) that the rounds above leave. Where interfaces meet at a junction curve at a small
+    // angle, or a surface triangle lies almost flat on another, no element there can be better
+    // than the surface allows. When MaximumSurfaceDeviation (mm) is positive, the surface may
+    // move that far to free them (amTetraImproveSlivers.cxx): their surface vertices slide, those
+    // still bad take the region across a surface face (or leave the mesh at its boundary), the
+    // longest surface edge of the rest is split at its midpoint, and the flips and moves run
+    // again around them, for up to SliverRounds rounds. The deviation is measured (two-sided,
+    // against the surface as it was) and kept within the bound.
+    double SliverQuality = 10;
+    double SliverDihedral = 10;
+    double MaximumSurfaceDeviation = 0;
+    int SliverRounds = 4;
   };
   struct Report
   {
     double WorstBefore = 0, WorstAfter = 0, MeanBefore = 0, MeanAfter = 0;
     long Flips23 = 0, EdgeRemovals = 0, EdgeSplits = 0, Moves = 0;
+    long Relabels = 0;             // elements that changed region (or left the mesh)
+    long SurfaceSplits = 0;        // surface edges split at their midpoints near slivers
+    long SurfaceMoves = 0;         // slides of surface vertices
+    double SurfaceDeviation = 0;   // the largest displacement of the surface they caused (mm)
+    long Slivers = 0;              // elements still above SliverQuality or below SliverDihedral
     /// One line for provenance: worst and mean Q before -> after, and the operations done.
     std::string Describe() const;
   };
@@ -55,7 +75,9 @@ public:
   /// points: 3 doubles per vertex (free vertices move, split vertices are appended); tets: 4 vertex ids per tetrahedron,
   /// positively oriented (rewritten); regions: one label per tetrahedron (rewritten alike);
   /// fixedFaces: triangles that must remain faces (the surface); the vertices of those faces and
-  /// of the mesh's boundary are fixed. progress(fraction) is called between passes.
+  /// of the mesh's boundary are fixed. progress(fraction) is called between passes. When
+  /// elements change region (Report::Relabels), the surface is no longer 'fixedFaces': it is the
+  /// faces between different regions and those of the mesh's boundary.
   static Report Optimize(std::vector<double>& points, std::vector<std::array<int, 4>>& tets,
     std::vector<int>& regions, const std::vector<std::array<int, 3>>& fixedFaces, const Options& options,
     const std::function<void(double)>& progress = nullptr);

@@ -51,10 +51,13 @@ amTetrahedralize::amTetrahedralize()
   , OptimizationLevel(3)
   , ImproveQuality(1)
   , ImprovementPasses(4)
+  , MaximumSurfaceDeviation(0.2)
   , NumberOfTetrahedra(0)
   , NumberOfSteinerPoints(0)
   , WorstQualityBeforeImprovement(0)
   , MeanQualityBeforeImprovement(0)
+  , SurfaceDeviation(0)
+  , NumberOfSlivers(0)
 {
   this->SetSizeArrayName("Size");
   this->SetNumberOfOutputPorts(2);
@@ -312,11 +315,13 @@ int amTetrahedralize::RequestData(
 
   // --- Quality improvement: flips and smoothing inside the regions, the surface kept ------------
   std::ostringstream improvement;
-  this->WorstQualityBeforeImprovement = this->MeanQualityBeforeImprovement = 0;
+  this->WorstQualityBeforeImprovement = this->MeanQualityBeforeImprovement = this->SurfaceDeviation = 0;
+  this->NumberOfSlivers = 0;
   if (this->ImproveQuality && this->ImprovementPasses > 0)
   {
     amTetraMeshOptimizer::Options options;
     options.Passes = this->ImprovementPasses;
+    options.MaximumSurfaceDeviation = this->MaximumSurfaceDeviation;
     amTetraMeshOptimizer::Report report;
     if (!amTetraMeshOptimizer::ImproveGrid(
           output, interfaces, options, report, why, [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
@@ -326,6 +331,8 @@ int amTetrahedralize::RequestData(
     }
     this->WorstQualityBeforeImprovement = report.WorstBefore;
     this->MeanQualityBeforeImprovement = report.MeanBefore;
+    this->SurfaceDeviation = report.SurfaceDeviation;
+    this->NumberOfSlivers = report.Slivers;
     improvement << " improvement: " << report.Describe();
   }
 
@@ -334,6 +341,7 @@ int amTetrahedralize::RequestData(
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
+         << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation
          << " tetrahedra=" << this->NumberOfTetrahedra << improvement.str();
   amProvenance::Record(output, input, "amTetrahedralize", params.str());
   this->UpdateProgress(1.0);
@@ -351,6 +359,7 @@ void amTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumSize: " << this->MaximumSize << "\n";
   os << indent << "SizeArrayName: " << (this->SizeArrayName ? this->SizeArrayName : "(none)") << "\n";
   os << indent << "OptimizationLevel: " << this->OptimizationLevel << "\n";
+  os << indent << "MaximumSurfaceDeviation: " << this->MaximumSurfaceDeviation << "\n";
   os << indent << "ImproveQuality: " << this->ImproveQuality << "\n";
   os << indent << "ImprovementPasses: " << this->ImprovementPasses << "\n";
 }

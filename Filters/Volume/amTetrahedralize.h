@@ -26,7 +26,8 @@
  * error; sets of BackgroundLabel (outside, cavities) are dropped.
  *
  * With PreserveSurface (default, TetGen -Y) the boundary and interface triangles of the output
- * are exactly the input triangles and the input points come first, in order.
+ * are the input triangles and the input points come first, in order, except where
+ * MaximumSurfaceDeviation lets the surface move to free slivers.
  *
  * Output port 0: vtkUnstructuredGrid of tetrahedra (positive volume), cell data "Region",
  * point data "SurfacePointId" (index of the input surface point, -1 inside).
@@ -121,12 +122,32 @@ public:
   ///@}
 
   ///@{
+  /// How far (mm) the improvement may move the surface to free slivers (default 0.2; 0: the
+  /// surface stays exactly the input's). Where interfaces meet at a junction curve at a small
+  /// angle, or a surface triangle lies almost flat on another, no element can have Q <= 10 and
+  /// dihedral angles >= 10 degrees unless the surface moves. Around the elements that flips and
+  /// moves leave above Q 10 or below 10 degrees, surface vertices slide, such an element takes
+  /// the region across its surface face, or a surface edge is split at its midpoint; the
+  /// two-sided Hausdorff distance between the surface before and after is measured and kept
+  /// within this bound (SurfaceDeviation). The triangles of output port 1 are then the mesh's
+  /// faces anew: those that remain keep their cell data, new ones have SourceTriangle -1. The
+  /// mesh's surface is thus within the remeshing's Hausdorff distance plus SurfaceDeviation of
+  /// the label surface.
+  vtkSetClampMacro(MaximumSurfaceDeviation, double, 0.0, 1e6);
+  vtkGetMacro(MaximumSurfaceDeviation, double);
+  ///@}
+
+  ///@{
   /// Results of the last run; the quality figures are TetGen's, before the improvement (Q as in
-  /// amMeshQuality; 0 when no improvement ran).
+  /// amMeshQuality; 0 when no improvement ran). SurfaceDeviation: how far slivers that changed
+  /// region moved the surface (mm); NumberOfSlivers: elements still above Q 10 or below 10
+  /// degrees.
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfSteinerPoints, vtkIdType);
   vtkGetMacro(WorstQualityBeforeImprovement, double);
   vtkGetMacro(MeanQualityBeforeImprovement, double);
+  vtkGetMacro(SurfaceDeviation, double);
+  vtkGetMacro(NumberOfSlivers, vtkIdType);
   ///@}
 
 protected:
@@ -146,10 +167,13 @@ protected:
   int OptimizationLevel;
   vtkTypeBool ImproveQuality;
   int ImprovementPasses;
+  double MaximumSurfaceDeviation;
   vtkIdType NumberOfTetrahedra;
   vtkIdType NumberOfSteinerPoints;
   double WorstQualityBeforeImprovement;
   double MeanQualityBeforeImprovement;
+  double SurfaceDeviation;
+  vtkIdType NumberOfSlivers;
 
 private:
   amTetrahedralize(const amTetrahedralize&) = delete;

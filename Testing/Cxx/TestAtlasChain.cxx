@@ -4,6 +4,8 @@
 // keep it from being met.
 #include "amAtlasChain.h"
 #include "amImageReader.h"
+#include "amMeshQuality.h"
+#include "amTetraMeshChecks.h"
 #include "amTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -58,6 +60,23 @@ double WorstTriangleQuality(vtkPolyData* surface)
   return worst;
 }
 
+/// The guarantee on the elements: worst Q <= 10 and every dihedral angle >= 10 degrees, the
+/// surface moved by at most 'deviation' to get there, the interfaces the mesh's own faces.
+void ExpectNoSliver(amTetrahedralize* tetra, double deviation)
+{
+  vtkNew<amMeshQuality> quality;
+  quality->SetInputData(tetra->GetOutput());
+  quality->Update();
+  std::printf("  worst Q %.2f, smallest dihedral %.2f deg, %lld slivers, surface moved %.3f mm\n",
+    quality->GetMaximumQuality(), quality->GetMinimumDihedralAngle(), static_cast<long long>(tetra->GetNumberOfSlivers()),
+    tetra->GetSurfaceDeviation());
+  EXPECT_EQ(amTest::InterfaceProblems(tetra->GetOutput(), vtkPolyData::SafeDownCast(tetra->GetOutputDataObject(1))), "");
+  EXPECT_LE(tetra->GetSurfaceDeviation(), deviation);
+  EXPECT_EQ(tetra->GetNumberOfSlivers(), 0);
+  EXPECT_LE(quality->GetMaximumQuality(), 10.0);
+  EXPECT_GE(quality->GetMinimumDihedralAngle(), 10.0);
+}
+
 enum Variant
 {
   Clean,
@@ -81,6 +100,7 @@ TEST_P(AtlasChain, EveryLabelARegionAndTheBound)
   amSyntheticAtlasSource* src = chain.Source;
   amMetricRemeshing* remesh = chain.Remesh;
   amTetrahedralize* tetra = chain.Tetra;
+  tetra->SetMaximumSurfaceDeviation(0.5 * eps);
   vtkNew<amTest::ErrorCatcher> errors;
   for (vtkAlgorithm* a :
     { static_cast<vtkAlgorithm*>(chain.Surface), static_cast<vtkAlgorithm*>(chain.Smooth),
@@ -107,6 +127,39 @@ TEST_P(AtlasChain, EveryLabelARegionAndTheBound)
     EXPECT_LE(h, eps + 1e-9);
   else
     EXPECT_LT(h, 2 * eps); // thin sheets and 2.5 mm slices: reported, not yet met (see docs/limits.md)
+  ExpectNoSliver(tetra, 0.5 * eps);
+}
+
+TEST(AtlasChain, SliverFreeingIsDeterministic)
+{
+  const int dims[3] = { 48, 48, 48 };
+  const double spacing[3] = { 1, 1, 1 };
+  amTest::AtlasChain chain(20, 2, dims, spacing, 0.0, 0.05, 0.5);
+  chain.Tetra->SetMaximumSurfaceDeviation(0.25);
+  chain.Tetra->Update();
+  vtkNew<vtkUnstructuredGrid> first;
+  first->DeepCopy(chain.Tetra->GetOutput());
+  ASSERT_GT(chain.Tetra->GetSurfaceDeviation(), 0.0); // the sliver phase acted
+  chain.Tetra->Modified();
+  chain.Tetra->Update();
+  vtkUnstructuredGrid* second = chain.Tetra->GetOutput();
+  ASSERT_EQ(first->GetNumberOfPoints(), second->GetNumberOfPoints());
+  ASSERT_EQ(first->GetNumberOfCells(), second->GetNumberOfCells());
+  for (vtkIdType v = 0; v < first->GetNumberOfPoints(); ++v)
+  {
+    double p[3], q[3];
+    first->GetPoint(v, p);
+    second->GetPoint(v, q);
+    ASSERT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "point " << v;
+  }
+  for (vtkIdType c = 0; c < first->GetNumberOfCells(); ++c)
+  {
+    vtkIdType n1, n2;
+    const vtkIdType *a, *b;
+    first->GetCellPoints(c, n1, a);
+    second->GetCellPoints(c, n2, b);
+    ASSERT_TRUE(std::equal(a, a + 4, b)) << "cell " << c;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(SyntheticAtlases, AtlasChain,
@@ -118,6 +171,7 @@ struct RealMap
 {
   const char* Path;
   double Tolerance, MinimumSize; // mm
+  long SliversLeft;             // 0: the no-sliver guarantee holds; else at most this many remain
 };
 std::string RealMapName(const ::testing::TestParamInfo<RealMap>& info)
 {
@@ -147,6 +201,7 @@ TEST_P(RealLabelMaps, EveryLabelARegionThroughTetGen)
   amTest::AtlasChain chain(2, 1, dims, spacing, 0.0, 0.0, map.Tolerance);
   chain.Surface->SetInputConnection(reader->GetOutputPort());
   chain.Metric->SetMinimumSize(map.MinimumSize);
+  chain.Tetra->SetMaximumSurfaceDeviation(0.5 * map.Tolerance);
   vtkNew<amTest::ErrorCatcher> errors;
   for (vtkAlgorithm* a : { static_cast<vtkAlgorithm*>(chain.Remesh), static_cast<vtkAlgorithm*>(chain.Tetra) })
   {
@@ -162,10 +217,19 @@ TEST_P(RealLabelMaps, EveryLabelARegionThroughTetGen)
   std::printf("%s: %zu labels, %lld tetrahedra, Hausdorff %.3f mm (tolerance %.1f)\n", map.Path, labels.size(),
     static_cast<long long>(chain.Tetra->GetOutput()->GetNumberOfCells()), h, map.Tolerance);
   EXPECT_TRUE(std::isfinite(h));
+  if (map.SliversLeft == 0)
+    ExpectNoSliver(chain.Tetra, 0.5 * map.Tolerance);
+  else
+  {
+    // Reported, not met: see docs/limits.md.
+    std::printf("  %lld slivers left, surface moved %.3f mm\n", static_cast<long long>(chain.Tetra->GetNumberOfSlivers()),
+      chain.Tetra->GetSurfaceDeviation());
+    EXPECT_LE(chain.Tetra->GetNumberOfSlivers(), map.SliversLeft);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedData, RealLabelMaps,
-  ::testing::Values(RealMap{ amTest::FrogLabels, 2.0, 2.0 },
-    RealMap{ "totalseg_abdomen_ct_labels/example_seg.nii.gz", 1.0, 3.0 },
-    RealMap{ "niivue_torso_labels/torsoLabel.nii.gz", 2.0, 1.56 }),
+  ::testing::Values(RealMap{ amTest::FrogLabels, 2.0, 2.0, 5 },
+    RealMap{ "totalseg_abdomen_ct_labels/example_seg.nii.gz", 1.0, 3.0, 0 },
+    RealMap{ "niivue_torso_labels/torsoLabel.nii.gz", 2.0, 1.56, 0 }),
   RealMapName);

@@ -6,6 +6,11 @@
  * amTetraImproveMoves.cxx (smoothing, local search), amTetraImproveInsert.cxx (edge split,
  * vertex insertion in a cavity). Each is accepted only when it makes the worst element it
  * touches better; none crosses a fixed face or moves a fixed vertex.
+ *
+ * The sliver phase (amTetraImproveSlivers.cxx), where the surface may move within a budget:
+ * surface vertex slides (Climb with a radius, StarDeviation), amTetraImproveRelabel.cxx (a
+ * surface-bound sliver handed to the region across the surface), amTetraImproveSurfaceSplit.cxx
+ * (a surface edge split at its midpoint), amTetraImproveDeviation.cxx (what the surface moved).
  */
 #ifndef amTetraImproveMesh_h
 #define amTetraImproveMesh_h
@@ -16,6 +21,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <limits>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -63,10 +71,27 @@ public:
   std::unordered_set<Tri, TriHash> FixedFaces;
   std::unordered_set<uint64_t> FixedEdges;
   std::vector<char> FixedVertex;
+  std::vector<double> Origin; // where each vertex was when the surface could start to move (NaN: made inside since)
 
   explicit Mesh(std::vector<double>& p)
     : P(p)
   {
+  }
+  Mesh(const Mesh&) = default;
+  /// Everything but the points (P is a reference: the caller restores those).
+  void Assign(const Mesh& o)
+  {
+    this->T = o.T;
+    this->R = o.R;
+    this->Alive = o.Alive;
+    this->Q = o.Q;
+    this->Tried = o.Tried;
+    this->Dirty = o.Dirty;
+    this->Inc = o.Inc;
+    this->FixedFaces = o.FixedFaces;
+    this->FixedEdges = o.FixedEdges;
+    this->FixedVertex = o.FixedVertex;
+    this->Origin = o.Origin;
   }
   const double* X(int v) const { return &this->P[3 * static_cast<size_t>(v)]; }
   double Quality(int a, int b, int c, int d) const
@@ -79,6 +104,8 @@ public:
     this->Inc.emplace_back();
     this->FixedVertex.push_back(0);
     this->Dirty.push_back(1);
+    if (!this->Origin.empty())
+      this->Origin.insert(this->Origin.end(), 3, std::numeric_limits<double>::quiet_NaN());
     return static_cast<int>(this->Inc.size()) - 1;
   }
   int Add(const Tet& t, int region)
@@ -137,11 +164,57 @@ void MoveVertex(Mesh& m, int v, const double* x);
 /// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's
 /// worst element at least as good and lowers its mean Q.
 bool Smooth(Mesh& m, int v);
-/// Local search: moves v along the numerical gradient of its star's worst quality.
-bool Climb(Mesh& m, int v);
+/// Local search: moves v along the numerical gradient of its star's worst quality; with a finite
+/// 'radius', only where the fixed faces around v stay within that distance of where they were
+/// (StarDeviation): a surface vertex slides along a flat surface freely, off it only so far.
+/// It stops once the star's worst objective reaches 'goal' (a surface vertex moves no farther
+/// than the slivers need).
+bool Climb(Mesh& m, int v, double radius = std::numeric_limits<double>::infinity(),
+  double goal = std::numeric_limits<double>::infinity());
 /// Splits the free edge (u, v) at its midpoint, then moves the new vertex where its star is best.
 /// Undone unless every element around the new vertex reaches 'goal'.
 bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::vector<int>& ring);
+/// Gives tetrahedron t the region across one of its fixed faces (removes it at the mesh's
+/// boundary) when that moves the surface by at most maxDeviation; the faces it shared with
+/// that region leave FixedFaces and those with its own region join (FixedEdges is not updated).
+/// Returns the surface's displacement, or -1 when no neighbour fits.
+double Relabel(Mesh& m, int t, double maxDeviation, std::unordered_map<int, long>& regionCount);
+/// Whether tetrahedron t fails the sliver bar of the options (Q above SliverQuality or a dihedral
+/// angle below SliverDihedral).
+bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options);
+/// The objective above which no element is a sliver by the options' bar.
+double SliverClear(const amTetraMeshOptimizer::Options& options);
+/// The sliver phase of amTetraMeshOptimizer (Options::MaximumSurfaceDeviation > 0): rounds of
+/// surface vertex slides, region changes and surface edge splits around the slivers left, each
+/// followed by improve(round) (the flips and moves) and fixEdges() (FixedEdges from FixedFaces);
+/// the surface's deviation is measured and kept within the budget (report.SurfaceDeviation).
+void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraMeshOptimizer::Report& report,
+  const std::function<void(int)>& improve, const std::function<void()>& fixEdges);
+/// Splits the surface edge (u, v) at its midpoint, every element and fixed face on it in two
+/// (the surface keeps its shape); returns the new vertex, or -1.
+int SplitSurfaceEdge(Mesh& m, int u, int v);
+/// The two-sided Hausdorff distance between the surface as it was ('before', on m.Origin) and
+/// the fixed faces now, over the triangles that changed (sampled, corners and edges included).
+double SurfaceDeviation(const Mesh& m, const std::vector<Tri>& before);
+/// v's own share of the surface's displacement: the two-sided Hausdorff distance (sampled)
+/// between the fixed faces around v with v at y and with v at its origin (m.Origin), the other
+/// vertices where they are now; inf when v has no origin (made inside the mesh).
+double StarDeviation(const Mesh& m, int v, const double* y);
+
+/// Points of triangle (a, b, c) on a barycentric grid of 'steps' intervals per edge, corners
+/// and edges included: f(x) for each.
+template <typename F>
+void SampleTriangle(const double* a, const double* b, const double* c, int steps, F&& f)
+{
+  for (int i = 0; i <= steps; ++i)
+    for (int j = 0; i + j <= steps; ++j)
+    {
+      const double u = static_cast<double>(i) / steps, v = static_cast<double>(j) / steps, w = 1 - u - v;
+      const double x[3] = { w * a[0] + u * b[0] + v * c[0], w * a[1] + u * b[1] + v * c[1],
+        w * a[2] + u * b[2] + v * c[2] };
+      f(x);
+    }
+}
 }
 
 #endif

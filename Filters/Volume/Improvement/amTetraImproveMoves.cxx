@@ -108,8 +108,9 @@ bool Smooth(Mesh& m, int v)
   return found;
 }
 
-/// Local search: moves v along the numerical gradient of its star's worst quality.
-bool Climb(Mesh& m, int v)
+/// Local search: moves v along the numerical gradient of its star's worst quality (with a finite
+/// radius, within StarDeviation of the surface as it was), until that reaches 'goal'.
+bool Climb(Mesh& m, int v, double radius, double goal)
 {
   const auto& inc = m.Inc[v];
   if (inc.empty())
@@ -135,6 +136,8 @@ bool Climb(Mesh& m, int v)
       if (active < 0 || m.Q[t] < m.Q[active])
         active = t;
     const double worst0 = m.Q[active];
+    if (worst0 >= goal)
+      break;
     const double h = 1e-5 * length;
     double g[3];
     for (int d = 0; d < 3; ++d)
@@ -160,6 +163,8 @@ bool Climb(Mesh& m, int v)
       double y[3];
       for (int d = 0; d < 3; ++d)
         y[d] = x[d] + step * g[d] / norm;
+      if (radius < std::numeric_limits<double>::infinity() && !(StarDeviation(m, v, y) <= radius))
+        continue;
       double worst, sum;
       StarQuality(m, v, y, worst, sum);
       if (worst > worst0 + 1e-12)
