@@ -5,7 +5,7 @@ Chain: exact phantom labels -> one conforming surface (amLabelSurface) -> smooth
 Hausdorff-bounded remeshing -> TetGen constrained Delaunay mesh with graded sizes
 (amTetrahedralize) -> element quality and the per-region table (amMeshQuality).
 Checks every surface region is present in the tetrahedral mesh with the volume its surface
-encloses, and that no tetrahedron is inverted; prints the table; writes .vtu, .mesh, .msh, .csv.
+encloses (to 0.5 % where the surface moved to free slivers), and that no tetrahedron is inverted; prints the table; writes .vtu, .mesh, .msh, .csv.
 Then the second backend, CGAL Mesh_3 straight from the label map (amLabelMapTetrahedralize),
 with its table beside: every organ must be there too.
 
@@ -51,6 +51,13 @@ print("surface: %d triangles; mesh: %d points, %d tetrahedra (%d Steiner points)
 # TetGen's own mesh before Anatomesh's element improvement (ImproveQuality, on by default).
 print("TetGen alone: mean Q %.3f, worst %.2f; after the improvement: see the table"
       % (tets.GetMeanQualityBeforeImprovement(), tets.GetWorstQualityBeforeImprovement()))
+# Where the surface forces slivers (interfaces meeting at a small angle), the improvement may move
+# it by up to MaximumSurfaceDeviation (0.2 mm by default) to free them: the volumes then match the
+# enclosed ones to a fraction of a percent instead of exactly.
+moved = tets.GetSurfaceDeviation()
+print("surface moved by %.3f mm to free slivers; %d elements left above Q 10 or below 10 degrees"
+      % (moved, tets.GetNumberOfSlivers()))
+volume_tolerance = 1e-6 if moved == 0 else 0.005
 
 # The volume each region's surface encloses (divergence theorem over its oriented triangles).
 s = remesh.GetOutput()
@@ -78,7 +85,7 @@ for r in range(table.GetNumberOfRows()):
     print("%6s %8d %8d %9d %7.3f %9.2f %9.2f %8d %12.1f %12.1f" % (
         "all" if region == -1 else region, row["np"], row["nt"], row["ne"], row["MeanQuality"],
         row["MaximumQuality"], row["MinimumDihedralAngle"], row["InvertedTetrahedra"], row["Volume"], expected))
-    ok = ok and row["InvertedTetrahedra"] == 0 and abs(row["Volume"] - expected) <= 1e-6 * abs(expected)
+    ok = ok and row["InvertedTetrahedra"] == 0 and abs(row["Volume"] - expected) <= volume_tolerance * abs(expected)
     if region != -1:
         found.add(region)
 if found != set(enclosed):

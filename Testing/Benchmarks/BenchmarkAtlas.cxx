@@ -88,6 +88,8 @@ void Chain(benchmark::State& state)
       state.counters["mean_Q"] = table->GetValueByName(last, "MeanQuality").ToDouble();
       state.counters["worst_Q"] = table->GetValueByName(last, "MaximumQuality").ToDouble();
       state.counters["min_dihedral"] = table->GetValueByName(last, "MinimumDihedralAngle").ToDouble();
+      state.counters["slivers"] = static_cast<double>(tetra->GetNumberOfSlivers());
+      state.counters["surface_moved_mm"] = tetra->GetSurfaceDeviation();
     }
     state.counters["peak_MB"] = PeakMegabytes();
   }

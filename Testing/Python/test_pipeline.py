@@ -122,6 +122,22 @@ class ThoraxJob(unittest.TestCase):
         leftovers = [f for f in os.listdir(out) if ".tmp" in f]
         self.assertEqual(leftovers, [])
 
+    def test_paper_table_pipeline_has_no_sliver(self):
+        # The paper's Table 1 case (the ten-organ phantom's exact labels) at 2 mm: every organ a region,
+        # worst Q <= 10 and every dihedral angle >= 10 degrees once the surface may move 0.5 mm.
+        out = os.path.join(TMP, "paper_table")
+        shutil.rmtree(out, ignore_errors=True)
+        code, stdout, stderr = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "paper_table.xml"),
+                                   "--output", out, "--set", "spacing=2", "--set", "deviation=0.5")
+        self.assertEqual(code, 0, stderr)
+        table = np.genfromtxt(os.path.join(out, "phantom_quality.csv"), delimiter=",", names=True)
+        self.assertEqual(sorted(int(r) for r in table["Region"] if r > 0), list(range(1, 11)))
+        whole = table[table["Region"] == -1][0]
+        self.assertLessEqual(whole["MaximumQuality"], 10.0)
+        self.assertGreaterEqual(whole["MinimumDihedralAngle"], 10.0)
+        self.assertLess(whole["MeanQuality"], 1.45)
+        self.assertEqual(whole["InvertedTetrahedra"], 0)
+
     def test_defaults_can_name_files_beside_the_pipeline(self):
         folder = os.path.join(TMP, "beside_pipeline")
         shutil.rmtree(folder, ignore_errors=True)
