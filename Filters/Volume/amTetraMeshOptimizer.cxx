@@ -318,8 +318,9 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
   grid->GetCellData()->AddArray(region);
   grid->GetCellData()->SetActiveScalars(region->GetName());
 
-  // Slivers that changed region moved the surface: its triangles are the mesh's faces anew.
-  if (report.Relabels > 0)
+  // Slivers that changed region, or surface edges split near them, changed the surface's
+  // triangles: they are the mesh's faces anew.
+  if (report.Relabels + report.SurfaceSplits > 0)
   {
     fixed = amTetraInterfaceUpdate::Rebuild(surface, points, tets, regions, background);
     ns = static_cast<vtkIdType>(fixed.size());

@@ -286,7 +286,7 @@ class PipelineErrors(unittest.TestCase):
                 <Input from="p" port="Labels"/><Property name="FileName" value="%s"/>
               </Filter>
             </AnatomeshPipeline>""" % scan)
-        self.assertEqual(run("run", src, "--quiet")[0], 0)
+        self.assertEqual(run("run", src, "--quiet", "--output", os.path.join(TMP, "make_scan"))[0], 0)
         before = open(scan, "rb").read()
         # The same file through another spelling of its path.
         other = os.path.join(TMP, "..", os.path.basename(TMP), ".", "overwrite_me.nii.gz")

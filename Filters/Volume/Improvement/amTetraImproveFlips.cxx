@@ -75,13 +75,7 @@ bool Flip23(Mesh& m, int t, int i)
   const int d = x[i], a = x[(i + 1) % 4], b = x[(i + 2) % 4], c = x[(i + 3) % 4];
   if (m.FixedFaces.count(Sorted(a, b, c)))
     return false;
-  int other = -1;
-  for (int s : m.Inc[a])
-    if (s != t && m.Has(s, b) && m.Has(s, c))
-    {
-      other = s;
-      break;
-    }
+  const int other = m.Across(t, i);
   if (other < 0 || m.R[other] != m.R[t])
     return false;
   int e = -1;

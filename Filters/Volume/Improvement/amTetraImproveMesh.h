@@ -137,6 +137,16 @@ public:
     const Tet& x = this->T[t];
     return x[0] == v || x[1] == v || x[2] == v || x[3] == v;
   }
+  /// The tetrahedron on the other side of face i of t (the face opposite its vertex i), -1 for none.
+  int Across(int t, int i) const
+  {
+    const Tet& x = this->T[t];
+    const int a = x[(i + 1) % 4], b = x[(i + 2) % 4], c = x[(i + 3) % 4];
+    for (int s : this->Inc[a])
+      if (s != t && this->Has(s, b) && this->Has(s, c))
+        return s;
+    return -1;
+  }
   bool Connected(int a, int b) const
   {
     for (int t : this->Inc[a])

@@ -9,17 +9,6 @@ namespace amTetraImprove
 {
 namespace
 {
-/// The tetrahedron on the other side of face i of t (the face opposite its vertex i), -1 for none.
-int Across(const Mesh& m, int t, int i)
-{
-  const Tet& x = m.T[t];
-  const int a = x[(i + 1) % 4], b = x[(i + 2) % 4], c = x[(i + 3) % 4];
-  for (int s : m.Inc[a])
-    if (s != t && m.Has(s, b) && m.Has(s, c))
-      return s;
-  return -1;
-}
-
 Tri Face(const Tet& x, int i)
 {
   return Sorted(x[(i + 1) % 4], x[(i + 2) % 4], x[(i + 3) % 4]);
@@ -58,7 +47,7 @@ double Relabel(Mesh& m, int t, double maxDeviation, std::unordered_map<int, long
     return -1;
   int across[4];
   for (int i = 0; i < 4; ++i)
-    across[i] = Across(m, t, i);
+    across[i] = m.Across(t, i);
   constexpr int background = std::numeric_limits<int>::min();
   auto regionOf = [&](int s) { return s < 0 ? background : m.R[s]; };
   double bestDeviation = std::numeric_limits<double>::infinity();
