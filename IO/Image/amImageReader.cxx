@@ -3,6 +3,7 @@
 #include "amITKBridge.h"
 #include "amMetaImageCheck.h"
 #include "amNiftiCheck.h"
+#include "amNrrdCheck.h"
 #include "amProvenance.h"
 
 #include "vtkFieldData.h"
@@ -28,13 +29,13 @@
 #include <itkNrrdImageIOFactory.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <numeric>
 #include <sstream>
-#include <filesystem>
-#include <fstream>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -141,7 +142,7 @@ struct Vec
 
 // Trilinear resampling of an irregular (tilted and/or unevenly spaced) stack of parallel slices
 // onto a regular grid aligned with the slices.
-template <typename T>
+template<typename T>
 vtkSmartPointer<vtkImageData> ResampleStack(const amITK::Image3<T>* stack, const std::vector<Slice>& slices,
   const double r[3], const double c[3], const double n[3], double sliceSpacing)
 {
@@ -153,8 +154,8 @@ vtkSmartPointer<vtkImageData> ResampleStack(const amITK::Image3<T>* stack, const
   double amin = 0, amax = 0, bmin = 0, bmax = 0;
   for (size_t k = 0; k < K; ++k)
   {
-    const double d[3] = { slices[k].Position[0] - slices[0].Position[0],
-      slices[k].Position[1] - slices[0].Position[1], slices[k].Position[2] - slices[0].Position[2] };
+    const double d[3] = { slices[k].Position[0] - slices[0].Position[0], slices[k].Position[1] - slices[0].Position[1],
+      slices[k].Position[2] - slices[0].Position[2] };
     a[k] = Vec::Dot(d, r);
     b[k] = Vec::Dot(d, c);
     amin = std::min(amin, a[k]);
@@ -271,27 +272,62 @@ bool amImageReader::LoadFile(const std::string& path)
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
   if (!io)
   {
-    vtkErrorMacro("Cannot read '" << path
-                                  << "': not a NIfTI, NRRD, MetaImage or DICOM file, or its header is corrupt.");
-    return false;
-  }
-  if (dynamic_cast<itk::GDCMImageIO*>(io.GetPointer()))
-    return this->LoadDicomSeries(FolderOf(path), path);
-  std::string format = io->GetNameOfClass();
-  if (format.find("Nifti") != std::string::npos)
-  {
-    // Before ITK: it zero-fills truncated data and aborts on a NaN in the sform.
-    const std::string why = amNiftiCheck::Check(path);
+    // ITK recognises none of its formats: when the name says which one it should be, say why not.
+    std::string lower = path;
+    std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+    const auto endsWith = [&](const std::string& end) {
+      return lower.size() >= end.size() && lower.compare(lower.size() - end.size(), end.size(), end) == 0;
+    };
+    const std::string why = amNiftiCheck::IsNifti(lower) ? amNiftiCheck::Check(path)
+      : endsWith(".nrrd") || endsWith(".nhdr")           ? amNrrdCheck::Check(path)
+                                                         : std::string();
     if (!why.empty())
     {
       vtkErrorMacro("Cannot read '" << path << "': " << why << ".");
       return false;
     }
+    vtkErrorMacro(
+      "Cannot read '" << path << "': not a NIfTI, NRRD, MetaImage or DICOM file, or its header is corrupt.");
+    return false;
   }
-  std::string readPath = path, repaired;
+  if (dynamic_cast<itk::GDCMImageIO*>(io.GetPointer()))
+    return this->LoadDicomSeries(FolderOf(path), path);
+  std::string format = io->GetNameOfClass();
+  // Before ITK: it zero-fills truncated NIfTI data, aborts on a NaN in a sform, reads a NaN NRRD
+  // spacing as 1, blocks on a data file that is a pipe, and leaves the end of an understated
+  // compressed MetaImage undefined.
+  struct RemoveRepaired
+  {
+    std::string Path;
+    ~RemoveRepaired()
+    {
+      if (!Path.empty())
+        std::remove(Path.c_str());
+    }
+  } nrrdRepaired, metaRepaired;
+  std::string problem;
+  if (format.find("Nifti") != std::string::npos)
+    problem = amNiftiCheck::Check(path);
+  else if (format.find("Nrrd") != std::string::npos)
+    problem = amNrrdCheck::Check(path);
+  else if (format.find("Meta") != std::string::npos)
+    problem = amMetaImageCheck::Check(path, metaRepaired.Path);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Cannot read '" << path << "': " << problem << ".");
+    return false;
+  }
+  std::string readPath = path;
+  if (!metaRepaired.Path.empty())
+  {
+    vtkWarningMacro("'" << path
+                        << "' understates its CompressedDataSize; read with the size of the actual "
+                           "compressed stream (ITK would otherwise leave the last voxels undefined).");
+    readPath = metaRepaired.Path;
+  }
   try
   {
-    io->SetFileName(path);
+    io->SetFileName(readPath);
     io->ReadImageInformation();
   }
   catch (const itk::ExceptionObject& e)
@@ -299,11 +335,12 @@ bool amImageReader::LoadFile(const std::string& path)
     const std::string what = e.what();
     if (format.find("Nrrd") != std::string::npos &&
       what.find("nrrdSpacingStatusScalarWithSpace") != std::string::npos &&
-      !(repaired = RepairNrrdSpacingsWithSpace(path)).empty())
+      !(nrrdRepaired.Path = RepairNrrdSpacingsWithSpace(path)).empty())
     {
-      vtkWarningMacro("'" << path << "' gives both 'space' and per-axis 'spacings', which NRRD forbids; read it "
-                          "ignoring the 'space' line (identity direction, spacings kept).");
-      readPath = repaired;
+      vtkWarningMacro("'" << path
+                          << "' gives both 'space' and per-axis 'spacings', which NRRD forbids; read it "
+                             "ignoring the 'space' line (identity direction, spacings kept).");
+      readPath = nrrdRepaired.Path;
       try
       {
         io->SetFileName(readPath);
@@ -311,7 +348,6 @@ bool amImageReader::LoadFile(const std::string& path)
       }
       catch (const itk::ExceptionObject& e2)
       {
-        std::remove(repaired.c_str());
         vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(e2.what()));
         return false;
       }
@@ -322,45 +358,11 @@ bool amImageReader::LoadFile(const std::string& path)
       return false;
     }
   }
-  struct RemoveRepaired
-  {
-    std::string Path;
-    ~RemoveRepaired()
-    {
-      if (!Path.empty())
-        std::remove(Path.c_str());
-    }
-  } removeRepaired{ repaired }, metaRepaired{ std::string() };
-  if (format.find("Meta") != std::string::npos)
-  {
-    const std::string problem = amMetaImageCheck::Check(path, metaRepaired.Path);
-    if (!problem.empty())
-    {
-      vtkErrorMacro("Cannot read '" << path << "': " << problem << ".");
-      return false;
-    }
-    if (!metaRepaired.Path.empty())
-    {
-      vtkWarningMacro("'" << path << "' understates its CompressedDataSize; read with the size of the actual "
-                          "compressed stream (ITK would otherwise leave the last voxels undefined).");
-      readPath = metaRepaired.Path;
-      try
-      {
-        io->SetFileName(readPath);
-        io->ReadImageInformation();
-      }
-      catch (const itk::ExceptionObject& e)
-      {
-        vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(e.what()));
-        return false;
-      }
-    }
-  }
   const unsigned dim = io->GetNumberOfDimensions();
   if (dim < 2 || dim > 4 || (dim == 4 && io->GetDimensions(3) != 1))
   {
-    vtkErrorMacro("'" << path << "' has " << dim << " dimensions"
-                      << (dim == 4 ? " with more than one volume" : "") << "; a 2-D or 3-D scalar image is needed.");
+    vtkErrorMacro("'" << path << "' has " << dim << " dimensions" << (dim == 4 ? " with more than one volume" : "")
+                      << "; a 2-D or 3-D scalar image is needed.");
     return false;
   }
   if (io->GetNumberOfComponents() != 1)
@@ -624,8 +626,8 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
   });
   if (!known || !ok)
   {
-    vtkErrorMacro("Cannot read the DICOM series in '" << folder << "': "
-                                                     << (known ? error : std::string("unsupported pixel type")));
+    vtkErrorMacro("Cannot read the DICOM series in '"
+      << folder << "': " << (known ? error : std::string("unsupported pixel type")));
     return false;
   }
   AddString(this->Cache, "SourceFormat", "DICOM");

@@ -145,7 +145,7 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
   {
     // ITK does not always report a short write (a full disk, a file size limit): the file must read
     // back whole before it replaces anything.
-    const std::string incomplete = amNiftiCheck::Check(file.TemporaryPath());
+    const std::string incomplete = amNiftiCheck::Check(file.TemporaryPath(), false);
     if (!incomplete.empty())
     {
       ok = false;

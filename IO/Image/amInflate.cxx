@@ -7,7 +7,8 @@
 #include <sys/stat.h>
 
 amInflate::Status amInflate::Stream(const std::string& path, long long offset, size_t keep,
-  std::vector<unsigned char>& kept, long long& produced, long long& consumed, std::string& message)
+  std::vector<unsigned char>& kept, long long& produced, long long& consumed, std::string& message,
+  const std::function<void(const unsigned char*, size_t)>& sink)
 {
   produced = consumed = 0;
   std::ifstream in(path, std::ios::binary);
@@ -41,6 +42,8 @@ amInflate::Status amInflate::Stream(const std::string& path, long long offset, s
     const size_t out = outBuf.size() - zs.avail_out;
     if (kept.size() < keep)
       kept.insert(kept.end(), outBuf.begin(), outBuf.begin() + std::min(out, keep - kept.size()));
+    if (sink && out > 0)
+      sink(outBuf.data(), out);
     produced += static_cast<long long>(out);
     if (status == Z_BUF_ERROR)
       status = Z_OK; // no progress this round: read more
@@ -58,4 +61,10 @@ long long amInflate::FileSize(const std::string& path)
 {
   struct stat st;
   return ::stat(path.c_str(), &st) == 0 ? static_cast<long long>(st.st_size) : -1;
+}
+
+bool amInflate::IsRegularFile(const std::string& path)
+{
+  struct stat st;
+  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }

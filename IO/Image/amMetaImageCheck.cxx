@@ -1,8 +1,11 @@
 #include "amMetaImageCheck.h"
 
+#include "amByteCount.h"
 #include "amInflate.h"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +19,47 @@ std::string Trim(const std::string& s)
   const auto b = s.find_first_not_of(" \t\r\n");
   const auto e = s.find_last_not_of(" \t\r\n");
   return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+/// The numbers of a header value, parsed as C does ("nan" and "inf" included, which the stream
+/// operators refuse); 'bad' gets the first word that is not a number.
+std::vector<double> Numbers(const std::string& value, std::string& bad)
+{
+  std::istringstream in(value);
+  std::vector<double> numbers;
+  std::string word;
+  while (in >> word)
+  {
+    char* end = nullptr;
+    const double x = std::strtod(word.c_str(), &end);
+    if (!end || *end != '\0')
+    {
+      bad = word;
+      break;
+    }
+    numbers.push_back(x);
+  }
+  return numbers;
+}
+
+/// "" when a geometry field is finite (and, for a voxel size, positive); otherwise what is wrong.
+std::string CheckGeometry(const std::string& key, const std::string& value)
+{
+  std::string bad;
+  const std::vector<double> v = Numbers(value, bad);
+  const bool size = key == "ElementSpacing" || key == "ElementSize";
+  for (size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]) || (size && v[i] <= 0))
+      return "its " + key + " gives " + std::to_string(v[i]) + " for axis " + std::to_string(i) +
+        (size ? "; a voxel size must be a finite number > 0" : "; it must be finite");
+  if ((key == "TransformMatrix" || key == "Rotation" || key == "Orientation") && v.size() == 9)
+  {
+    const double det =
+      v[0] * (v[4] * v[8] - v[5] * v[7]) - v[1] * (v[3] * v[8] - v[5] * v[6]) + v[2] * (v[3] * v[7] - v[4] * v[6]);
+    if (det == 0)
+      return "its " + key + " is degenerate (determinant 0): it maps the voxels to a plane";
+  }
+  return "";
 }
 
 std::string FolderOf(const std::string& path)
@@ -47,6 +91,13 @@ std::string amMetaImageCheck::Check(const std::string& path, std::string& repair
       while (v >> d)
         dims.push_back(d);
     }
+    else if (key == "ElementSpacing" || key == "ElementSize" || key == "Offset" || key == "Position" ||
+      key == "Origin" || key == "TransformMatrix" || key == "Rotation" || key == "Orientation")
+    {
+      const std::string problem = CheckGeometry(key, value);
+      if (!problem.empty())
+        return problem;
+    }
     else if (key == "ElementNumberOfChannels")
       v >> channels;
     else if (key == "CompressedData")
@@ -71,9 +122,16 @@ std::string amMetaImageCheck::Check(const std::string& path, std::string& repair
   if (dims.empty() || elementBytes == 0 || dataFile.empty() || dataFile == "LIST" ||
     dataFile.find('%') != std::string::npos || dataFile.find(' ') != std::string::npos)
     return std::string();
-  long long expected = elementBytes * channels;
+  long long expected = elementBytes;
+  if (!amByteCount::Multiply(expected, channels) || channels < 1)
+    return "its ElementNumberOfChannels is " + std::to_string(channels) + "; it must be >= 1";
   for (long long d : dims)
-    expected *= d;
+  {
+    if (d < 1)
+      return "its DimSize gives " + std::to_string(d) + "; every size must be >= 1";
+    if (!amByteCount::Multiply(expected, d))
+      return "its DimSize asks for more voxel data than any file holds";
+  }
   long long available;
   std::string where;
   if (dataFile == "LOCAL")
@@ -87,6 +145,8 @@ std::string amMetaImageCheck::Check(const std::string& path, std::string& repair
     available = amInflate::FileSize(where);
     if (available < 0)
       return "its data file '" + where + "' does not exist";
+    if (!amInflate::IsRegularFile(where))
+      return "its data file '" + where + "' is not a regular file";
   }
   if (compressed)
   {

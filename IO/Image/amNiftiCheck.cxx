@@ -1,5 +1,6 @@
 #include "amNiftiCheck.h"
 
+#include "amByteCount.h"
 #include "amInflate.h"
 
 #include <algorithm>
@@ -53,6 +54,78 @@ struct Header
   }
 };
 
+/// Counts the NaN and infinite values among a stream's float32 or float64 voxels (the bytes from
+/// Start to End), fed in chunks of any size: ITK's NIfTI reader sets them to 0 without a word.
+struct NonFiniteCounter
+{
+  long long Start, End;
+  int Bytes;
+  bool Swap;
+  long long Position = 0, Count = 0;
+  unsigned char Value[8];
+  int Filled = 0;
+
+  void Feed(const unsigned char* p, size_t n)
+  {
+    for (size_t i = 0; i < n; ++i, ++this->Position)
+    {
+      if (this->Position < this->Start || this->Position >= this->End)
+        continue;
+      this->Value[this->Filled++] = p[i];
+      if (this->Filled < this->Bytes)
+        continue;
+      this->Filled = 0;
+      if (this->Swap)
+        std::reverse(this->Value, this->Value + this->Bytes);
+      double v;
+      if (this->Bytes == 4)
+      {
+        float f;
+        std::memcpy(&f, this->Value, 4);
+        v = f;
+      }
+      else
+        std::memcpy(&v, this->Value, 8);
+      this->Count += std::isfinite(v) ? 0 : 1;
+    }
+  }
+};
+
+/// The number of non-finite voxels of a float32 (datatype 16) or float64 (64) image, 0 otherwise.
+long long CountNonFinite(
+  const std::string& path, bool compressed, int16_t datatype, bool swap, long long start, long long bytes)
+{
+  if (datatype != 16 && datatype != 64)
+    return 0;
+  NonFiniteCounter counter{ start, start + bytes, datatype == 16 ? 4 : 8, swap };
+  if (compressed)
+  {
+    std::vector<unsigned char> none;
+    long long produced = 0, consumed = 0;
+    std::string message;
+    amInflate::Stream(
+      path, 0, 0, none, produced, consumed, message, [&](const unsigned char* p, size_t n) { counter.Feed(p, n); });
+    return counter.Count;
+  }
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(start);
+  counter.Position = start;
+  std::vector<unsigned char> chunk(1 << 20);
+  while (in && counter.Position < counter.End)
+  {
+    in.read(reinterpret_cast<char*>(chunk.data()), static_cast<std::streamsize>(chunk.size()));
+    counter.Feed(chunk.data(), static_cast<size_t>(in.gcount()));
+  }
+  return counter.Count;
+}
+
+std::string NonFiniteMessage(long long count)
+{
+  return "it holds " + std::to_string(count) +
+    " voxel(s) that are NaN or infinite, which ITK would read as 0 (a masked or failed computation?); "
+    "replace them with a number before meshing or segmenting";
+}
+
 std::string Describe(double v)
 {
   std::ostringstream os;
@@ -66,7 +139,7 @@ bool amNiftiCheck::IsNifti(const std::string& path)
   return EndsWith(path, ".nii") || EndsWith(path, ".nii.gz") || EndsWith(path, ".hdr") || EndsWith(path, ".hdr.gz");
 }
 
-std::string amNiftiCheck::Check(const std::string& path)
+std::string amNiftiCheck::Check(const std::string& path, bool finiteVoxels)
 {
   const bool compressed = EndsWith(path, ".gz");
   std::vector<unsigned char> head;
@@ -117,12 +190,15 @@ std::string amNiftiCheck::Check(const std::string& path)
     if (n < 1)
       return "its header gives dim[" + std::to_string(d) + "] = " + std::to_string(n) +
         "; every dimension must be >= 1";
-    voxels *= n;
+    if (!amByteCount::Multiply(voxels, n))
+      return "its dimensions (dim) ask for more voxels than any file holds";
   }
   const int16_t bitpix = h.Get<int16_t>(72);
   if (bitpix <= 0 || bitpix % 8 != 0)
     return "its header gives " + std::to_string(bitpix) + " bits per voxel (bitpix)";
-  const long long dataBytes = voxels * (bitpix / 8);
+  long long dataBytes = voxels;
+  if (!amByteCount::Multiply(dataBytes, bitpix / 8))
+    return "its dimensions (dim) and bitpix ask for more voxel data than any file holds";
   static const char* axes[3] = { "x", "y", "z" };
   for (int d = 1; d <= std::min<int>(rank, 3); ++d)
   {
@@ -170,8 +246,9 @@ std::string amNiftiCheck::Check(const std::string& path)
   if (single)
   {
     const float offset = h.Get<float>(108);
-    if (!std::isfinite(offset) || offset < 348)
-      return "its voxel data offset (vox_offset) is " + Describe(offset) + "; a single-file NIfTI needs at least 352";
+    if (!std::isfinite(offset) || offset < 348 || offset > static_cast<float>(amByteCount::Limit - dataBytes))
+      return "its voxel data offset (vox_offset) is " + Describe(offset) +
+        "; a single-file NIfTI needs at least 352 and at most the file's size";
     const long long need = static_cast<long long>(offset) + dataBytes;
     if (total < need)
       return "its voxel data is truncated: the header announces " + std::to_string(dataBytes) +
@@ -179,6 +256,11 @@ std::string amNiftiCheck::Check(const std::string& path)
         std::string(compressed ? "decompressed " : "") + "file holds " +
         std::to_string(std::max(0LL, total - static_cast<long long>(offset))) +
         (offset > total ? " (the offset lies past its end)" : "");
+    const long long nonFinite = !finiteVoxels
+      ? 0
+      : CountNonFinite(path, compressed, h.Get<int16_t>(70), swap, static_cast<long long>(offset), dataBytes);
+    if (nonFinite > 0)
+      return NonFiniteMessage(nonFinite);
   }
   else
   {
@@ -194,10 +276,18 @@ std::string amNiftiCheck::Check(const std::string& path)
     if (bytes < 0)
       return "its data file '" + img + "' does not exist";
     const float offset = h.Get<float>(108);
+    if (std::isfinite(offset) && offset >= static_cast<float>(amByteCount::Limit - dataBytes))
+      return "its voxel data offset (vox_offset) is " + Describe(offset) + ", past the end of any file";
     const long long start = std::isfinite(offset) && offset > 0 ? static_cast<long long>(offset) : 0;
     if (bytes < start + dataBytes)
       return "its data file '" + img + "' is truncated (" + std::to_string(bytes) + " bytes for the " +
         std::to_string(start + dataBytes) + " the header announces)";
+    const bool imgCompressed = amInflate::FileSize(img) < 0;
+    const long long nonFinite = !finiteVoxels
+      ? 0
+      : CountNonFinite(imgCompressed ? img + ".gz" : img, imgCompressed, h.Get<int16_t>(70), swap, start, dataBytes);
+    if (nonFinite > 0)
+      return NonFiniteMessage(nonFinite);
   }
   return "";
 }

@@ -24,7 +24,8 @@ public:
   /// Whether the path names a NIfTI file by its extension (.nii, .nii.gz, .hdr, .hdr.gz).
   static bool IsNifti(const std::string& path);
   /// "" when the file can be read fully; otherwise what is wrong (the caller names the file).
-  static std::string Check(const std::string& path);
+  /// 'finiteVoxels': float voxels that are NaN or infinite are wrong too (ITK reads them as 0).
+  static std::string Check(const std::string& path, bool finiteVoxels = true);
 };
 
 #endif

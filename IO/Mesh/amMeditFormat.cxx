@@ -1,5 +1,6 @@
 #include "amMeditFormat.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -94,6 +95,9 @@ bool ReadCount(Tokens& t, long long& n, std::string& error, const std::string& s
 
 namespace
 {
+// Entries reserved before a section is read, whatever count it announces.
+constexpr long long FirstReservation = 1 << 16;
+
 // VTK component index of each Medit component of a symmetric tensor.
 constexpr int MeditToVTK[6] = { 0, 3, 1, 5, 4, 2 };
 }
@@ -159,23 +163,36 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
         return false;
       if (n != 2 && n != 3)
         return t.Fail(error, "Dimension must be 2 or 3, found " + std::to_string(n));
+      if (sawVertices && n != mesh.Dimension)
+        return t.Fail(error,
+          "Dimension " + std::to_string(n) + " after the vertices were read in dimension " +
+            std::to_string(mesh.Dimension));
       mesh.Dimension = static_cast<int>(n);
     }
     else if (key == "Vertices")
     {
+      // A second list would renumber the vertices the elements read so far refer to.
+      if (sawVertices)
+        return t.Fail(error, "a second Vertices section");
       if (!ReadCount(t, n, error, "vertices"))
         return false;
-      mesh.Points.assign(static_cast<size_t>(n) * 3, 0.0);
-      mesh.PointRefs.assign(static_cast<size_t>(n), 0);
+      // The count is only a claim: storage grows with what is read, so a short file announcing
+      // billions of vertices fails at its end instead of allocating for them first.
+      mesh.Points.clear();
+      mesh.PointRefs.clear();
+      mesh.Points.reserve(static_cast<size_t>(std::min(n, FirstReservation)) * 3);
+      mesh.PointRefs.reserve(static_cast<size_t>(std::min(n, FirstReservation)));
       for (long long i = 0; i < n; ++i)
       {
+        double x[3] = { 0, 0, 0 };
         for (int d = 0; d < mesh.Dimension; ++d)
-          if (!t.Real(mesh.Points[3 * i + d], error, "a vertex coordinate"))
+          if (!t.Real(x[d], error, "a vertex coordinate"))
             return false;
         long long ref;
         if (!t.Integer(ref, error, "a vertex reference"))
           return false;
-        mesh.PointRefs[i] = static_cast<int>(ref);
+        mesh.Points.insert(mesh.Points.end(), x, x + 3);
+        mesh.PointRefs.push_back(static_cast<int>(ref));
       }
       sawVertices = true;
     }
@@ -188,8 +205,8 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
       Block b;
       b.Keyword = key;
       b.NodesPerCell = nodes;
-      b.Connectivity.resize(static_cast<size_t>(n) * nodes);
-      b.Refs.resize(static_cast<size_t>(n));
+      b.Connectivity.reserve(static_cast<size_t>(std::min(n, FirstReservation)) * nodes);
+      b.Refs.reserve(static_cast<size_t>(std::min(n, FirstReservation)));
       const long long nv = static_cast<long long>(mesh.PointRefs.size());
       for (long long i = 0; i < n; ++i)
       {
@@ -199,14 +216,15 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
           if (!t.Integer(id, error, "a vertex index"))
             return false;
           if (id < 1 || id > nv)
-            return t.Fail(error, key + " #" + std::to_string(i + 1) + " uses vertex " + std::to_string(id) +
-                " (the mesh has " + std::to_string(nv) + ")");
-          b.Connectivity[i * nodes + k] = id - 1;
+            return t.Fail(error,
+              key + " #" + std::to_string(i + 1) + " uses vertex " + std::to_string(id) + " (the mesh has " +
+                std::to_string(nv) + ")");
+          b.Connectivity.push_back(id - 1);
         }
         long long ref;
         if (!t.Integer(ref, error, "an element reference"))
           return false;
-        b.Refs[i] = static_cast<int>(ref);
+        b.Refs.push_back(static_cast<int>(ref));
       }
       mesh.Blocks.push_back(std::move(b));
     }
@@ -236,7 +254,8 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
   // Without End, a file cut between two sections (before its Tetrahedra, say) would read as a
   // valid smaller mesh: every writer (Medit, Mmg, Gmsh, TetGen, CGAL, ours) ends with End.
   if (!sawEnd)
-    return t.Fail(error, "the file ends without its End keyword after the " + last +
+    return t.Fail(error,
+      "the file ends without its End keyword after the " + last +
         " section: it is cut short, or not a complete Medit mesh");
   return true;
 }
@@ -268,8 +287,9 @@ bool amMeditFormat::ReadSolution(std::istream& in, Mesh& mesh, std::string& erro
       if (!ReadCount(t, n, error, "solution values"))
         return false;
       if (static_cast<size_t>(n) != mesh.PointRefs.size())
-        return t.Fail(error, "SolAtVertices has " + std::to_string(n) + " values for " +
-            std::to_string(mesh.PointRefs.size()) + " vertices");
+        return t.Fail(error,
+          "SolAtVertices has " + std::to_string(n) + " values for " + std::to_string(mesh.PointRefs.size()) +
+            " vertices");
       long long k;
       if (!t.Integer(k, error, "the number of solution fields"))
         return false;
@@ -284,15 +304,19 @@ bool amMeditFormat::ReadSolution(std::istream& in, Mesh& mesh, std::string& erro
         if (type < 1 || type > 3)
           return t.Fail(error, "unsupported solution type " + std::to_string(type) + " (1, 2 or 3 expected)");
         f.Type = static_cast<int>(type);
-        f.Values.resize(static_cast<size_t>(n) * f.Components(dim));
+        f.Values.reserve(static_cast<size_t>(std::min(n, FirstReservation)) * f.Components(dim));
       }
       for (long long i = 0; i < n; ++i)
         for (auto& f : fields)
         {
           const int c = f.Components(dim);
           for (int j = 0; j < c; ++j)
-            if (!t.Real(f.Values[i * c + j], error, "a solution value"))
+          {
+            double v;
+            if (!t.Real(v, error, "a solution value"))
               return false;
+            f.Values.push_back(v);
+          }
         }
       for (auto& f : fields)
         mesh.Fields.push_back(std::move(f));
@@ -332,7 +356,8 @@ bool amMeditFormat::WriteMesh(std::ostream& out, const Mesh& mesh)
 bool amMeditFormat::WriteSolution(std::ostream& out, const Mesh& mesh)
 {
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
-  out << "MeshVersionFormatted 2\n\nDimension 3\n\nSolAtVertices\n" << mesh.PointRefs.size() << "\n"
+  out << "MeshVersionFormatted 2\n\nDimension 3\n\nSolAtVertices\n"
+      << mesh.PointRefs.size() << "\n"
       << mesh.Fields.size();
   for (const Field& f : mesh.Fields)
     out << " " << f.Type;

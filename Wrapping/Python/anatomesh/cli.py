@@ -223,13 +223,23 @@ def main(argv=None):
         from vtkmodules.vtkCommonCore import vtkLogger, vtkOutputWindow
         vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)
         vtkOutputWindow.GetInstance().SetDisplayModeToAlwaysStdErr()
-    if args.command == "run":
-        return _run(args)
-    if args.command == "batch":
-        from . import batch
-        return batch.main(args)
-    if args.command == "filters":
-        return _filters(args)
+    try:
+        if args.command == "run":
+            return _run(args)
+        if args.command == "batch":
+            from . import batch
+            return batch.main(args)
+        if args.command == "filters":
+            return _filters(args)
+    except OSError as e:
+        # A folder that cannot be made or written (a file in its place, read-only, full): the path
+        # and the system's words, not a traceback.
+        where = e.filename if e.filename is not None else "output"
+        sys.stderr.write("anatomesh: error: %s: %s\n" % (where, e.strerror or e))
+        return 1
+    except KeyboardInterrupt:
+        sys.stderr.write("anatomesh: interrupted\n")
+        return 130
     parser.print_help()
     return 2
 

@@ -23,13 +23,18 @@ def clear(folder):
 
 
 def _write(folder, record):
+    """Write the marker atomically; on an error (a full disk) no temporary file stays behind."""
     os.makedirs(folder, exist_ok=True)
     tmp = path(folder) + ".tmp%d" % os.getpid()
-    with open(tmp, "w") as f:
-        json.dump(record, f, indent=1, sort_keys=True)
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, path(folder))
+    try:
+        with open(tmp, "w") as f:
+            json.dump(record, f, indent=1, sort_keys=True)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path(folder))
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
 
 
 def write_complete(folder, pipeline, variables, written, data, seconds):
@@ -38,8 +43,13 @@ def write_complete(folder, pipeline, variables, written, data, seconds):
 
 
 def write_failed(folder, pipeline, variables, message):
-    _write(folder, {"status": "failed", "pipeline": os.path.abspath(pipeline), "variables": variables,
-                    "error": message})
+    """Best effort: the error that failed the run matters more than its marker (which a full disk or a
+    read-only folder may refuse too)."""
+    try:
+        _write(folder, {"status": "failed", "pipeline": os.path.abspath(pipeline), "variables": variables,
+                        "error": message})
+    except OSError:
+        pass
 
 
 def read(folder):

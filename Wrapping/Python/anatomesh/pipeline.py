@@ -240,7 +240,7 @@ class Pipeline:
                     raise self._error(line, "%s must be <= %s, got %s" % (where, hi[min(k, len(hi) - 1)], v))
 
     def _port_index(self, step, port, line):
-        if port.isdigit():
+        if re.fullmatch(r"[0-9]+", port):
             count = max(1, len(step.proxy.output_ports))
             if int(port) >= count:
                 raise self._error(line, "filter %r (%s) has %d output port(s), so no port %s (ports: %s)" % (
@@ -287,6 +287,10 @@ class Pipeline:
             if missing:
                 raise self._error(step.line, "filter %r (%s) needs its input %s connected" % (
                     step.name, step.proxy.name, ", ".join(missing)))
+            if step.proxy.is_writer and not any(
+                    p.name == "FileName" and values and values[0] for p, values, _ in step.properties):
+                raise self._error(step.line, "writer %r (%s) needs its FileName property" % (
+                    step.name, step.proxy.name))
 
     def _files(self):
         """(read, written): the files the pipeline reads (readers' file names) and writes (writers'
@@ -584,6 +588,12 @@ def write_vtk_xml(data, path):
         return
     if ext not in writers:
         raise PipelineError("%s: unknown output extension %r (use %s)" % (path, ext, ", ".join(sorted(writers))))
+    holds = {".vti": "vtkImageData", ".vtp": "vtkPolyData", ".vtu": "vtkUnstructuredGrid",
+             ".vtm": "vtkMultiBlockDataSet"}
+    if not data.IsA(holds[ext]):
+        fits = [e for e, kind in sorted(holds.items()) if data.IsA(kind)]
+        raise PipelineError("%s: a %s file holds a %s, but this output is a %s%s" % (
+            path, ext, holds[ext], data.GetClassName(), " (use %s)" % fits[0] if fits else ""))
     writer = writers[ext]()
     if not data.IsA("vtkMultiBlockDataSet"):
         data = _plain_field_data(data)
@@ -596,7 +606,7 @@ def write_vtk_xml(data, path):
     writer.SetDataModeToBinary()
     writer.SetCompressorTypeToZLib()
     try:
-        if not writer.Write():
+        if not writer.Write() or writer.GetErrorCode() or not os.path.exists(tmp):
             raise PipelineError("%s: the VTK XML writer failed (is %s a %s?)" % (path, data.GetClassName(), ext))
         os.replace(tmp, path)
     finally:
