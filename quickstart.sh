@@ -22,8 +22,8 @@ packages=(
   python3 python3-numpy python3-matplotlib python3-mpi4py openmpi-bin python3-meshio python3-nibabel xvfb xauth
 )
 
-# The test suite also fuzzes the parsers (clang's libFuzzer) and mounts small tmpfs folders.
-if [ "$mode" = test ]; then packages+=(clang libclang-rt-14-dev); fi
+# The test suite also fuzzes the parsers (clang's libFuzzer) and reads the meshes back in Gmsh.
+if [ "$mode" = test ]; then packages+=(clang libclang-rt-14-dev gmsh python3-gmsh); fi
 
 # ParaView 5.11's Python package ships its own VTK 9.2 'vtkmodules' and conflicts with python3-vtk9.
 conflicting=()

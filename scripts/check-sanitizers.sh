@@ -18,5 +18,5 @@ cd "$build"
 # Leaks are reported too; VTK's and ITK's singletons that live until exit are not ours.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}"
 export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$here/scripts/lsan.supp}"
-export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=$here/scripts/ubsan.supp}"
 ctest --output-on-failure -j "${ANATOMESH_JOBS:-2}" --timeout 3600 -E '^(Benchmark|Python|ParaView|Docs|Install)' "$@"

@@ -16,6 +16,7 @@
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSMPTools.h"
 #include "vtkTable.h"
@@ -38,9 +39,8 @@ constexpr auto Norm = &amTetraGeometry::Norm;
 constexpr auto Sub = &amTetraGeometry::Sub;
 }
 
-void amMeshQuality::TetraQuality(const double p0[3], const double p1[3], const double p2[3],
-  const double p3[3], double& quality, double& minDihedral, double& maxDihedral,
-  double& radiusRatio, double& volume)
+void amMeshQuality::TetraQuality(const double p0[3], const double p1[3], const double p2[3], const double p3[3],
+  double& quality, double& minDihedral, double& maxDihedral, double& radiusRatio, double& volume)
 {
   const double* p[4] = { p0, p1, p2, p3 };
   volume = amTetraGeometry::SignedVolume(p0, p1, p2, p3);
@@ -106,28 +106,31 @@ int amMeshQuality::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
-int amMeshQuality::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int amMeshQuality::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkTable* table = vtkTable::GetData(outputVector, 1);
-  const vtkIdType ne = input->GetNumberOfCells();
-  if (ne == 0)
+  if (input->GetNumberOfCells() == 0)
   {
     vtkErrorMacro("The input mesh has no cells.");
     return 0;
   }
-  for (vtkIdType c = 0; c < ne; ++c)
-    if (input->GetCellType(c) != VTK_TETRA)
-    {
-      vtkErrorMacro("Cell " << c << " is not a tetrahedron (VTK cell type " << input->GetCellType(c)
-                            << "); MeshQuality measures tetrahedral meshes.");
-      return 0;
-    }
-  vtkDataArray* regionArray = this->RegionArrayName && *this->RegionArrayName
-    ? input->GetCellData()->GetArray(this->RegionArrayName)
-    : nullptr;
+  // A mesh read back from Medit or Gmsh carries its boundary triangles (and maybe edges) beside
+  // its tetrahedra: the tetrahedra are measured, the other cells left out of the output.
+  vtkNew<vtkUnstructuredGrid> tetrahedraOnly;
+  if (!amMeshQuality::TetrahedraOf(input, tetrahedraOnly))
+  {
+    vtkErrorMacro("The input mesh has no tetrahedron (its " << input->GetNumberOfCells() << " cells are of VTK type "
+                                                            << input->GetCellType(0)
+                                                            << "...); MeshQuality measures tetrahedral meshes.");
+    return 0;
+  }
+  if (tetrahedraOnly->GetNumberOfCells() > 0)
+    input = tetrahedraOnly;
+  const vtkIdType ne = input->GetNumberOfCells();
+  vtkDataArray* regionArray =
+    this->RegionArrayName && *this->RegionArrayName ? input->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
   vtkPoints* pts = input->GetPoints();
   for (vtkIdType v = 0; v < input->GetNumberOfPoints(); ++v)
   {
@@ -197,10 +200,7 @@ int amMeshQuality::RequestData(
         return this->V[2] < o.V[2];
       return this->Region < o.Region;
     }
-    bool SameFace(const Face& o) const
-    {
-      return this->V[0] == o.V[0] && this->V[1] == o.V[1] && this->V[2] == o.V[2];
-    }
+    bool SameFace(const Face& o) const { return this->V[0] == o.V[0] && this->V[1] == o.V[1] && this->V[2] == o.V[2]; }
   };
   std::vector<Face> faces(static_cast<size_t>(4 * ne));
   for (vtkIdType c = 0; c < ne; ++c)
@@ -271,8 +271,8 @@ int amMeshQuality::RequestData(
     all.np = std::count(any.begin(), any.end(), 1);
   }
 
-  const char* names[] = { "Region", "np", "nt", "ne", "MeanQuality", "MinimumQuality",
-    "MaximumQuality", "MinimumDihedralAngle", "MaximumDihedralAngle", "Volume", "InvertedTetrahedra" };
+  const char* names[] = { "Region", "np", "nt", "ne", "MeanQuality", "MinimumQuality", "MaximumQuality",
+    "MinimumDihedralAngle", "MaximumDihedralAngle", "Volume", "InvertedTetrahedra" };
   std::vector<vtkSmartPointer<vtkAbstractArray>> columns;
   for (int i = 0; i < 11; ++i)
   {
@@ -286,9 +286,9 @@ int amMeshQuality::RequestData(
     table->AddColumn(a);
   }
   auto addRow = [&](int label, const Row& r) {
-    const double values[11] = { static_cast<double>(label), static_cast<double>(r.np),
-      static_cast<double>(r.nt), static_cast<double>(r.ne), r.ne ? r.sumQ / r.ne : 0.0, r.minQ,
-      r.maxQ, r.minD, r.maxD, r.volume, static_cast<double>(r.inverted) };
+    const double values[11] = { static_cast<double>(label), static_cast<double>(r.np), static_cast<double>(r.nt),
+      static_cast<double>(r.ne), r.ne ? r.sumQ / r.ne : 0.0, r.minQ, r.maxQ, r.minD, r.maxD, r.volume,
+      static_cast<double>(r.inverted) };
     for (int i = 0; i < 11; ++i)
       vtkDataArray::SafeDownCast(columns[i])->InsertNextTuple1(values[i]);
   };
@@ -309,9 +309,35 @@ int amMeshQuality::RequestData(
   return 1;
 }
 
+bool amMeshQuality::TetrahedraOf(vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tetrahedra)
+{
+  const vtkIdType n = grid->GetNumberOfCells();
+  vtkIdType count = 0;
+  for (vtkIdType c = 0; c < n; ++c)
+    count += grid->GetCellType(c) == VTK_TETRA ? 1 : 0;
+  if (count == 0)
+    return false;
+  if (count == n)
+    return true;
+  tetrahedra->SetPoints(grid->GetPoints());
+  tetrahedra->GetPointData()->ShallowCopy(grid->GetPointData());
+  tetrahedra->GetFieldData()->ShallowCopy(grid->GetFieldData());
+  tetrahedra->GetCellData()->CopyAllocate(grid->GetCellData(), count);
+  tetrahedra->AllocateExact(count, 4 * count);
+  for (vtkIdType c = 0; c < n; ++c)
+    if (grid->GetCellType(c) == VTK_TETRA)
+    {
+      vtkIdType np;
+      const vtkIdType* ids;
+      grid->GetCellPoints(c, np, ids);
+      const vtkIdType id = tetrahedra->InsertNextCell(VTK_TETRA, 4, ids);
+      tetrahedra->GetCellData()->CopyData(grid->GetCellData(), c, id);
+    }
+  return true;
+}
+
 void amMeshQuality::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)")
-     << "\n";
+  os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)") << "\n";
 }

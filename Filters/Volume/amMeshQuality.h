@@ -2,7 +2,7 @@
  * @class   amMeshQuality
  * @brief   Element quality of a tetrahedral mesh as the paper measures it, and its Table 1.
  *
- * Per tetrahedron (cell data of output port 0, a shallow copy of the input):
+ * Per tetrahedron (cell data of output port 0, a shallow copy of the input's tetrahedra):
  * - "Quality": Q = alpha * h_max / rho, the longest edge over the inradius, alpha = sqrt(6)/12 so
  *   a regular tetrahedron scores 1 and worse elements score higher (flat or degenerate: +inf);
  * - "MinimumDihedralAngle", "MaximumDihedralAngle" (degrees);
@@ -16,7 +16,9 @@
  * (tetrahedra), MeanQuality, MinimumQuality, MaximumQuality, MinimumDihedralAngle,
  * MaximumDihedralAngle, Volume, InvertedTetrahedra. Region is -1 in the whole-mesh row.
  *
- * Non-tetrahedral cells are an error naming the first one.
+ * Other cells beside the tetrahedra (the boundary triangles of a mesh read back from Medit or
+ * Gmsh) are left out: output port 0 then holds the tetrahedra alone, with their cell data. A mesh
+ * without a tetrahedron is an error.
  *
  * Reference: the CEMRACS 2004 paper, Table 1 (the quality Q = alpha h_max / rho of each
  * tetrahedron, 1 for the regular one).
@@ -55,6 +57,10 @@ public:
   static void TetraQuality(const double p0[3], const double p1[3], const double p2[3],
     const double p3[3], double& quality, double& minDihedral, double& maxDihedral,
     double& radiusRatio, double& volume);
+
+  /// The tetrahedra of 'grid' with their cell data, copied into 'tetrahedra' when the grid has
+  /// other cells too (left empty when every cell is a tetrahedron); false when it has none.
+  static bool TetrahedraOf(vtkUnstructuredGrid* grid, vtkUnstructuredGrid* tetrahedra);
 
 protected:
   amMeshQuality();

@@ -1,14 +1,17 @@
 #include "amGmshWriter.h"
 
 #include "amAtomicFile.h"
+#include "amTetraFaces.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -23,6 +26,26 @@
 
 vtkStandardNewMacro(amGmshWriter);
 
+namespace
+{
+/// A box (min x y z, max x y z) around the given nodes of the grid, as $Entities wants it.
+template<typename Ids>
+void Grow(std::array<double, 6>& box, vtkUnstructuredGrid* grid, const Ids& ids)
+{
+  for (vtkIdType id : ids)
+  {
+    const double* x = grid->GetPoint(id);
+    for (int d = 0; d < 3; ++d)
+    {
+      box[d] = std::min(box[d], x[d]);
+      box[3 + d] = std::max(box[3 + d], x[d]);
+    }
+  }
+}
+
+constexpr std::array<double, 6> EmptyBox = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
+}
+
 amGmshWriter::amGmshWriter()
   : FileName(nullptr)
   , RegionArrayName(nullptr)
@@ -30,6 +53,7 @@ amGmshWriter::amGmshWriter()
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(0);
   this->SetRegionArrayName("Region");
+  this->WriteInterfaces = 1;
 }
 
 amGmshWriter::~amGmshWriter()
@@ -84,8 +108,7 @@ int amGmshWriter::WriteData(vtkDataObject* data)
       return 0;
     }
   }
-  vtkDataArray* regionArray =
-    this->RegionArrayName ? grid->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
+  vtkDataArray* regionArray = this->RegionArrayName ? grid->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
   // Cells grouped by region (the entity blocks), each region's bounding box for $Entities.
   std::map<long long, std::vector<vtkIdType>> byRegion;
   for (vtkIdType c = 0; c < nc; ++c)
@@ -106,6 +129,42 @@ int amGmshWriter::WriteData(vtkDataObject* data)
     byRegion[static_cast<long long>(r)].push_back(c);
   }
 
+  // Interface and boundary triangles, one physical surface per pair of regions: the Medit
+  // writer's references (1000 * higher + lower, 0 outside), so both formats name a surface alike.
+  std::map<long long, std::pair<std::vector<std::array<vtkIdType, 3>>, std::array<long long, 2>>> surfaces;
+  if (this->WriteInterfaces)
+  {
+    if (byRegion.rbegin()->first > 999)
+      vtkWarningMacro("'" << target << "': regions beyond 999 leave no room for the interface tags (1000 * higher + "
+                          << "lower); no surface groups are written.");
+    else
+    {
+      std::vector<double> points(3 * static_cast<size_t>(np));
+      for (vtkIdType i = 0; i < np; ++i)
+        grid->GetPoint(i, &points[3 * i]);
+      std::vector<std::array<vtkIdType, 4>> tets(static_cast<size_t>(nc));
+      std::vector<int> labels(static_cast<size_t>(nc));
+      for (vtkIdType c = 0; c < nc; ++c)
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        grid->GetCellPoints(c, n, ids);
+        std::copy(ids, ids + 4, tets[c].begin());
+        labels[c] = regionArray ? static_cast<int>(regionArray->GetComponent(c, 0)) : 1;
+      }
+      for (const auto& f : amTetraFaces::Find(points.data(), tets, labels.data()))
+      {
+        const long long lower = f.Second == amTetraFaces::Outside() ? 0 : f.Second;
+        auto& group = surfaces[1000LL * f.First + lower];
+        group.first.push_back(f.Points);
+        group.second = { f.First, lower };
+      }
+    }
+  }
+  vtkIdType triangles = 0;
+  for (const auto& kv : surfaces)
+    triangles += static_cast<vtkIdType>(kv.second.first.size());
+
   amAtomicFile file(target);
   std::string why;
   if (!file.CanWrite(why))
@@ -117,33 +176,43 @@ int amGmshWriter::WriteData(vtkDataObject* data)
     std::ofstream out(file.TemporaryPath());
     out.precision(17);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-    out << "$PhysicalNames\n" << byRegion.size() << "\n";
+    out << "$PhysicalNames\n" << byRegion.size() + surfaces.size() << "\n";
     // The organ's name where the mesh carries its label map's "LabelNames" (indexed by label).
     auto* names = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("LabelNames"));
-    for (const auto& kv : byRegion)
-    {
-      std::string name = "Region " + std::to_string(kv.first);
-      if (names && kv.first < names->GetNumberOfValues() && !names->GetValue(kv.first).empty())
-        name = names->GetValue(kv.first);
+    auto nameOf = [&](long long label) {
+      std::string name = label == 0 ? "Outside" : "Region " + std::to_string(label);
+      if (label > 0 && names && label < names->GetNumberOfValues() && !names->GetValue(label).empty())
+        name = names->GetValue(label);
       name.erase(std::remove(name.begin(), name.end(), '"'), name.end());
-      out << "3 " << kv.first << " \"" << name << "\"\n";
-    }
+      return name;
+    };
+    for (const auto& kv : surfaces)
+      out << "2 " << kv.first << " \"" << nameOf(kv.second.second[0]) << " | " << nameOf(kv.second.second[1]) << "\"\n";
+    for (const auto& kv : byRegion)
+      out << "3 " << kv.first << " \"" << nameOf(kv.first) << "\"\n";
     out << "$EndPhysicalNames\n";
-    // One volume entity per region, tagged like its physical group; no lower-dimensional entities.
-    out << "$Entities\n0 0 0 " << byRegion.size() << "\n";
+    // One surface entity per pair of regions and one volume entity per region, each tagged like
+    // its physical group.
+    out << "$Entities\n0 0 " << surfaces.size() << " " << byRegion.size() << "\n";
+    for (const auto& kv : surfaces)
+    {
+      std::array<double, 6> box = EmptyBox;
+      for (const auto& t : kv.second.first)
+        Grow(box, grid, t);
+      out << kv.first;
+      for (double b : box)
+        out << " " << b;
+      out << " 1 " << kv.first << " 0\n";
+    }
     for (const auto& kv : byRegion)
     {
-      std::array<double, 6> box = { 1e300, 1e300, 1e300, -1e300, -1e300, -1e300 };
+      std::array<double, 6> box = EmptyBox;
+      vtkNew<vtkIdList> ids;
       for (vtkIdType c : kv.second)
-        for (int k = 0; k < 4; ++k)
-        {
-          const double* x = grid->GetPoint(grid->GetCell(c)->GetPointId(k));
-          for (int d = 0; d < 3; ++d)
-          {
-            box[d] = std::min(box[d], x[d]);
-            box[3 + d] = std::max(box[3 + d], x[d]);
-          }
-        }
+      {
+        grid->GetCellPoints(c, ids);
+        Grow(box, grid, std::vector<vtkIdType>(ids->begin(), ids->end()));
+      }
       out << kv.first;
       for (double b : box)
         out << " " << b;
@@ -160,7 +229,8 @@ int amGmshWriter::WriteData(vtkDataObject* data)
       out << x[0] << " " << x[1] << " " << x[2] << "\n";
     }
     out << "$EndNodes\n";
-    out << "$Elements\n" << byRegion.size() << " " << nc << " 1 " << nc << "\n";
+    const vtkIdType total = nc + triangles;
+    out << "$Elements\n" << byRegion.size() + surfaces.size() << " " << total << " 1 " << total << "\n";
     vtkIdType done = 0;
     for (const auto& kv : byRegion)
     {
@@ -174,6 +244,13 @@ int amGmshWriter::WriteData(vtkDataObject* data)
         if (++done % 65536 == 0)
           this->UpdateProgress(static_cast<double>(done) / nc);
       }
+    }
+    vtkIdType tag = nc;
+    for (const auto& kv : surfaces)
+    {
+      out << "2 " << kv.first << " 2 " << kv.second.first.size() << "\n";
+      for (const auto& t : kv.second.first)
+        out << ++tag << " " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
     }
     out << "$EndElements\n";
     if (!out.flush())
@@ -197,4 +274,5 @@ void amGmshWriter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)") << "\n";
+  os << indent << "WriteInterfaces: " << this->WriteInterfaces << "\n";
 }

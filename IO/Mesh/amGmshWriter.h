@@ -11,6 +11,13 @@
  * from 1 in point order, elements from 1 in cell order. Coordinates are written with 17 significant
  * digits. Any other cell type, a non-positive label or a non-finite coordinate is an error naming
  * it. The file appears atomically (temporary name, then rename).
+ *
+ * WriteInterfaces (default on): the interface and boundary triangles (amTetraFaces: each face where
+ * the region changes, once, its normal from the higher region into the lower one, outwards on the
+ * boundary) as one physical surface per pair of regions, tagged like the Medit writer's references
+ * (1000 * higher + lower, 0 for the outside) and named "<higher> | <lower>" (e.g. "Myocardium |
+ * LVBlood", "Body | Outside"), so a solver can put boundary conditions on organ surfaces; region
+ * labels must then lie in 1..999.
  */
 #ifndef amGmshWriter_h
 #define amGmshWriter_h
@@ -37,6 +44,13 @@ public:
   vtkGetStringMacro(RegionArrayName);
   ///@}
 
+  ///@{
+  /// Also write the interface and boundary triangles as physical surfaces (default on).
+  vtkSetMacro(WriteInterfaces, vtkTypeBool);
+  vtkGetMacro(WriteInterfaces, vtkTypeBool);
+  vtkBooleanMacro(WriteInterfaces, vtkTypeBool);
+  ///@}
+
   /// Set the mesh to write without a pipeline connection.
   void SetInputData(vtkDataObject* input) { this->SetInputDataInternal(0, input); }
 
@@ -53,6 +67,7 @@ protected:
 
   char* FileName;
   char* RegionArrayName;
+  vtkTypeBool WriteInterfaces;
 
 private:
   bool LastWriteOk = false;

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -65,6 +66,7 @@ TEST(GmshWriter, TwoRegionsAsPhysicalVolumes)
   vtkNew<amGmshWriter> w;
   w->SetInputData(TwoRegions());
   w->SetFileName(path.c_str());
+  w->WriteInterfacesOff();
   ASSERT_EQ(w->Write(), 1);
   auto s = Sections(path);
   EXPECT_EQ(s["MeshFormat"], (std::vector<std::string>{ "4.1 0 8" }));
@@ -102,7 +104,48 @@ TEST(GmshWriter, PhysicalGroupsTakeTheLabelNames)
   w->SetFileName(path.c_str());
   ASSERT_EQ(w->Write(), 1);
   EXPECT_EQ(Sections(path)["PhysicalNames"],
-    (std::vector<std::string>{ "2", "3 3 \"Right lung\"", "3 6 \"Region 6\"" }));
+    (std::vector<std::string>{ "5", "2 3000 \"Right lung | Outside\"", "2 6000 \"Region 6 | Outside\"",
+      "2 6003 \"Region 6 | Right lung\"", "3 3 \"Right lung\"", "3 6 \"Region 6\"" }));
+}
+
+TEST(GmshWriter, InterfacesAndBoundaryAsPhysicalSurfaces)
+{
+  // Two tetrahedra on one face: the interface (one triangle, tag 1000 * 6 + 3) and each region's
+  // outer boundary (three triangles, tags 6000 and 3000), numbered after the tetrahedra.
+  const std::string path = amTest::TempPath("surfaces.msh");
+  vtkNew<amGmshWriter> w;
+  w->SetInputData(TwoRegions());
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  auto s = Sections(path);
+  ASSERT_EQ(s["Entities"].size(), 6u);
+  EXPECT_EQ(s["Entities"][0], "0 0 3 2");
+  for (int i = 1; i <= 3; ++i)
+    EXPECT_NE(s["Entities"][i].find(" 1 " + s["Entities"][i].substr(0, 4) + " 0"), std::string::npos)
+      << s["Entities"][i];
+  ASSERT_GE(s["Elements"].size(), 1u);
+  EXPECT_EQ(s["Elements"][0], "5 9 1 9");
+  std::map<std::string, int> blocks; // "dim tag" -> element count
+  for (size_t i = 1; i < s["Elements"].size();)
+  {
+    std::istringstream in(s["Elements"][i]);
+    int dim, tag, type, count;
+    ASSERT_TRUE(in >> dim >> tag >> type >> count) << s["Elements"][i];
+    blocks[std::to_string(dim) + " " + std::to_string(tag)] = count;
+    i += 1 + count;
+  }
+  EXPECT_EQ(blocks,
+    (std::map<std::string, int>{ { "2 3000", 3 }, { "2 6000", 3 }, { "2 6003", 1 }, { "3 3", 1 }, { "3 6", 1 } }));
+  // The interface's triangle is the shared face, its normal from region 6 into region 3.
+  const auto at = std::find(s["Elements"].begin(), s["Elements"].end(), "2 6003 2 1");
+  ASSERT_NE(at, s["Elements"].end());
+  std::istringstream tri(*(at + 1));
+  int tag, a, b, c;
+  tri >> tag >> a >> b >> c;
+  EXPECT_GE(tag, 3);
+  std::vector<int> face = { a, b, c };
+  std::sort(face.begin(), face.end());
+  EXPECT_EQ(face, (std::vector<int>{ 1, 2, 3 }));
 }
 
 TEST(GmshWriter, BadInputLeavesNoFile)

@@ -194,6 +194,60 @@ class ThoraxJob(unittest.TestCase):
         provenance = bytes(vtu.field_data["Provenance"].astype(np.uint8)).decode("utf-8")
         self.assertIn("Tetrahedralize", provenance)
         self.assertIn("Region", vtu.cell_data)
+        # The .msh's physical groups: a volume per organ and a surface per interface and boundary,
+        # as meshio and Gmsh itself read them; the same triangles as the .mesh's references.
+        msh = meshio.read(os.path.join(out, "mesh.msh"))
+        groups = {name: tuple(v) for name, v in msh.field_data.items()}
+        volumes = {n: t for n, (t, dim) in groups.items() if dim == 3}
+        surfaces = {n: t for n, (t, dim) in groups.items() if dim == 2}
+        self.assertEqual(set(volumes.values()), set(np.unique(vtu.cell_data["Region"][0]).tolist()))
+        self.assertIn("Myocardium", volumes)
+        self.assertTrue(any(n.endswith("| Outside") for n in surfaces), surfaces)
+        self.assertTrue(all(t // 1000 in volumes.values() for t in surfaces.values()), surfaces)
+        medit = meshio.read(os.path.join(out, "mesh.mesh"))
+        triangles = lambda m: sum(len(b.data) for b in m.cells if b.type == "triangle")
+        self.assertEqual(triangles(msh), triangles(medit))
+        try:
+            import gmsh
+        except ImportError:
+            return
+        gmsh.initialize(["gmsh", "-v", "0"])
+        try:
+            gmsh.open(os.path.join(out, "mesh.msh"))
+            read = {gmsh.model.getPhysicalName(dim, tag): (tag, dim) for dim, tag in gmsh.model.getPhysicalGroups()}
+            self.assertEqual(read, groups)
+            tetrahedra = sum(len(gmsh.model.mesh.getElements(3, tag)[1][0]) for _, tag in gmsh.model.getEntities(3))
+            self.assertEqual(tetrahedra, counts["mesh.vtu"])
+        finally:
+            gmsh.finalize()
+
+    def test_quality_of_a_medit_mesh_read_back(self):
+        # A .mesh read back carries its interface triangles beside the tetrahedra: MeshQuality measures
+        # the tetrahedra (the same table as on the mesh written).
+        path = pipeline_file("readback.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+              <Filter name="surface" type="LabelSurface"><Input from="p" port="Labels"/></Filter>
+              <Filter name="tets" type="Tetrahedralize"><Input from="surface"/></Filter>
+              <Filter name="q" type="MeshQuality"><Input from="tets" port="Mesh"/></Filter>
+              <Output from="q" port="1" file="${output}/written.csv"/>
+              <Filter name="medit" type="MeditWriter">
+                <Input from="tets" port="Mesh"/><Property name="FileName" value="${output}/mesh.mesh"/>
+              </Filter>
+            </AnatomeshPipeline>""")
+        out = os.path.join(TMP, "readback_out")
+        code, _, stderr = run("run", path, "--output", out, "--quiet")
+        self.assertEqual(code, 0, stderr)
+        again = pipeline_file("readback2.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="r" type="MeditReader"><Property name="FileName" value="%s"/></Filter>
+              <Filter name="q" type="MeshQuality"><Input from="r"/></Filter>
+              <Output from="q" port="1" file="${output}/read.csv"/>
+            </AnatomeshPipeline>""" % os.path.join(out, "mesh.mesh"))
+        code, _, stderr = run("run", again, "--output", out, "--quiet")
+        self.assertEqual(code, 0, stderr)
+        with open(os.path.join(out, "written.csv")) as a, open(os.path.join(out, "read.csv")) as b:
+            self.assertEqual(a.read(), b.read())
 
     def test_vtk_xml_output_and_filters_listing(self):
         path = pipeline_file("vtkxml.xml", """
