@@ -157,6 +157,18 @@ class ThoraxJob(unittest.TestCase):
                            capture_output=True, text=True, timeout=600, cwd=tempfile.gettempdir())
         self.assertEqual(p.returncode, 0, p.stderr)
         self.assertTrue(os.path.exists(os.path.join(folder, "results", "labels.nii.gz")))
+        # A pipeline's own default for "output" holds when the command line gives none.
+        with open(path, "w") as f:
+            f.write(textwrap.dedent("""
+                <AnatomeshPipeline version="1">
+                  <Variable name="output" default="${pipeline_dir}/default_out"/>
+                  <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+                  <Output from="p" port="CT" file="${output}/ct.vti"/>
+                </AnatomeshPipeline>""").lstrip())
+        p = subprocess.run(CLI + ["run", path, "--quiet"], capture_output=True, text=True, timeout=600,
+                           cwd=tempfile.gettempdir())
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertTrue(os.path.exists(os.path.join(folder, "default_out", "ct.vti")))
 
     def test_meshio_reads_every_mesh_output(self):
         try:

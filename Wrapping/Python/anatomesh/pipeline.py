@@ -136,8 +136,6 @@ class Pipeline:
             raise UndeclaredVariableError("%s: --set names variables the pipeline does not declare: %s (declared: %s)" % (
                 self.path, ", ".join(sorted(unknown)), ", ".join(sorted(self.variables)) or "none"))
         names = {}
-        # "output" always exists (the command line's --output); a pipeline may give it a default.
-        self.variables["output"] = self._given.get("output", "out")
         for node in root.children:
             if node.tag == "Variable":
                 continue
