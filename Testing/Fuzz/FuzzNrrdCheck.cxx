@@ -1,27 +1,13 @@
-// libFuzzer target: amNrrdCheck on any bytes. Its first byte picks the form: even, a .nrrd (the
-// bytes as they are); odd, a .nhdr header (the bytes up to the first NUL) beside the data file
-// "image.raw" (the bytes after it), which the header may or may not name.
-// A check must return, never crash, hang or read out of bounds.
+// libFuzzer target: amNrrdCheck on any bytes, as a .nrrd or as a .nhdr header beside its data file
+// (amFuzzFiles::WriteImage). A check must return, never crash, hang or read out of bounds.
 #include "amFuzzFiles.h"
 #include "amNrrdCheck.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  if (size < 1)
+  const std::string path = amFuzzFiles::WriteImage(data, size, "image.nrrd", "image.nhdr");
+  if (path.empty())
     return 0;
-  const bool detached = data[0] % 2;
-  ++data;
-  --size;
-  std::string path;
-  if (detached)
-  {
-    const size_t header = amFuzzFiles::HeaderLength(data, size);
-    path = amFuzzFiles::Write("image.nhdr", data, header);
-    const size_t rest = header < size ? header + 1 : size;
-    amFuzzFiles::Write("image.raw", data + rest, size - rest);
-  }
-  else
-    path = amFuzzFiles::Write("image.nrrd", data, size);
   const std::string message = amNrrdCheck::Check(path);
   std::remove(path.c_str());
   return 0;

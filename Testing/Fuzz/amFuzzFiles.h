@@ -35,13 +35,26 @@ inline std::string Write(const std::string& name, const uint8_t* data, size_t si
   return path;
 }
 
-/// The input split at its first NUL byte: a header, then the data of a detached data file.
-inline size_t HeaderLength(const uint8_t* data, size_t size)
+/// The input as an image of a format whose header is attached or detached, its first byte picking
+/// which: even, the file 'attached' holds the rest of the bytes; odd, the file 'detached' holds
+/// them up to the first NUL (the header), beside "image.raw" with the bytes after it (a data file
+/// the header may or may not name). Returns the path to check, "" for an empty input.
+inline std::string WriteImage(
+  const uint8_t* data, size_t size, const std::string& attached, const std::string& detached)
 {
-  for (size_t i = 0; i < size; ++i)
-    if (data[i] == 0)
-      return i;
-  return size;
+  if (size < 1)
+    return "";
+  const bool isDetached = data[0] % 2;
+  ++data;
+  --size;
+  if (!isDetached)
+    return Write(attached, data, size);
+  size_t header = 0;
+  while (header < size && data[header] != 0)
+    ++header;
+  const size_t rest = header < size ? header + 1 : size;
+  Write("image.raw", data + rest, size - rest);
+  return Write(detached, data, header);
 }
 }
 

@@ -81,28 +81,18 @@ class BadInput(unittest.TestCase):
         shutil.rmtree(ROOT, ignore_errors=True)
         os.makedirs(ROOT)
         # The good files every bad one starts from: the phantom's labels at 8 mm in each format.
+        writers = "".join(
+            '<Filter name="w%d" type="ImageWriter"><Input from="p" port="Labels"/>'
+            '<Property name="FileName" value="${output}/%s"/><Property name="UseCompression" value="%d"/></Filter>'
+            % (i, name, compress) for i, (name, compress) in enumerate((
+                ("labels.nii", 0), ("labels.nii.gz", 1), ("labels.nrrd", 0), ("labels_z.nrrd", 1),
+                ("labels.mha", 0), ("labels_z.mha", 1), ("labels.mhd", 0))))
         src = cls.pipeline("good.xml", """
             <AnatomeshPipeline version="1">
               <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
-              <Filter name="a" type="ImageWriter"><Input from="p" port="Labels"/>
-                <Property name="FileName" value="${output}/labels.nii"/></Filter>
-              <Filter name="b" type="ImageWriter"><Input from="p" port="Labels"/>
-                <Property name="FileName" value="${output}/labels.nii.gz"/></Filter>
-              <Filter name="c" type="ImageWriter"><Input from="p" port="Labels"/>
-                <Property name="FileName" value="${output}/labels.nrrd"/>
-                <Property name="UseCompression" value="0"/></Filter>
-              <Filter name="d" type="ImageWriter"><Input from="p" port="Labels"/>
-                <Property name="FileName" value="${output}/labels_z.nrrd"/></Filter>
-              <Filter name="e" type="ImageWriter"><Input from="p" port="Labels"/>
-                <Property name="FileName" value="${output}/labels.mha"/>
-                <Property name="UseCompression" value="0"/></Filter>
-              <Filter name="f" type="ImageWriter"><Input from="p" port="Labels"/>
-                <Property name="FileName" value="${output}/labels_z.mha"/></Filter>
-              <Filter name="g" type="ImageWriter"><Input from="p" port="Labels"/>
-                <Property name="FileName" value="${output}/labels.mhd"/>
-                <Property name="UseCompression" value="0"/></Filter>
+              %s
               <Output from="p" port="CT" file="${output}/ct.vti"/>
-            </AnatomeshPipeline>""")
+            </AnatomeshPipeline>""" % writers)
         code, _, stderr = cls.run_cli("run", src, "--quiet", "--output", os.path.join(ROOT, "good"))
         assert code == 0, stderr
         cls.good = {n: read(os.path.join(ROOT, "good", n)) for n in os.listdir(os.path.join(ROOT, "good"))}
