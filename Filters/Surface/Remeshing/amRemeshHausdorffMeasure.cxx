@@ -123,7 +123,8 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
       double cl[3];
       vtkIdType a;
       for (vtkIdType i = i0; i < i1; ++i)
-        if (known && at[i] >= 0 && same[at[i]])
+        // A slot beyond the surface's: the surface was restored to an earlier, smaller state.
+        if (known && at[i] >= 0 && static_cast<size_t>(at[i]) < nt && same[at[i]])
         {
           if (!changedNear[s].MayComeNearer(samples[i], d2[i]))
             continue;

@@ -64,6 +64,10 @@ Remesher::Snapshot Remesher::Save() const
 void Remesher::Restore(Snapshot&& snapshot)
 {
   this->Mesh = std::move(snapshot.Mesh);
+  // The bins list the triangles of the state given up: slots the restored surface does not have,
+  // or has with other vertices. Operations follow a Restore (the degenerate-triangle cleanup after
+  // a small-angle one undone), and the crossing guard reads the bins.
+  this->Grid.Rebuild();
   for (int w = 0; w < 2; ++w)
   {
     this->Workers[w].Collapses = snapshot.Counters[w][0];

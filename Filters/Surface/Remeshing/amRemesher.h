@@ -125,7 +125,8 @@ public:
   double Enforce(double& upper, long long& inserted);
 
   /// The state the operations change, for an undo: the input, the bins and the measure's cache
-  /// are not copied (the input never changes; nothing but the output is made after a Restore).
+  /// are not copied (the input never changes; Restore rebuilds the bins, and the measure's cache
+  /// checks every triangle slot against the one it saw).
   struct Snapshot
   {
     Surface Mesh;
