@@ -265,6 +265,18 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
       vv->SetValue(static_cast<vtkIdType>(r), voxels[regions[r].Label] * voxelVolume);
     t->AddColumn(vv);
     table->ShallowCopy(t);
+    // The same on the surface itself (label, mm^3), so the mesh made from it can be compared with
+    // the label map downstream (amTetrahedralize's RegionVolumes).
+    vtkNew<vtkDoubleArray> labelVolumes;
+    labelVolumes->SetName("LabelVoxelVolumes");
+    labelVolumes->SetNumberOfComponents(2);
+    for (size_t r = 0; r < g.Values.size(); ++r)
+      if (g.Values[r] != this->BackgroundLabel)
+      {
+        const double row[2] = { static_cast<double>(g.Values[r]), count[r] * voxelVolume };
+        labelVolumes->InsertNextTuple(row);
+      }
+    output->GetFieldData()->AddArray(labelVolumes);
     for (const auto& r : regions)
       if (r.BoundaryEdges || r.NonManifoldEdges || r.MisorientedEdges)
         vtkWarningMacro("Region " << r.Label << " is not a closed oriented manifold: " << r.BoundaryEdges

@@ -32,7 +32,8 @@
  * Output: triangles with cell data "Labels" (2 components: Labels[0] > Labels[1]; the triangle's
  * normal points from region Labels[0] into region Labels[1], so organ/background faces point
  * outwards). Field data: "VoxelSize" (the smallest spacing, mm; amSurfaceSmoothing uses it to
- * bound displacements), "Provenance". Output port 1 is a vtkTable with one row per region
+ * bound displacements), "LabelVoxelVolumes" (label, mm^3 of its voxels, for every label but the
+ * background; amTetrahedralize compares its regions' volumes with them), "Provenance". Output port 1 is a vtkTable with one row per region
  * (label, triangles, vertices, edges, Euler characteristic, components, boundary edges,
  * non-manifold edges, wrongly oriented edges, area mm^2, enclosed volume mm^3, voxel volume mm^3):
  * boundary, non-manifold and wrongly oriented edges are zero when the surface is right, and the

@@ -2,11 +2,13 @@
 
 #include "amInputCheck.h"
 #include "amProvenance.h"
+#include "amRegionVolumes.h"
 #include "amTetraGeometry.h"
 #include "amTetraMeshOptimizer.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -419,6 +421,23 @@ int amLabelMapTetrahedralize::RequestData(
     improvement << " improvement: " << report.Describe();
     this->NumberOfSlivers = report.Slivers;
     this->SurfaceDeviation = report.SurfaceDeviation;
+  }
+
+  // Each region's volume against its voxels (as amTetrahedralize reports it).
+  {
+    vtkNew<vtkDoubleArray> voxels;
+    voxels->SetNumberOfComponents(2);
+    for (const auto& lv : voxelsOf)
+      if (lv.first != bg)
+      {
+        const double row[2] = { static_cast<double>(lv.first), lv.second * spacing[0] * spacing[1] * spacing[2] };
+        voxels->InsertNextTuple(row);
+      }
+    const auto misses = amRegionVolumes::Compare(output, "Region", voxels, 1000.0, 0.02);
+    this->NumberOfVolumeMisses = static_cast<vtkIdType>(misses.size());
+    if (!misses.empty())
+      vtkWarningMacro(<< misses.size() << " region(s) of at least 1 cm3 differ from their label's voxel volume by more "
+                      << "than 2 % (field data RegionVolumes): " << amRegionVolumes::Describe(misses, 5) << ".");
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();

@@ -145,6 +145,10 @@ public:
   vtkSetClampMacro(MaximumSurfaceDeviation, double, 0.0, 1e6);
   vtkGetMacro(MaximumSurfaceDeviation, double);
   vtkGetMacro(NumberOfSlivers, vtkIdType);
+  /// Regions of at least 1 cm^3 of voxels whose mesh volume differs from it by more than 2 %; each
+  /// region's figures are in the output's field data "RegionVolumes" (label, voxel mm^3, mesh
+  /// mm^3, relative difference).
+  vtkGetMacro(NumberOfVolumeMisses, vtkIdType);
   vtkGetMacro(SurfaceDeviation, double);
   ///@}
 
@@ -177,6 +181,7 @@ protected:
   int ImprovementPasses;
   double MaximumSurfaceDeviation;
   vtkIdType NumberOfSlivers;
+  vtkIdType NumberOfVolumeMisses = 0;
   double SurfaceDeviation;
   vtkIdType NumberOfTetrahedra;
 

@@ -2,6 +2,7 @@
 
 #include "amGradedSizeField.h"
 #include "amProvenance.h"
+#include "amRegionVolumes.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amTetGenRun.h"
@@ -14,6 +15,7 @@
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -58,6 +60,7 @@ amTetrahedralize::amTetrahedralize()
   , MeanQualityBeforeImprovement(0)
   , SurfaceDeviation(0)
   , NumberOfSlivers(0)
+  , NumberOfVolumeMisses(0)
 {
   this->SetSizeArrayName("Size");
   this->SetNumberOfOutputPorts(2);
@@ -336,13 +339,25 @@ int amTetrahedralize::RequestData(
     improvement << " improvement: " << report.Describe();
   }
 
+  // Each region's volume against its label's voxel volume, when the surface carries them (from
+  // amLabelSurface): smoothing and remeshing within their tolerances keep large organs within 2 %.
+  this->NumberOfVolumeMisses = 0;
+  if (vtkDataArray* voxels = input->GetFieldData()->GetArray("LabelVoxelVolumes"))
+  {
+    const auto misses = amRegionVolumes::Compare(output, "Region", voxels, 1000.0, 0.02);
+    this->NumberOfVolumeMisses = static_cast<vtkIdType>(misses.size());
+    if (!misses.empty())
+      vtkWarningMacro(<< misses.size() << " region(s) of at least 1 cm3 differ from their label's voxel volume by more "
+                      << "than 2 % (field data RegionVolumes): " << amRegionVolumes::Describe(misses, 5) << ".");
+  }
+
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
-         << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation
-         << " tetrahedra=" << this->NumberOfTetrahedra << improvement.str();
+         << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " tetrahedra=" << this->NumberOfTetrahedra
+         << improvement.str();
   amProvenance::Record(output, input, "amTetrahedralize", params.str());
   this->UpdateProgress(1.0);
   return 1;

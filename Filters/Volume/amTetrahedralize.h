@@ -148,6 +148,10 @@ public:
   vtkGetMacro(MeanQualityBeforeImprovement, double);
   vtkGetMacro(SurfaceDeviation, double);
   vtkGetMacro(NumberOfSlivers, vtkIdType);
+  /// Regions of at least 1 cm^3 of voxels whose mesh volume differs from it by more than 2 %
+  /// (when the surface carries its label map's "LabelVoxelVolumes"); each region's figures are in
+  /// the output's field data "RegionVolumes" (label, voxel mm^3, mesh mm^3, relative difference).
+  vtkGetMacro(NumberOfVolumeMisses, vtkIdType);
   ///@}
 
 protected:
@@ -174,6 +178,7 @@ protected:
   double MeanQualityBeforeImprovement;
   double SurfaceDeviation;
   vtkIdType NumberOfSlivers;
+  vtkIdType NumberOfVolumeMisses;
 
 private:
   amTetrahedralize(const amTetrahedralize&) = delete;

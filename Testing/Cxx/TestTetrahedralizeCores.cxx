@@ -2,6 +2,7 @@
 // and the region flood fill, on the surface of two blocks of voxels side by side.
 #include "amGradedSizeField.h"
 #include "amLabelSurface.h"
+#include "amRegionVolumes.h"
 #include "amSurfaceMesh.h"
 #include "amTestUtilities.h"
 #include "amTetGenRun.h"
@@ -11,14 +12,18 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -182,4 +187,46 @@ TEST(TetGenRun, CrossingSurfaceIsAMessageNotACrash)
   const std::string failure = amTetGenRun::Run(mesh, field, "pzQnMYq1.4/10O2/7", out);
   EXPECT_FALSE(failure.empty());
   std::printf("TetGen on crossing triangles: %s\n", failure.c_str());
+}
+
+TEST(RegionVolumes, ComparesEachRegionWithItsVoxels)
+{
+  // Two corner tetrahedra of 30 mm (4500 mm^3 each), regions 1 and 2; the voxels give region 1
+  // exactly, region 2 twice its mesh volume, label 3 (no tetrahedra) 5000 mm^3 and label 4 a
+  // volume too small to count.
+  vtkNew<vtkUnstructuredGrid> mesh;
+  vtkNew<vtkPoints> points;
+  const double x[7][3] = { { 0, 0, 0 }, { 30, 0, 0 }, { 0, 30, 0 }, { 0, 0, 30 }, { 100, 0, 0 }, { 130, 0, 0 },
+    { 100, 30, 0 } };
+  for (const auto& p : x)
+    points->InsertNextPoint(p);
+  points->InsertNextPoint(100, 0, 30);
+  mesh->SetPoints(points);
+  const vtkIdType a[4] = { 0, 1, 2, 3 }, b[4] = { 4, 6, 5, 7 }; // the second one inverted
+  mesh->InsertNextCell(VTK_TETRA, 4, a);
+  mesh->InsertNextCell(VTK_TETRA, 4, b);
+  vtkNew<vtkIntArray> region;
+  region->SetName("Region");
+  region->InsertNextValue(1);
+  region->InsertNextValue(2);
+  mesh->GetCellData()->AddArray(region);
+  vtkNew<vtkDoubleArray> voxels;
+  voxels->SetNumberOfComponents(2);
+  for (const auto& row : { std::array<double, 2>{ 1, 4500 }, { 2, 9000 }, { 3, 5000 }, { 4, 900 } })
+    voxels->InsertNextTuple(row.data());
+  const auto misses = amRegionVolumes::Compare(mesh, "Region", voxels, 1000.0, 0.02);
+  ASSERT_EQ(misses.size(), 2u);
+  EXPECT_EQ(misses[0].Label, 3); // -100 %, the largest difference first
+  EXPECT_EQ(misses[0].Mesh, 0.0);
+  EXPECT_EQ(misses[1].Label, 2);
+  EXPECT_NEAR(misses[1].Mesh, 4500.0, 1e-9);
+  auto* table = vtkDoubleArray::SafeDownCast(mesh->GetFieldData()->GetArray("RegionVolumes"));
+  ASSERT_NE(table, nullptr);
+  ASSERT_EQ(table->GetNumberOfTuples(), 4);
+  EXPECT_EQ(table->GetComponent(0, 0), 1);
+  EXPECT_NEAR(table->GetComponent(0, 3), 0.0, 1e-12);
+  EXPECT_NEAR(table->GetComponent(1, 3), -0.5, 1e-12);
+  EXPECT_NE(amRegionVolumes::Describe(misses, 1).find("label 3 (5 cm3 of voxels, 0 in the mesh, -100 %) and 1 more"),
+    std::string::npos)
+    << amRegionVolumes::Describe(misses, 1);
 }
