@@ -37,11 +37,20 @@ bool amInputCheck::LabelBytes(vtkDataArray* scalars, int maximum, std::vector<un
     const double v = scalars->GetComponent(i, 0);
     if (!(v >= 0 && v <= maximum) || v != std::floor(v))
     {
-      why = "Voxel " + std::to_string(i) + " has value " + std::to_string(v) +
-        ": a label map holds whole numbers 0.." + std::to_string(maximum) + ".";
+      why = "Voxel " + std::to_string(i) + " has value " + std::to_string(v) + ": a label map holds whole numbers 0.." +
+        std::to_string(maximum) + ".";
       return false;
     }
     out[i] = static_cast<unsigned char>(v);
   }
   return true;
+}
+
+long long amInputCheck::NonFinite(vtkDataArray* scalars)
+{
+  long long count = 0;
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < n; ++i)
+    count += std::isfinite(scalars->GetComponent(i, 0)) ? 0 : 1;
+  return count;
 }

@@ -20,6 +20,9 @@ public:
   /// ("The input image is empty.", "... has no scalars ...", "... has 3 components ...").
   static vtkDataArray* ScalarImage(vtkImageData* image, std::string& why);
 
+  /// The number of NaN and infinite values of the array's first component (GetRange skips NaNs).
+  static long long NonFinite(vtkDataArray* scalars);
+
   /// The values of a one-component label array as bytes, each a whole number in 0..maximum
   /// (at most 255); false with 'why' naming the first voxel that is not.
   static bool LabelBytes(vtkDataArray* scalars, int maximum, std::vector<unsigned char>& out, std::string& why);

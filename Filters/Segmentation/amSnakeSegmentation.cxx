@@ -195,13 +195,13 @@ int amSnakeSegmentation::RequestData(
     if (std::find(order.begin(), order.end(), s.Label) == order.end())
       order.push_back(s.Label);
 
-  double range[2];
-  scalars->GetRange(range, 0);
-  if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
+  if (const long long bad = amInputCheck::NonFinite(scalars))
   {
-    vtkErrorMacro("The input image has non-finite values.");
+    vtkErrorMacro("The input image has " << bad << " non-finite values (NaN or infinite); cannot segment them.");
     return 0;
   }
+  double range[2];
+  scalars->GetRange(range, 0);
 
   vtkNew<vtkUnsignedCharArray> labelArray;
   labelArray->SetName("Labels");

@@ -50,7 +50,8 @@ double Dice(vtkImageData* x, const std::function<bool(int)>& inX, vtkImageData* 
 
 double LabelDice(vtkImageData* seg, vtkImageData* truth, int label)
 {
-  return Dice(seg, [label](int v) { return v == label; }, truth, [label](int v) { return v == label; });
+  return Dice(
+    seg, [label](int v) { return v == label; }, truth, [label](int v) { return v == label; });
 }
 
 vtkSmartPointer<amThoraxPhantomSource> Phantom(double spacing)
@@ -166,8 +167,8 @@ TEST(SnakeSegmentation, PolarContoursFollowADissectedVessel)
           v = 50.0; // the block the false lumen touches
         else if (y > 25.0)
           v = -800.0; // lung
-        ct->GetPointData()->GetScalars()->SetComponent(ct->ComputePointId(std::array<int, 3>{ i, j, k }.data()), 0,
-          std::round(v + noise(random)));
+        ct->GetPointData()->GetScalars()->SetComponent(
+          ct->ComputePointId(std::array<int, 3>{ i, j, k }.data()), 0, std::round(v + noise(random)));
         truth->GetPointData()->GetScalars()->SetComponent(
           truth->ComputePointId(std::array<int, 3>{ i, j, k }.data()), 0, tube ? 1 : 0);
       }
@@ -229,7 +230,8 @@ TEST(SnakeSegmentation, OrgansNeverOverlapAndPrecedenceIsSeedOrder)
   vtkNew<amTest::ErrorCatcher> errors;
   errors->Watch(seg);
   seg->Update();
-  const double d = Dice(Image(seg), [](int v) { return v == 20; }, Image(src, 1), [](int v) { return v == 6; });
+  const double d = Dice(
+    Image(seg), [](int v) { return v == 20; }, Image(src, 1), [](int v) { return v == 6; });
   EXPECT_GE(d, 0.9);
   EXPECT_FALSE(errors->Warnings.empty()); // label 21 got nothing, and the filter says so
 }
@@ -274,6 +276,23 @@ TEST(SnakeSegmentation, BadInputGivesClearErrors)
   seg->SetInputData(vectors);
   seg->Update();
   EXPECT_TRUE(errors->ErrorContains("3 components; a one-component image is needed")) << errors->AllErrors();
+
+  // A NaN voxel (which GetRange skips) is refused, as an infinite one is.
+  for (float bad : { std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity() })
+  {
+    errors->Errors.clear();
+    vtkNew<vtkImageData> ct;
+    ct->SetDimensions(8, 8, 8);
+    ct->AllocateScalars(VTK_FLOAT, 1);
+    auto* values = vtkFloatArray::SafeDownCast(ct->GetPointData()->GetScalars());
+    values->FillValue(40.0f);
+    values->SetValue(100, bad);
+    seg->SetInputData(ct);
+    seg->RemoveAllSeeds();
+    seg->AddSeed(4, 4, 4, 1);
+    seg->Update();
+    EXPECT_TRUE(errors->ErrorContains("1 non-finite values (NaN or infinite)")) << errors->AllErrors();
+  }
 }
 
 TEST(IntensityClassifier, BoneAloneAndLungsAfterOpening)
@@ -283,8 +302,10 @@ TEST(IntensityClassifier, BoneAloneAndLungsAfterOpening)
   cls->SetInputConnection(src->GetOutputPort(0));
   cls->Update();
   vtkImageData* truth = Image(src, 1);
-  const double bone = Dice(Image(cls), [](int v) { return v == 5; }, truth, [](int v) { return v == 9 || v == 10; });
-  const double lungAlone = Dice(Image(cls), [](int v) { return v == 1; }, truth, [](int v) { return v == 3 || v == 4; });
+  const double bone = Dice(
+    Image(cls), [](int v) { return v == 5; }, truth, [](int v) { return v == 9 || v == 10; });
+  const double lungAlone = Dice(
+    Image(cls), [](int v) { return v == 1; }, truth, [](int v) { return v == 3 || v == 4; });
   EXPECT_GE(bone, 0.95);
   // The partial-volume voxels of the skin against the air around the body fall in the lung's HU
   // range; ExteriorAir (default) gives them to the air, so the classifier alone gets the lungs.
@@ -294,7 +315,8 @@ TEST(IntensityClassifier, BoneAloneAndLungsAfterOpening)
   EXPECT_GT(exterior->GetValue(0), 0);
   cls->ExteriorAirOff();
   cls->Update();
-  const double lungWithSkin = Dice(Image(cls), [](int v) { return v == 1; }, truth, [](int v) { return v == 3 || v == 4; });
+  const double lungWithSkin = Dice(
+    Image(cls), [](int v) { return v == 1; }, truth, [](int v) { return v == 3 || v == 4; });
   EXPECT_LT(lungWithSkin, lungAlone);
   EXPECT_GE(lungWithSkin, 0.93);
   // An opening of 1.5 mm also removes that thin shell.
@@ -304,7 +326,8 @@ TEST(IntensityClassifier, BoneAloneAndLungsAfterOpening)
   clean->SetRadius(1.5);
   clean->AddLabel(1);
   clean->Update();
-  const double lung = Dice(Image(clean), [](int v) { return v == 1; }, truth, [](int v) { return v == 3 || v == 4; });
+  const double lung = Dice(
+    Image(clean), [](int v) { return v == 1; }, truth, [](int v) { return v == 3 || v == 4; });
   EXPECT_GE(lung, 0.95);
   std::cout << "classifier Dice: bone " << bone << ", lungs " << lungAlone << " alone (" << lungWithSkin
             << " without ExteriorAir), " << lung << " after opening" << std::endl;
