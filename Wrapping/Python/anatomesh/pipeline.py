@@ -263,21 +263,26 @@ class Pipeline:
             if upstream not in names:
                 raise self._error(line, "<Output> from %r, which is not a filter of this pipeline" % upstream)
             self._port_index(names[upstream], port, line)
-        # Cycles: depth-first search over the input edges.
+        # Cycles: depth-first search over the input edges, with a stack of its own (a chain of
+        # thousands of filters listed from its end would exhaust Python's).
         state = {}
-
-        def visit(step, chain):
-            state[step.name] = 1
-            for _, upstream, _, line in step.inputs:
-                if state.get(upstream) == 1:
-                    raise self._error(line, "the pipeline has a cycle: %s" % " -> ".join(chain + [step.name, upstream]))
-                if upstream not in state:
-                    visit(names[upstream], chain + [step.name])
-            state[step.name] = 2
-
-        for step in self.steps:
-            if step.name not in state:
-                visit(step, [])
+        for first in self.steps:
+            if first.name in state:
+                continue
+            state[first.name] = 1
+            path, stack = [first.name], [iter(first.inputs)]
+            while stack:
+                for _, upstream, _, line in stack[-1]:
+                    if state.get(upstream) == 1:
+                        raise self._error(line, "the pipeline has a cycle: %s" % " -> ".join(path + [upstream]))
+                    if upstream not in state:
+                        state[upstream] = 1
+                        path.append(upstream)
+                        stack.append(iter(names[upstream].inputs))
+                        break
+                else:
+                    state[path.pop()] = 2
+                    stack.pop()
         self._check_files()
         for step in self.steps:
             missing = [p.name for p in step.proxy.inputs
