@@ -8,8 +8,8 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkDoubleArray.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -171,8 +171,8 @@ int amLabelMapTetrahedralize::RequestData(
     return 0;
   }
   const bool wide = nLabels > 255;
-  _image* raw = ::_createImage(dims[0], dims[1], dims[2], 1, spacing[0], spacing[1], spacing[2], wide ? 2 : 1,
-    WK_FIXED, SGN_UNSIGNED);
+  _image* raw = ::_createImage(
+    dims[0], dims[1], dims[2], 1, spacing[0], spacing[1], spacing[2], wide ? 2 : 1, WK_FIXED, SGN_UNSIGNED);
   if (!raw)
   {
     vtkErrorMacro("Could not allocate the CGAL image (" << nv << " voxels).");
@@ -204,9 +204,8 @@ int amLabelMapTetrahedralize::RequestData(
   this->UpdateProgress(0.05);
 
   CGAL::Random rng(0);
-  Domain domain = Domain::create_labeled_image_mesh_domain(
-    image, CGAL::parameters::relative_error_bound = 1e-6, CGAL::parameters::value_outside = 0,
-    CGAL::parameters::p_rng = &rng);
+  Domain domain = Domain::create_labeled_image_mesh_domain(image, CGAL::parameters::relative_error_bound = 1e-6,
+    CGAL::parameters::value_outside = 0, CGAL::parameters::p_rng = &rng);
   const double edgeSize = this->EdgeSize > 0 ? this->EdgeSize : this->FacetSize;
   std::size_t curves = 0;
   if (this->ProtectJunctions)
@@ -229,7 +228,7 @@ int amLabelMapTetrahedralize::RequestData(
     if (!(std::fabs(value) < 2.0e9 && value == std::floor(value)) || static_cast<int>(value) == bg)
     {
       vtkErrorMacro("RegionCellSizes names the label " << value << ", which is not a meshed label (a whole number, "
-                                                        << "not the background " << bg << ").");
+                                                       << "not the background " << bg << ").");
       return 0;
     }
     if (!(size > 0) || !std::isfinite(size))
@@ -310,8 +309,8 @@ int amLabelMapTetrahedralize::RequestData(
     const double local[3] = { p.x(), p.y(), p.z() };
     std::array<double, 3> x;
     for (int r = 0; r < 3; ++r)
-      x[r] = origin[r] + direction[3 * r] * local[0] + direction[3 * r + 1] * local[1] +
-        direction[3 * r + 2] * local[2];
+      x[r] =
+        origin[r] + direction[3 * r] * local[0] + direction[3 * r + 1] * local[1] + direction[3 * r + 2] * local[2];
     return x;
   };
   std::map<Tr::Vertex_handle, vtkIdType> pointId;
@@ -386,7 +385,8 @@ int amLabelMapTetrahedralize::RequestData(
       points->GetPoint(tri[k], p[k]);
     const auto apex = world(c->vertex(i));
     std::copy(apex.begin(), apex.end(), p[3]);
-    const double side = amTetraGeometry::SignedVolume(p[0], p[1], p[2], p[3]); // > 0: the normal (b-a)x(c-a) points towards the apex
+    const double side =
+      amTetraGeometry::SignedVolume(p[0], p[1], p[2], p[3]); // > 0: the normal (b-a)x(c-a) points towards the apex
     if ((side > 0) == cFirst)
       std::swap(tri[1], tri[2]);
     faces->InsertNextCell(3, tri);
@@ -412,8 +412,8 @@ int amLabelMapTetrahedralize::RequestData(
     options.MaximumSurfaceDeviation = this->MaximumSurfaceDeviation;
     amTetraMeshOptimizer::Report report;
     std::string why;
-    if (!amTetraMeshOptimizer::ImproveGrid(output, interfaces, options, report, why,
-          [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
+    if (!amTetraMeshOptimizer::ImproveGrid(
+          output, interfaces, options, report, why, [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
     {
       vtkErrorMacro("Quality improvement: " << why);
       return 0;
@@ -436,20 +436,17 @@ int amLabelMapTetrahedralize::RequestData(
     const auto misses = amRegionVolumes::Compare(output, "Region", voxels, 1000.0, 0.02);
     this->NumberOfVolumeMisses = static_cast<vtkIdType>(misses.size());
     if (!misses.empty())
-      vtkWarningMacro(<< misses.size() << " region(s) of at least 1 cm3 differ from their label's voxel volume by more "
-                      << "than 2 % (field data RegionVolumes): " << amRegionVolumes::Describe(misses, 5) << ".");
+      vtkWarningMacro(<< amRegionVolumes::Warning(misses));
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   std::ostringstream params;
   params << "FacetDistance=" << this->FacetDistance << " FacetSize=" << this->FacetSize
          << " FacetAngle=" << this->FacetAngle << " CellSize=" << this->CellSize
-         << " CellRadiusEdgeRatio=" << this->CellRadiusEdgeRatio
-         << " ProtectJunctions=" << this->ProtectJunctions << " EdgeSize=" << edgeSize
-         << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
-         << " Perturb=" << this->Perturb << " Exude=" << this->Exude
-         << " SliverBound=" << this->SliverBound << " ImproveQuality=" << this->ImproveQuality
-         << " ImprovementPasses=" << this->ImprovementPasses
+         << " CellRadiusEdgeRatio=" << this->CellRadiusEdgeRatio << " ProtectJunctions=" << this->ProtectJunctions
+         << " EdgeSize=" << edgeSize << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
+         << " Perturb=" << this->Perturb << " Exude=" << this->Exude << " SliverBound=" << this->SliverBound
+         << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
          << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " tetrahedra=" << this->NumberOfTetrahedra
          << improvement.str();
   for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)
@@ -476,6 +473,5 @@ void amLabelMapTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
      << " Exude: " << this->Exude << "\n"
      << indent << "SliverBound: " << this->SliverBound << "\n"
      << indent << "ImproveQuality: " << this->ImproveQuality << " ImprovementPasses: " << this->ImprovementPasses
-     << " MaximumSurfaceDeviation: " << this->MaximumSurfaceDeviation
-     << "\n";
+     << " MaximumSurfaceDeviation: " << this->MaximumSurfaceDeviation << "\n";
 }

@@ -71,3 +71,11 @@ std::string amRegionVolumes::Describe(const std::vector<Miss>& misses, size_t co
     os << " and " << misses.size() - count << " more";
   return os.str();
 }
+
+std::string amRegionVolumes::Warning(const std::vector<Miss>& misses)
+{
+  return std::to_string(misses.size()) +
+    " region(s) of at least 1 cm3 differ from their label's voxel volume by "
+    "more than 2 % (field data RegionVolumes): " +
+    Describe(misses, 5) + ".";
+}

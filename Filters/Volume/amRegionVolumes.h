@@ -35,6 +35,10 @@ public:
 
   /// "label 5 (12.3 cm3 of voxels, 11.9 in the mesh, -3.2 %), ..." for at most 'count' misses.
   static std::string Describe(const std::vector<Miss>& misses, size_t count);
+
+  /// The tetrahedralizers' warning about the misses of Compare(..., 1000 mm^3, 2 %): how many, and
+  /// the five largest.
+  static std::string Warning(const std::vector<Miss>& misses);
 };
 
 #endif

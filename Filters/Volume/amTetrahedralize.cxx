@@ -347,8 +347,7 @@ int amTetrahedralize::RequestData(
     const auto misses = amRegionVolumes::Compare(output, "Region", voxels, 1000.0, 0.02);
     this->NumberOfVolumeMisses = static_cast<vtkIdType>(misses.size());
     if (!misses.empty())
-      vtkWarningMacro(<< misses.size() << " region(s) of at least 1 cm3 differ from their label's voxel volume by more "
-                      << "than 2 % (field data RegionVolumes): " << amRegionVolumes::Describe(misses, 5) << ".");
+      vtkWarningMacro(<< amRegionVolumes::Warning(misses));
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();

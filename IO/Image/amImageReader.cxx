@@ -1,5 +1,7 @@
 #include "amImageReader.h"
 
+#include "amHeaderText.h"
+
 #include "amITKBridge.h"
 #include "amMetaImageCheck.h"
 #include "amNiftiCheck.h"
@@ -44,6 +46,9 @@ vtkStandardNewMacro(amImageReader);
 
 namespace
 {
+using amHeaderText::FolderOf;
+using amHeaderText::Trim;
+
 void RegisterITKFactories()
 {
   static std::once_flag once;
@@ -67,12 +72,6 @@ bool Exists(const std::string& path)
   return ::stat(path.c_str(), &st) == 0;
 }
 
-std::string FolderOf(const std::string& path)
-{
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
-
 std::string FirstLine(const std::string& text)
 {
   // ITK messages carry the source location first; keep the description, on one line.
@@ -82,13 +81,6 @@ std::string FirstLine(const std::string& text)
     t = t.substr(desc + 13);
   std::replace(t.begin(), t.end(), '\n', ' ');
   return t;
-}
-
-std::string Trim(const std::string& s)
-{
-  const auto b = s.find_first_not_of(" \t\r\n");
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
 // A NRRD header with both "space" and per-axis "spacings" is invalid (the spec wants "space

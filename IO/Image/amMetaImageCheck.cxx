@@ -1,5 +1,7 @@
 #include "amMetaImageCheck.h"
 
+#include "amHeaderText.h"
+
 #include "amByteCount.h"
 #include "amInflate.h"
 
@@ -14,12 +16,8 @@
 
 namespace
 {
-std::string Trim(const std::string& s)
-{
-  const auto b = s.find_first_not_of(" \t\r\n");
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
+using amHeaderText::FolderOf;
+using amHeaderText::Trim;
 
 /// The numbers of a header value, parsed as C does ("nan" and "inf" included, which the stream
 /// operators refuse); 'bad' gets the first word that is not a number.
@@ -62,11 +60,6 @@ std::string CheckGeometry(const std::string& key, const std::string& value)
   return "";
 }
 
-std::string FolderOf(const std::string& path)
-{
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
 }
 
 std::string amMetaImageCheck::Check(const std::string& path, std::string& repairedHeader)

@@ -1,5 +1,7 @@
 #include "amNrrdCheck.h"
 
+#include "amHeaderText.h"
+
 #include "amByteCount.h"
 #include "amInflate.h"
 
@@ -13,12 +15,8 @@
 
 namespace
 {
-std::string Trim(const std::string& s)
-{
-  const auto b = s.find_first_not_of(" \t\r\n");
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
+using amHeaderText::FolderOf;
+using amHeaderText::Trim;
 
 std::vector<std::string> Words(const std::string& s)
 {
@@ -138,11 +136,6 @@ std::string CheckGeometry(const std::map<std::string, std::string>& fields)
   return "";
 }
 
-std::string FolderOf(const std::string& path)
-{
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
 }
 
 std::string amNrrdCheck::Check(const std::string& path)
