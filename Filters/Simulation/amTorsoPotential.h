@@ -83,6 +83,9 @@ public:
   vtkGetMacro(Conductivity, double);
   void AddRegionConductivity(double label, double sigma);
   void RemoveAllRegionConductivities();
+  int GetNumberOfRegionConductivities() { return static_cast<int>(this->RegionConductivities.size() / 2); }
+  /// The i-th (label, sigma) pair.
+  double* GetRegionConductivity(int i) VTK_SIZEHINT(2) { return &this->RegionConductivities.at(2 * i); }
   ///@}
 
   ///@{
@@ -90,6 +93,8 @@ public:
   void AddElectrode(double x, double y, double z);
   void RemoveAllElectrodes();
   int GetNumberOfElectrodes() { return static_cast<int>(this->ElectrodePositions.size() / 3); }
+  /// The i-th electrode's position.
+  double* GetElectrode(int i) VTK_SIZEHINT(3) { return &this->ElectrodePositions.at(3 * i); }
   ///@}
 
   ///@{

@@ -75,6 +75,33 @@ class CatalogueMatchesClasses(unittest.TestCase):
         self.assertGreater(checked, 100)
         self.assertEqual(mismatches, [])
 
+    def test_repeatable_defaults_equal_the_classes_defaults(self):
+        """A repeatable property (AddX, one value group a call) keeps its default list in the class;
+        the class reads it back through GetNumberOfXs() and GetX(i), which every repeatable property
+        with an XML default must have, so the two lists cannot drift apart."""
+        checked, problems = 0, []
+        for name, proxy in catalogue.load().items():
+            obj = getattr(anatomesh, proxy.class_name)()
+            for prop in proxy.properties.values():
+                if not prop.repeat_command or prop.defaults is None:
+                    continue
+                item = prop.command[len("Add"):]
+                plural = item[:-1] + "ies" if item.endswith("y") else item + "s"
+                count = getattr(obj, "GetNumberOf" + plural, None)
+                get = getattr(obj, "Get" + item, None)
+                if count is None or get is None:
+                    problems.append("%s.%s: no GetNumberOf%s/Get%s" % (name, prop.name, plural, item))
+                    continue
+                got = []
+                for i in range(count()):
+                    value = get(i)
+                    got.extend(value if isinstance(value, (tuple, list)) else [value])
+                checked += 1
+                if [float(g) for g in got] != [float(d) for d in prop.defaults]:
+                    problems.append("%s.%s: XML %s, class %s" % (name, prop.name, prop.defaults, got))
+        self.assertGreaterEqual(checked, 4)
+        self.assertEqual(problems, [])
+
     def test_output_ports(self):
         proxies = catalogue.load()
         src = anatomesh.amThoraxPhantomSource()
