@@ -20,6 +20,7 @@ packages=(
   libinsighttoolkit5-dev libcgal-dev libtet1.5-dev libeigen3-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-mpi4py openmpi-bin python3-meshio python3-nibabel xvfb xauth
+  qttools5-dev qtxmlpatterns5-dev-tools
 )
 
 # The test suite also fuzzes the parsers (clang's libFuzzer) and reads the meshes back in Gmsh.

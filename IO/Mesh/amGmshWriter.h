@@ -15,7 +15,7 @@
  * WriteInterfaces (default on): the interface and boundary triangles (amTetraFaces: each face where
  * the region changes, once, its normal from the higher region into the lower one, outwards on the
  * boundary) as one physical surface per pair of regions, tagged like the Medit writer's references
- * (1000 * higher + lower, 0 for the outside) and named "<higher> | <lower>" (e.g. "Myocardium |
+ * (1000 × higher + lower, 0 for the outside) and named "<higher> | <lower>" (e.g. "Myocardium |
  * LVBlood", "Body | Outside"), so a solver can put boundary conditions on organ surfaces; region
  * labels must then lie in 1..999.
  */

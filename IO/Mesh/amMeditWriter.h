@@ -15,7 +15,7 @@
  * WriteInterfaces (default on): a tetrahedral mesh without triangles also gets its interface and
  * boundary triangles (amTetraFaces: each face where the region changes, once, the normal from the
  * higher region into the lower one, outwards on the boundary), so a solver can put boundary
- * conditions on organ surfaces. Their reference names the two regions: 1000 * higher + lower,
+ * conditions on organ surfaces. Their reference names the two regions: 1000 × higher + lower,
  * with 0 for the outside (e.g. 5006 is not possible, 6005 separates regions 6 and 5, 1000 is
  * region 1's outer boundary); region labels must then lie in 1..999.
  */

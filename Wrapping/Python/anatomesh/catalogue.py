@@ -78,6 +78,7 @@ class Proxy:
             self.output_ports[port.get("name")] = int(port.get("index", i))
         doc = element.find("Documentation")
         self.short_help = doc.get("short_help", "") if doc is not None else ""
+        self.long_help = doc.get("long_help", self.short_help) if doc is not None else ""
         self.documentation = " ".join(doc.text.split()) if doc is not None and doc.text else ""
 
     @property
