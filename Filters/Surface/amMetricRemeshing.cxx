@@ -19,7 +19,10 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+#include <map>
 #include <sstream>
+#include <utility>
 
 vtkStandardNewMacro(amMetricRemeshing);
 
@@ -30,6 +33,7 @@ amMetricRemeshing::amMetricRemeshing()
   , Hausdorff(0)
   , HausdorffUpperBound(0)
   , InsertedPoints(0)
+  , InterfacesAboveTolerance(0)
 {
   amThreading::Initialize();
 }
@@ -93,10 +97,6 @@ int amMetricRemeshing::RequestData(
   this->Hausdorff = h;
   this->HausdorffUpperBound = upper;
   this->InsertedPoints = result.Inserted;
-  if (h > this->Tolerance)
-    vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance " << this->Tolerance
-                                                              << " mm: refining further would make triangles cross "
-                                                                 "(near junction curves or thin parts of the input).");
   this->UpdateProgress(0.95);
 
   // Output: live vertices and triangles, labels and orientation kept.
@@ -111,18 +111,58 @@ int amMetricRemeshing::RequestData(
   vtkNew<vtkIntArray> labels;
   labels->SetName("Labels");
   labels->SetNumberOfComponents(2);
-  for (const amRemesh::Triangle& t : s.T)
-    if (t.Alive)
+  vtkNew<vtkDoubleArray> distance;
+  distance->SetName("HausdorffDistance");
+  const std::vector<double>& local = r.Hausdorff.TriangleDistances();
+  std::map<std::pair<int, int>, double> perInterface; // (smaller label, larger) -> largest distance
+  for (size_t t = 0; t < s.T.size(); ++t)
+    if (s.T[t].Alive)
     {
-      const vtkIdType ids[3] = { newId[t.V[0]], newId[t.V[1]], newId[t.V[2]] };
+      const amRemesh::Triangle& tri = s.T[t];
+      const vtkIdType ids[3] = { newId[tri.V[0]], newId[tri.V[1]], newId[tri.V[2]] };
       polys->InsertNextCell(3, ids);
-      labels->InsertNextTypedTuple(t.Labels);
+      labels->InsertNextTypedTuple(tri.Labels);
+      const double d = t < local.size() ? local[t] : 0.0;
+      distance->InsertNextValue(d);
+      double& worst = perInterface[std::minmax(tri.Labels[0], tri.Labels[1])];
+      worst = std::max(worst, d);
     }
   output->SetPoints(points);
   output->SetPolys(polys);
-  if (!mesh.Labels.empty())
-    output->GetCellData()->AddArray(labels);
   output->GetFieldData()->PassData(input->GetFieldData());
+  output->GetCellData()->AddArray(distance);
+  if (!mesh.Labels.empty())
+  {
+    output->GetCellData()->AddArray(labels);
+    // Per interface (lower label, higher label, its largest distance): where the bound is missed
+    // is named, not only that it is.
+    vtkNew<vtkDoubleArray> interfaces;
+    interfaces->SetName("InterfaceHausdorff");
+    interfaces->SetNumberOfComponents(3);
+    std::ostringstream missed;
+    this->InterfacesAboveTolerance = 0;
+    for (const auto& [pair, d] : perInterface)
+    {
+      const double row[3] = { static_cast<double>(pair.first), static_cast<double>(pair.second), d };
+      interfaces->InsertNextTuple(row);
+      if (d > this->Tolerance && this->InterfacesAboveTolerance++ < 10)
+        missed << (this->InterfacesAboveTolerance > 1 ? ", " : "") << pair.first << "|" << pair.second << " " << d
+               << " mm";
+    }
+    output->GetFieldData()->AddArray(interfaces);
+    if (this->InterfacesAboveTolerance > 0)
+      vtkWarningMacro("The Hausdorff distance to the input is "
+        << h << " mm, above the tolerance " << this->Tolerance << " mm on " << this->InterfacesAboveTolerance
+        << " interface(s) (" << missed.str() << (this->InterfacesAboveTolerance > 10 ? ", ..." : "")
+        << "): refining further would make triangles cross (where interfaces meet at a small angle or a part is "
+           "thinner than the tolerance).");
+  }
+  else if (h > this->Tolerance)
+  {
+    this->InterfacesAboveTolerance = 1;
+    vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance " << this->Tolerance
+                                                              << " mm: refining further would make triangles cross.");
+  }
   for (const auto& f : { std::make_pair("Hausdorff", h), std::make_pair("HausdorffUpperBound", upper) })
   {
     vtkNew<vtkDoubleArray> a;

@@ -26,8 +26,11 @@
  * away under the same guards, kept only if the bound and the angles end no worse.
  *
  * The achieved distance is in field data "Hausdorff" (and "HausdorffUpperBound", with the
- * sampling gap); a warning says so when the bound could not be reached (two interfaces meeting
- * at a small angle, a part thinner than the tolerance).
+ * sampling gap); per triangle in cell data "HausdorffDistance" (the largest distance measured on
+ * it: its samples to the input and the input samples nearest to it, mm); per interface in field
+ * data "InterfaceHausdorff" (lower label, higher label, largest distance; with "Labels"). A
+ * warning names the interfaces where the bound could not be reached (two interfaces meeting at a
+ * small angle, a part thinner than the tolerance) with their achieved distance.
  *
  * The passes run on two workers, one on each side of a plane through the median vertex; the
  * output does not depend on the thread count. The algorithm lives in Remeshing/ (amRemesher and
@@ -76,6 +79,8 @@ public:
   vtkGetMacro(Hausdorff, double);
   vtkGetMacro(HausdorffUpperBound, double);
   vtkGetMacro(InsertedPoints, vtkIdType);
+  /// Interfaces (label pairs) whose largest distance is above Tolerance.
+  vtkGetMacro(InterfacesAboveTolerance, int);
   ///@}
 
 protected:
@@ -89,6 +94,7 @@ protected:
   double Hausdorff;
   double HausdorffUpperBound;
   vtkIdType InsertedPoints;
+  int InterfacesAboveTolerance;
 
 private:
   amMetricRemeshing(const amMetricRemeshing&) = delete;

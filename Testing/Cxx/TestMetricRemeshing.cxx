@@ -19,10 +19,12 @@
 #include "vtkFieldData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSphereSource.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -112,6 +114,52 @@ TEST(MetricRemeshing, TwoMaterialBallUniformSize)
   EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 1, 0 }, { 2, 0 }, { 2, 1 } }));
   ASSERT_NE(out->GetFieldData()->GetArray("Hausdorff"), nullptr);
   EXPECT_NEAR(out->GetFieldData()->GetArray("Hausdorff")->GetComponent(0, 0), rm->GetHausdorff(), 1e-12);
+
+  // Where the distance is: per triangle, its largest is the Hausdorff distance; per interface,
+  // the largest of its triangles; every vertex's independently measured distance is within the
+  // largest of its triangles' (a vertex is one of their samples).
+  vtkDataArray* local = out->GetCellData()->GetArray("HausdorffDistance");
+  ASSERT_NE(local, nullptr);
+  std::map<std::pair<int, int>, double> perPair;
+  double largest = 0;
+  for (vtkIdType t = 0; t < out->GetNumberOfCells(); ++t)
+  {
+    const double v = local->GetTuple1(t);
+    EXPECT_GE(v, 0.0);
+    largest = std::max(largest, v);
+    const int a = static_cast<int>(labels->GetComponent(t, 0)), b = static_cast<int>(labels->GetComponent(t, 1));
+    double& w = perPair[std::minmax(a, b)];
+    w = std::max(w, v);
+  }
+  EXPECT_NEAR(largest, rm->GetHausdorff(), 1e-12);
+  vtkDataArray* interfaces = out->GetFieldData()->GetArray("InterfaceHausdorff");
+  ASSERT_NE(interfaces, nullptr);
+  ASSERT_EQ(interfaces->GetNumberOfComponents(), 3);
+  ASSERT_EQ(interfaces->GetNumberOfTuples(), 3);
+  for (vtkIdType i = 0; i < 3; ++i)
+  {
+    const std::pair<int, int> key(
+      static_cast<int>(interfaces->GetComponent(i, 0)), static_cast<int>(interfaces->GetComponent(i, 1)));
+    ASSERT_EQ(perPair.count(key), 1u) << key.first << "|" << key.second;
+    EXPECT_EQ(interfaces->GetComponent(i, 2), perPair[key]);
+    EXPECT_GT(perPair[key], 0.0);
+  }
+  EXPECT_EQ(rm->GetInterfacesAboveTolerance(), 0);
+  vtkPolyData* measured = d->GetOutput();
+  vtkDataArray* vertexDistance = measured->GetPointData()->GetArray("Distance");
+  ASSERT_NE(vertexDistance, nullptr);
+  std::vector<double> vertexBound(static_cast<size_t>(out->GetNumberOfPoints()), 0.0);
+  auto it = vtk::TakeSmartPointer(out->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+      vertexBound[ids[k]] = std::max(vertexBound[ids[k]], local->GetTuple1(it->GetCurrentCellId()));
+  }
+  for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v)
+    EXPECT_LE(vertexDistance->GetTuple1(v), vertexBound[v] + 1e-9) << v;
 }
 
 TEST(MetricRemeshing, PhantomWithCurvatureMetric)

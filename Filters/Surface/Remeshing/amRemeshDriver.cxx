@@ -34,6 +34,7 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
   double& upper = result.UpperBound;
   long long& inserted = result.Inserted;
   h = this->Enforce(upper, inserted);
+  bool measured = true; // the last Measure saw the surface as it is (its per-triangle distances)
   report(0.85);
   // Triangles with small angles that the insertions left (no tetrahedron on them can be good):
   // removed where a flip or collapse allows it (junction vertices closing the strips of an
@@ -69,11 +70,13 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
     if (cleaned == 0)
       return false;
     h = this->Enforce(upper, inserted);
+    measured = true;
     this->Mesh.AngleSummary(smallAfter, smallestAfter, shortestAfter);
     if (h > std::max(hBefore, this->In.Eps) || (smallAfter >= smallBefore && !(smallestAfter > smallestBefore)) ||
       shortestAfter < 0.5 * shortestBefore)
     {
       this->Restore(std::move(before));
+      measured = false;
       h = hBefore;
       upper = upperBefore;
       inserted = insertedBefore;
@@ -84,6 +87,13 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
   for (int n = 0; n < 3 && attempt(SmallAngle, SmallAngle); ++n)
     ;
   attempt(DegenerateAngle, MinimumNewAngle);
+  if (!measured)
+  {
+    // Restored to an earlier state: measured again (incrementally) for its per-triangle distances.
+    std::vector<std::pair<int, Vec3>> insert;
+    std::vector<int> edgeOf;
+    h = this->Hausdorff.Measure(this->Mesh, this->In, upper, insert, edgeOf);
+  }
   return result;
 }
 

@@ -106,6 +106,7 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
   double worst = 0, gap = 0;
   insert.clear();
   std::vector<char> used(nt, 0);
+  this->Local.assign(nt, 0.0);
   const double eps2 = In.Eps * In.Eps, near2 = 16.0 * eps2;
   // Input -> remeshed.
   for (int s = 0; s < nSheets; ++s)
@@ -150,7 +151,10 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
       // boundaries is where the interface narrowed to a junction curve (a strip between two
       // curves that a junction point's collapse closed): the regions still meet there.
       const double relaxed = d2[i] > eps2 ? this->ToBothRegions(S, pts, In, s, samples[i]) : d2[i];
-      worst = std::max(worst, std::sqrt(std::min(d2[i], relaxed)));
+      const double d = std::sqrt(std::min(d2[i], relaxed));
+      worst = std::max(worst, d);
+      if (at[i] >= 0 && static_cast<size_t>(at[i]) < nt)
+        this->Local[at[i]] = std::max(this->Local[at[i]], d);
       if (relaxed > eps2 && at[i] >= 0)
       {
         const int t = at[i];
@@ -243,6 +247,7 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
   {
     worst = std::max(worst, cache.Worst[t]);
     gap = std::max(gap, cache.Gap[t]);
+    this->Local[t] = std::max(this->Local[t], cache.Worst[t]);
     if (cache.Worst[t] > In.Eps && !used[t])
     {
       used[t] = 1;

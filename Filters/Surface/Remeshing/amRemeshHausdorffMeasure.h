@@ -34,7 +34,12 @@ public:
   double Measure(const Surface& surface, const amRemesh::Input& input, double& upperBound,
     std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf);
 
+  /// Per triangle slot, at the last Measure: the largest distance measured on it (its samples to
+  /// the input, and the input samples whose nearest triangle it is), mm; 0 for dead slots.
+  const std::vector<double>& TriangleDistances() const { return this->Local; }
+
 private:
+  std::vector<double> Local;
   /// The farther of the distances (squared) from x to the boundaries of the two regions of
   /// 'sheet' (any triangle with the label on a side), inf where a region has none.
   double ToBothRegions(const Surface& surface, const std::vector<std::array<double, 3>>& points,
