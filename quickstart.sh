@@ -69,7 +69,7 @@ done
 if [ "$mode" = run ]; then
   out="${ANATOMESH_OUTPUT:-$here/out/thorax}"
   echo "Anatomesh: running Examples/Pipelines/thorax.xml on the embedded thorax phantom -> $out"
-  anatomesh run "$here/Examples/Pipelines/thorax.xml" --output "$out"
+  anatomesh run "$here/Examples/Pipelines/thorax.xml" --output "$out" --report
 else
   cd "$build"
   ctest --output-on-failure -j "$jobs" --timeout 1500

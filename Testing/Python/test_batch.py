@@ -26,6 +26,7 @@ PIPELINE = """
   <Filter name="tets" type="Tetrahedralize"><Input from="surface"/></Filter>
   <Filter name="quality" type="MeshQuality"><Input from="tets" port="Mesh"/></Filter>
   <Output from="quality" port="Table" file="${output}/quality.csv"/>
+  <Output from="quality" port="Mesh" file="${output}/mesh.vtu"/>
   <Filter name="save" type="ImageWriter">
     <Input from="phantom" port="Labels"/>
     <Property name="FileName" value="${output}/labels.nii.gz"/>
@@ -83,10 +84,20 @@ class Batch(unittest.TestCase):
         html = open(os.path.join(self.out, "batch_summary.html")).read()
         self.assertIn("3 cases, 1 failed", html)
 
-        # Resume: complete cases are skipped, the failed one runs again (and fails again).
-        code, stdout, stderr = run("batch", self.pipeline, self.manifest, "--resume", "--output", self.out)
+        # Resume: complete cases are skipped, the failed one runs again (and fails again); with --report the
+        # skipped cases get their report, linked from the summary.
+        code, stdout, stderr = run("batch", self.pipeline, self.manifest, "--resume", "--report", "--output", self.out)
         self.assertEqual(code, 1, stderr)
         self.assertIn("3 cases: 0 complete, 2 skipped, 1 failed", stdout)
+        rows = self.summary()
+        for case in ("coarse", "fine"):
+            self.assertEqual(rows[case]["report"], os.path.join(self.out, case, "report.html"))
+            page = open(rows[case]["report"]).read()
+            self.assertIn("Quality per region", page)
+            for picture in ("mesh.png", "quality.png"):
+                self.assertTrue(os.path.isfile(os.path.join(self.out, case, "report", picture)), picture)
+        self.assertEqual(rows["broken"]["report"], "")
+        self.assertIn("<a href='coarse/report.html'>report</a>", open(os.path.join(self.out, "batch_summary.html")).read())
         # A changed variable is a new run, not a skip; the broken case mended runs too.
         with open(self.manifest, "w") as f:
             f.write("case,spacing,noise\ncoarse,12,0\nbroken,8,5\nfine,8,0\n")

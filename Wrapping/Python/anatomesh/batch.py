@@ -56,7 +56,7 @@ def read_manifest(path, declared):
     return cases
 
 
-def run_case(pipeline, name, variables, resume):
+def run_case(pipeline, name, variables, resume, report=False):
     """Runs one case in its own process; returns its summary row."""
     folder = variables["output"]
     row = {"case": name, "output": folder, "log": os.path.join(folder, "anatomesh.log")}
@@ -65,11 +65,20 @@ def run_case(pipeline, name, variables, resume):
             done.get("variables", {}).get(k) == v for k, v in variables.items()):
         row.update(status="skipped (complete)", exit=0, seconds=done.get("seconds", 0.0),
                    figures=done.get("figures", {}))
+        report_path = os.path.join(folder, "report.html")
+        if report and not os.path.isfile(report_path):  # complete before reports were asked for
+            with open(row["log"], "a") as log:
+                subprocess.call([sys.executable, "-m", "anatomesh.cli", "report", folder], stdout=log,
+                                stderr=subprocess.STDOUT)
+        if report and os.path.isfile(report_path):
+            row["report"] = report_path
         return row
     os.makedirs(folder, exist_ok=True)
     command = [sys.executable, "-m", "anatomesh.cli", "run", pipeline]
     for k, v in variables.items():
         command += ["--set", "%s=%s" % (k, v)]
+    if report:
+        command.append("--report")
     t0 = time.time()
     with open(row["log"], "w") as log:
         code = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
@@ -77,6 +86,8 @@ def run_case(pipeline, name, variables, resume):
     ok = code == 0 and done.get("status") == "complete"
     row.update(status="complete" if ok else "failed", exit=code, seconds=round(time.time() - t0, 2),
                figures=done.get("figures", {}))
+    if ok and report and os.path.isfile(os.path.join(folder, "report.html")):
+        row["report"] = os.path.join(folder, "report.html")
     if not ok:
         row["error"] = done.get("error") or _last_error(row["log"]) or "exit status %d (see the log)" % code
     return row
@@ -100,7 +111,8 @@ def write_summary(folder, rows):
             for key in values:
                 if (file, key) not in figure_columns:
                     figure_columns.append((file, key))
-    head = ["case", "status", "exit", "seconds", "output", "log", "error"]
+    head = ["case", "status", "exit", "seconds", "output", "log", "error"] + (
+        ["report"] if any("report" in r for r in rows) else [])
     table = [head + ["%s: %s" % c for c in figure_columns]]
     for row in rows:
         table.append([row.get(h, "") for h in head] +
@@ -117,8 +129,16 @@ def write_summary(folder, rows):
         f.write("<tr>" + "".join("<th>%s</th>" % html.escape(str(h)) for h in table[0]) + "</tr>\n")
         for row, cells in zip(rows, table[1:]):
             cls = " class='failed'" if row["status"] == "failed" else ""
-            f.write("<tr%s>" % cls + "".join("<td>%s</td>" % html.escape(str(c)) for c in cells) + "</tr>\n")
+            f.write("<tr%s>" % cls + "".join(_cell(h, c, folder) for h, c in zip(table[0], cells)) + "</tr>\n")
         f.write("</table></body></html>\n")
+
+
+def _cell(column, value, folder):
+    """A summary cell; a case's report is a link (relative to the summary, so the folder can move)."""
+    if column == "report" and value:
+        target = os.path.relpath(value, folder)
+        return "<td><a href='%s'>report</a></td>" % html.escape(target, quote=True)
+    return "<td>%s</td>" % html.escape(str(value))
 
 
 def _mpi():
@@ -155,7 +175,7 @@ def main(args):
     mine = [(i, w) for i, w in enumerate(work) if i % size == rank]
     results = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = {pool.submit(run_case, args.pipeline, name, variables, args.resume): i
+        futures = {pool.submit(run_case, args.pipeline, name, variables, args.resume, args.report): i
                    for i, (name, variables) in mine}
         for future in concurrent.futures.as_completed(futures):
             row = future.result()

@@ -1,7 +1,8 @@
 """The ``anatomesh`` command.
 
-    anatomesh run PIPELINE.xml [--set NAME=VALUE ...] [--output DIR] [--quiet]
-    anatomesh batch PIPELINE.xml MANIFEST.csv [--jobs N] [--resume] [--output DIR] [--set NAME=VALUE ...]
+    anatomesh run PIPELINE.xml [--set NAME=VALUE ...] [--output DIR] [--quiet] [--report [--report-time MS]]
+    anatomesh batch PIPELINE.xml MANIFEST.csv [--jobs N] [--resume] [--output DIR] [--set NAME=VALUE ...] [--report]
+    anatomesh report DIR [--time MS]   report.html with pictures for a run's output folder
     anatomesh filters            list the filter catalogue (from the plugin's server-manager XML)
     anatomesh --version
 
@@ -182,7 +183,34 @@ def _run(args):
     if not args.quiet:
         _summary(written, p.written_data, sys.stdout)
         sys.stdout.write("Done in %.1f s.\n" % (time.time() - t0))
+    if args.report:
+        return _write_report(folder, args.report_time, args.quiet)
     return 0
+
+
+def _write_report(folder, at, quiet):
+    from .report import write_report
+    t0 = time.time()
+    path, notes = write_report(folder, at)
+    for note in notes:
+        sys.stderr.write("anatomesh: warning: report: %s\n" % note)
+    if not quiet:
+        sys.stdout.write("Report: %s (%.1f s)\n" % (path, time.time() - t0))
+    return 0
+
+
+def _report(args):
+    from . import marker as m
+    if not os.path.isdir(args.folder):
+        sys.stderr.write("anatomesh: error: %s: not a folder\n" % args.folder)
+        return 1
+    record = m.read(args.folder)
+    if record is None:
+        sys.stderr.write("anatomesh: warning: %s has no %s: reporting on every file in it\n" % (args.folder, m.NAME))
+    elif record.get("status") != "complete":
+        sys.stderr.write("anatomesh: warning: %s: the run did not complete (%s)\n" % (
+            args.folder, record.get("error", record.get("status"))))
+    return _write_report(args.folder, args.time, False)
 
 
 def _filters(args):
@@ -206,6 +234,13 @@ def main(argv=None):
     run.add_argument("--set", action="append", metavar="NAME=VALUE", help="set a pipeline variable")
     run.add_argument("--output", metavar="DIR", help="output folder (sets the variable 'output')")
     run.add_argument("--quiet", action="store_true", help="no progress or summary")
+    run.add_argument("--report", action="store_true", help="write report.html with pictures beside the outputs")
+    run.add_argument("--report-time", type=float, metavar="MS",
+                     help="time of the body-surface picture (default: when the leads are largest)")
+    rep = sub.add_parser("report", help="write report.html for a run's output folder")
+    rep.add_argument("folder", help="a run's output folder")
+    rep.add_argument("--time", type=float, metavar="MS",
+                     help="time of the body-surface picture (default: when the leads are largest)")
     bat = sub.add_parser("batch", help="run a pipeline once per row of a CSV manifest")
     bat.add_argument("pipeline", help="pipeline XML file")
     bat.add_argument("manifest", help="CSV file: a header of pipeline variables (and 'case'), one row per case")
@@ -214,6 +249,7 @@ def main(argv=None):
     bat.add_argument("--output", metavar="DIR", default="batch",
                      help="folder of the summary, and of each case's output when the manifest has no 'output'")
     bat.add_argument("--set", action="append", metavar="NAME=VALUE", help="a variable for every case")
+    bat.add_argument("--report", action="store_true", help="each case writes its report.html")
     flt = sub.add_parser("filters", help="list the filter catalogue")
     flt.add_argument("--verbose", "-v", action="store_true", help="show properties")
     args = parser.parse_args(argv)
@@ -231,6 +267,8 @@ def main(argv=None):
             return batch.main(args)
         if args.command == "filters":
             return _filters(args)
+        if args.command == "report":
+            return _report(args)
     except OSError as e:
         # A folder that cannot be made or written (a file in its place, read-only, full): the path
         # and the system's words, not a traceback.

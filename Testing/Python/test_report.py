@@ -1,0 +1,110 @@
+"""``anatomesh run --report`` and ``anatomesh report``: report.html beside a run's outputs with its
+pictures (the 3-D views rendered off-screen by VTK under an Xvfb the report starts itself, the
+charts by matplotlib) and tables; without any X display, the charts and tables still, and a note."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+SOURCE = os.path.abspath(os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
+TMP = os.environ.get("ANATOMESH_TEST_TMP", tempfile.gettempdir())
+CLI = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh")]
+VIEWS = ["mesh.png", "surface.png", "activation.png", "body_surface.png"]
+CHARTS = ["quality.png", "ecg.png"]
+
+
+def run(*args, env=None):
+    p = subprocess.run(CLI + list(args), capture_output=True, text=True, timeout=900, env=env)
+    return p.returncode, p.stdout, p.stderr
+
+
+def pixels(path):
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    rgb = vtk_to_numpy(image.GetPointData().GetScalars())[:, :3]
+    return width, height, rgb
+
+
+class Report(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.out = os.path.join(TMP, "report_job")
+        shutil.rmtree(cls.out, ignore_errors=True)
+        env = dict(os.environ)
+        env.pop("DISPLAY", None)  # as on a server or in CI: the report starts its own Xvfb
+        cls.result = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"), "--output", cls.out,
+                         "--set", "spacing=6", "--set", "tolerance=1.5", "--set", "size=10", "--report", env=env)
+
+    def test_run_writes_the_report_with_every_picture(self):
+        code, stdout, stderr = self.result
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("Report: %s" % os.path.join(self.out, "report.html"), stdout)
+        self.assertNotIn("report:", stderr)  # no picture missing
+        with open(os.path.join(self.out, "report.html")) as f:
+            page = f.read()
+        for name in VIEWS + CHARTS:
+            path = os.path.join(self.out, "report", name)
+            self.assertIn("src='report/%s'" % name, page)
+            self.assertTrue(os.path.isfile(path), name)
+            self.assertGreater(os.path.getsize(path), 10000, name)
+            self.assertLess(os.path.getsize(path), 5000000, name)
+            width, height, rgb = pixels(path)
+            self.assertGreaterEqual(width, 700, name)
+            self.assertGreaterEqual(height, 400, name)
+            drawn = np.any(rgb < 245, axis=1).mean()  # not a blank page
+            self.assertGreater(drawn, 0.05, name)
+            if name in VIEWS:
+                self.assertEqual((width, height), (1100, 720), name)
+                self.assertGreater(len(np.unique(rgb, axis=0)), 200, name)  # shaded colour maps, not flat
+        # The mesh view shows every region in its own colour, the legend names them.
+        from anatomesh.report import scenes
+        _, _, rgb = pixels(os.path.join(self.out, "report", "mesh.png"))
+        colours = {tuple(int(round(255 * c)) for c in rgb_) for rgb_ in scenes.PALETTE[:10]}
+        self.assertGreaterEqual(len(colours & {tuple(p) for p in np.unique(rgb, axis=0).tolist()}), 10)
+        # Tables: the paper's Table 1 beside ours, region names, volumes, interface distances.
+        for text in ("Quality per region (the paper&#x27;s Table 1)", "paper (whole mesh)", "47.9", "5 Myocardium",
+                     "Region volumes", "Largest distance to the input per interface", "whole mesh",
+                     "Pipeline variables"):
+            self.assertIn(text, page)
+        self.assertEqual([f for f in os.listdir(os.path.join(self.out, "report")) if ".tmp" in f], [])
+
+    def test_report_of_a_moved_folder_without_any_display(self):
+        code, _, stderr = self.result
+        self.assertEqual(code, 0, stderr)
+        moved = os.path.join(TMP, "report_job_moved")
+        shutil.rmtree(moved, ignore_errors=True)
+        shutil.copytree(self.out, moved, ignore=shutil.ignore_patterns("report*"))
+        env = dict(os.environ)
+        env.pop("DISPLAY", None)
+        empty = os.path.join(TMP, "report_empty_path")
+        os.makedirs(empty, exist_ok=True)
+        env["PATH"] = empty  # no Xvfb to start (the command runs as python3 SCRIPT, no PATH needed)
+        code, stdout, stderr = run("report", moved, "--time", "100", env=env)
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("3-D pictures not drawn: no X display", stderr)
+        with open(os.path.join(moved, "report.html")) as f:
+            page = f.read()
+        self.assertIn("3-D pictures not drawn", page)
+        for name in CHARTS:  # found where the moved folder holds them, not where the run wrote them
+            self.assertTrue(os.path.isfile(os.path.join(moved, "report", name)), name)
+        for name in VIEWS:
+            self.assertFalse(os.path.exists(os.path.join(moved, "report", name)), name)
+        self.assertIn("5 Myocardium", page)
+
+    def test_report_of_what_is_not_a_run(self):
+        code, _, stderr = run("report", os.path.join(TMP, "no_such_run_folder"))
+        self.assertEqual(code, 1)
+        self.assertIn("no_such_run_folder: not a folder", stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()

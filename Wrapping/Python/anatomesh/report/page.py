@@ -1,0 +1,142 @@
+"""report.html: the run's pictures and tables on one page, written last and atomically."""
+import html
+import os
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+from . import charts, collect, scenes, tables
+from .display import x_display
+
+STYLE = """body{font-family:sans-serif;max-width:1000px;margin:2em auto;color:#222}
+table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;text-align:right}
+th{background:#eef}caption{text-align:left;font-weight:bold;padding:4px 0}img{max-width:100%;border:1px solid #ddd}
+figure{margin:1.5em 0}figcaption{color:#555}.note{color:#a33}"""
+
+
+def _ecg(path):
+    head, rows = collect.table(path)
+    values = np.array([[float(c) for c in r] for r in rows]) if rows else np.zeros((0, len(head)))
+    return values[:, 0], {name: values[:, i] for i, name in enumerate(head) if i > 0}
+
+
+def _default_time(found, ecg):
+    """The body-surface picture's time when none is given: half the heart activated (the median
+    activation time of its nodes), else when the leads are largest together."""
+    if "heart" in found:
+        heart = collect.read_xml(collect.series(found["heart"])[-1][1])
+        times = heart.GetPointData().GetArray("ActivationTime")
+        if times is not None:
+            t = vtk_to_numpy(times)
+            if (t >= 0).any():
+                return float(np.median(t[t >= 0]))
+    if ecg is not None and ecg[1] and ecg[0].size:
+        return float(ecg[0][int(np.argmax(sum(np.abs(v) for v in ecg[1].values())))])
+    return None
+
+
+def _pictures(found, mesh, names, folder, pictures, notes, time):
+    """The 3-D views; each failure is a note, never the end of the report."""
+    jobs = []
+    if mesh is not None:
+        jobs.append(("mesh.png", "The mesh cut through the middle, coloured by region: the elements of every region "
+                     "meet on their shared faces.", lambda p: scenes.mesh_by_region(mesh, p, names)))
+    if "surface" in found:
+        surface = collect.read_xml(found["surface"])
+        if surface.GetCellData().GetArray("HausdorffDistance") is not None:
+            tol = (found.get("record") or {}).get("variables", {}).get("tolerance")
+            jobs.append(("surface.png", "The remeshed surface (back half) coloured by each triangle's largest distance "
+                         "to the smoothed surface it approximates.",
+                         lambda p: scenes.surface_by_distance(surface, p, float(tol) if tol else None)))
+        else:
+            notes.append("%s has no per-triangle distances (made before they were recorded)." % found["surface"])
+    if "heart" in found:
+        frames = collect.series(found["heart"])
+        heart = collect.read_xml(frames[-1][1])
+        if heart.GetPointData().GetArray("ActivationTime") is not None:
+            jobs.append(("activation.png", "Activation time on the heart's surface (grey: never activated).",
+                         lambda p: scenes.activation_map(heart, p)))
+    if "body" in found:
+        frames = collect.series(found["body"])
+        at, frame = min(frames, key=lambda f: abs(f[0] - time)) if time is not None else frames[len(frames) // 2]
+        body = collect.read_xml(frame)
+        jobs.append(("body_surface.png", "The body-surface potential at %g ms." % at,
+                     lambda p, body=body, at=at: scenes.body_surface_potential(body, p, at)))
+    if not jobs:
+        return
+    with x_display() as why:
+        if why is not None:
+            notes.append("3-D pictures not drawn: %s." % why)
+            return
+        for name, caption, draw in jobs:
+            path = os.path.join(folder, name)
+            try:
+                draw(path)
+                pictures.append((name, caption))
+            except Exception as e:  # noqa: BLE001 (a picture that fails is reported on the page)
+                notes.append("%s not drawn: %s" % (name, e))
+
+
+def write_report(folder, time=None):
+    """Writes folder/report.html and its pictures in folder/report/; returns (path, notes), the
+    notes saying what could not be drawn and why."""
+    found = collect.find(folder)
+    pictures_dir = os.path.join(folder, "report")
+    os.makedirs(pictures_dir, exist_ok=True)
+    pictures, notes, sections = [], [], []
+    ecg = _ecg(found["ecg"]) if "ecg" in found else None
+    if time is None:
+        time = _default_time(found, ecg)
+    mesh = collect.read_xml(found["mesh"]) if "mesh" in found else None
+    names = collect.label_names(mesh)
+    _pictures(found, mesh, names, pictures_dir, pictures, notes, time)
+    if mesh is not None and mesh.GetCellData().GetArray("Quality") is not None:
+        charts.quality_histogram(vtk_to_numpy(mesh.GetCellData().GetArray("Quality")),
+                                 os.path.join(pictures_dir, "quality.png"))
+        pictures.append(("quality.png", "Element quality: the number of tetrahedra per quality Q (log scales); the "
+                         "dashed line is the bar no element may pass."))
+    if ecg is not None:
+        charts.ecg_leads(ecg[0], ecg[1], os.path.join(pictures_dir, "ecg.png"))
+        pictures.append(("ecg.png", "The 12 leads, one shared mV scale, time in ms."))
+    if "quality" in found:
+        sections.append(tables.quality(*collect.table(found["quality"]), names=names))
+    if mesh is not None and mesh.GetFieldData().GetArray("RegionVolumes") is not None:
+        sections.append(tables.region_volumes(mesh.GetFieldData().GetArray("RegionVolumes"), names))
+    if "surface" in found:
+        surface = collect.read_xml(found["surface"])
+        array = surface.GetFieldData().GetArray("InterfaceHausdorff")
+        if array is not None:
+            tol = (found.get("record") or {}).get("variables", {}).get("tolerance")
+            sections.append(tables.interfaces(array, float(tol) if tol else None, names))
+    if "dice" in found:
+        sections.append(tables.dice(*collect.table(found["dice"]), names=names))
+    return _write(folder, found.get("record"), pictures, sections, notes), notes
+
+
+def _write(folder, record, pictures, sections, notes):
+    record = record or {}
+    title = "Anatomesh run: %s" % os.path.basename(record.get("pipeline", folder))
+    out = ["<!DOCTYPE html>", "<html><head><meta charset='utf-8'><title>%s</title>" % html.escape(title),
+           "<style>%s</style></head><body>" % STYLE, "<h1>%s</h1>" % html.escape(title)]
+    out.append("<p>Status <b>%s</b>, %s s; pipeline %s; output %s.</p>" % (
+        html.escape(str(record.get("status", "unknown"))), html.escape(str(record.get("seconds", "?"))),
+        html.escape(str(record.get("pipeline", "?"))), html.escape(os.path.abspath(folder))))
+    out.extend("<p class='note'>%s</p>" % html.escape(n) for n in notes)
+    for name, caption in pictures:
+        out.append("<figure><img src='report/%s' alt='%s'><figcaption>%s</figcaption></figure>" % (
+            html.escape(name), html.escape(caption), html.escape(caption)))
+    out.extend(sections)
+    out.append(tables.variables(record))
+    out.append("</body></html>")
+    path = os.path.join(folder, "report.html")
+    tmp = path + ".tmp%d" % os.getpid()
+    try:
+        with open(tmp, "w") as f:
+            f.write("\n".join(out) + "\n")
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+    return path
