@@ -26,6 +26,11 @@ class CatalogueMatchesClasses(unittest.TestCase):
                 setter = getattr(obj, prop.command, None)
                 self.assertIsNotNone(setter, "%s.%s: no method %s" % (name, prop.name, prop.command))
                 if prop.repeat_command:
+                    if prop.use_index:  # ParaView's indexed form
+                        self.assertTrue(prop.set_number_command, (name, prop.name))
+                        getattr(obj, prop.set_number_command)(1)
+                        setter(0, *([1] * prop.per_command))
+                        continue
                     self.assertTrue(prop.clean_command, (name, prop.name))
                     getattr(obj, prop.clean_command)()
                     setter(*([1] * prop.per_command))
@@ -85,12 +90,15 @@ class CatalogueMatchesClasses(unittest.TestCase):
             for prop in proxy.properties.values():
                 if not prop.repeat_command or prop.defaults is None:
                     continue
-                item = prop.command[len("Add"):]
-                plural = item[:-1] + "ies" if item.endswith("y") else item + "s"
-                count = getattr(obj, "GetNumberOf" + plural, None)
-                get = getattr(obj, "Get" + item, None)
+                if prop.use_index:  # SetNumberOfXs + SetX(i, ...): read back by GetNumberOfXs and GetX(i)
+                    count_name, get_name = "G" + prop.set_number_command[1:], "G" + prop.command[1:]
+                else:  # AddX: GetNumberOfXs and GetX(i)
+                    item = prop.command[len("Add"):]
+                    count_name = "GetNumberOf" + (item[:-1] + "ies" if item.endswith("y") else item + "s")
+                    get_name = "Get" + item
+                count, get = getattr(obj, count_name, None), getattr(obj, get_name, None)
                 if count is None or get is None:
-                    problems.append("%s.%s: no GetNumberOf%s/Get%s" % (name, prop.name, plural, item))
+                    problems.append("%s.%s: no %s/%s" % (name, prop.name, count_name, get_name))
                     continue
                 got = []
                 for i in range(count()):
@@ -99,7 +107,7 @@ class CatalogueMatchesClasses(unittest.TestCase):
                 checked += 1
                 if [float(g) for g in got] != [float(d) for d in prop.defaults]:
                     problems.append("%s.%s: XML %s, class %s" % (name, prop.name, prop.defaults, got))
-        self.assertGreaterEqual(checked, 4)
+        self.assertGreaterEqual(checked, 6)
         self.assertEqual(problems, [])
 
     def test_output_ports(self):

@@ -138,6 +138,38 @@ class ThoraxJob(unittest.TestCase):
         self.assertLess(whole["MeanQuality"], 1.45)
         self.assertEqual(whole["InvertedTetrahedra"], 0)
 
+    def test_seed_points_source_feeds_the_snake(self):
+        """ParaView's indexed repeatable properties (SeedPoints' Positions and Labels) in a pipeline file."""
+        out = os.path.join(TMP, "seed_points_job")
+        shutil.rmtree(out, ignore_errors=True)
+        path = pipeline_file("seed_points.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="phantom" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="4 4 4"/>
+              </Filter>
+              <Filter name="seeds" type="SeedPoints">
+                <Property name="Positions" value="29.4 -24.1 -28  -15 -25 -28"/>
+                <Property name="Labels" value="16 17"/>
+              </Filter>
+              <Filter name="snake" type="SnakeSegmentation">
+                <Input from="phantom" port="CT"/>
+                <Input name="SeedPoints" from="seeds"/>
+              </Filter>
+              <Output from="snake" file="${output}/organs.vti"/>
+            </AnatomeshPipeline>""")
+        code, _, stderr = run("run", path, "--output", out, "--quiet")
+        self.assertEqual(code, 0, stderr)
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+        reader = vtkXMLImageDataReader()
+        reader.SetFileName(os.path.join(out, "organs.vti"))
+        reader.Update()
+        labels = vtk_to_numpy(reader.GetOutput().GetPointData().GetArray("Labels"))
+        self.assertEqual(sorted(set(labels.tolist())), [0, 16, 17])
+        # The two blood pools: about 65 and 27 cm3 in the phantom (4 mm voxels).
+        self.assertGreater((labels == 16).sum() * 64 / 1000.0, 40)
+        self.assertGreater((labels == 17).sum() * 64 / 1000.0, 15)
+
     def test_defaults_can_name_files_beside_the_pipeline(self):
         folder = os.path.join(TMP, "beside_pipeline")
         shutil.rmtree(folder, ignore_errors=True)

@@ -17,7 +17,7 @@ from .AnatomeshFiltersCleaning import amMorphologyCleaning
 from .AnatomeshFiltersSegmentation import (
     amIntensityClassifier, amLabelOverlap, amSnakeSegmentation, amTorsoSegmentation)
 from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential
-from .AnatomeshFiltersSources import amSyntheticAtlasSource, amThoraxPhantomSource
+from .AnatomeshFiltersSources import amSeedPointsSource, amSyntheticAtlasSource, amThoraxPhantomSource
 from .AnatomeshFiltersSurface import (
     amCurvatureMetric,
     amLabelSurface,
@@ -46,6 +46,7 @@ __all__ = [
     "amMeshQuality",
     "amMetricRemeshing",
     "amMorphologyCleaning",
+    "amSeedPointsSource",
     "amSnakeSegmentation",
     "amSurfaceDistance",
     "amSurfaceSmoothing",

@@ -30,6 +30,9 @@ class Property:
         self.repeat_command = element.get("repeat_command") == "1"
         self.per_command = int(element.get("number_of_elements_per_command", "1"))
         self.clean_command = element.get("clean_command")
+        # ParaView's indexed form: set_number_command(groups), then command(i, group...) per group.
+        self.set_number_command = element.get("set_number_command")
+        self.use_index = element.get("use_index") == "1"
         self.port_index = int(element.get("port_index", "0"))
         self.optional = element.find("Hints/Optional") is not None
         defaults = element.get("default_values")

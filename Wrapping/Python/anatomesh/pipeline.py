@@ -353,8 +353,13 @@ class Pipeline:
                         if prop.clean_command:
                             getattr(algorithm, prop.clean_command)()
                         k = prop.per_command
+                        if prop.set_number_command:
+                            getattr(algorithm, prop.set_number_command)(len(args) // k)
                         for i in range(0, len(args), k):
-                            method(*args[i:i + k])
+                            if prop.use_index:
+                                method(i // k, *args[i:i + k])
+                            else:
+                                method(*args[i:i + k])
                     else:
                         method(*args)
                 except (TypeError, ValueError) as e:
