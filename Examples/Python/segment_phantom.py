@@ -29,11 +29,18 @@ snake = anatomesh.amSnakeSegmentation()
 snake.SetInputConnection(phantom.GetOutputPort(0))  # the CT, in HU
 snake.SetMode(mode)
 organs = [6, 7, 8, 3, 4]  # LV blood, RV blood, aorta, right lung, left lung (precedence order)
-for label in organs:
+# The clicks, as ParaView's Seed Points handles give them: a position and a label per seed.
+seeds = anatomesh.amSeedPointsSource()
+seeds.SetNumberOfSeeds(len(organs) + 1)
+seeds.SetNumberOfSeedLabels(len(organs) + 1)
+for i, label in enumerate(organs):
     centre = [0.0, 0.0, 0.0]
     phantom.GetOrganCenter(label, centre)
-    snake.AddSeed(centre[0], centre[1], centre[2], label)
-snake.AddSeed(5.0, -20.0, 30.0, 8)  # a second click on the ascending aorta
+    seeds.SetSeedPosition(i, *centre)
+    seeds.SetSeedLabel(i, label)
+seeds.SetSeedPosition(len(organs), 5.0, -20.0, 30.0)  # a second click on the ascending aorta
+seeds.SetSeedLabel(len(organs), 8)
+snake.SetSeedConnection(seeds.GetOutputPort())
 
 clean = anatomesh.amMorphologyCleaning()
 clean.SetInputConnection(snake.GetOutputPort())
