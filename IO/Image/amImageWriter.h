@@ -8,9 +8,10 @@
  * under a temporary name in the same folder and renamed when complete, so a failure never leaves a
  * half-written file (for .mhd, the .raw companion is renamed first).
  * UseCompression (default on) compresses MetaImage and NRRD data; .nii.gz is always compressed.
- * A label map with field data "LabelNames" gets its colour and name table beside it,
- * "<name>.ctbl" (amLabelTable: "value name R G B A" lines, read by 3D Slicer), since NIfTI,
- * MetaImage and NRRD files keep no label names.
+ * A label map with field data "LabelNames" gets its colour and name tables beside it,
+ * "<name>.ctbl" (amLabelTable: "value name R G B A" lines, read by 3D Slicer) and
+ * "<name>.itksnap.txt" (ITK-SNAP's label description file), since NIfTI, MetaImage and NRRD
+ * files keep no label names.
  */
 #ifndef amImageWriter_h
 #define amImageWriter_h

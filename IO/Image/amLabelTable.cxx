@@ -10,11 +10,63 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
+
+namespace
+{
+std::string Stem(const std::string& imagePath)
+{
+  return imagePath.substr(0, imagePath.size() - amAtomicFile::Extension(imagePath).size());
+}
+
+/// One table file, written atomically: the header, then one line per label value (its name and
+/// colour given to 'line'); false with 'why' when it cannot be written whole.
+bool WriteTable(const std::string& path, const std::string& header, vtkStringArray* names,
+  const std::function<std::string(int, const std::string&, const unsigned char*)>& line, std::string& why)
+{
+  amAtomicFile file(path);
+  FILE* f = std::fopen(file.TemporaryPath().c_str(), "wb");
+  if (!f)
+  {
+    why = "cannot create the label table " + path + " beside it";
+    return false;
+  }
+  bool ok = std::fputs(header.c_str(), f) >= 0;
+  for (vtkIdType v = 0; v < names->GetNumberOfValues(); ++v)
+  {
+    unsigned char rgb[3];
+    amLabelTable::Colour(static_cast<int>(v), rgb);
+    ok = ok && std::fputs(line(static_cast<int>(v), names->GetValue(v), rgb).c_str(), f) >= 0;
+  }
+  ok = std::fflush(f) == 0 && ok;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok)
+  {
+    std::remove(file.TemporaryPath().c_str());
+    why = "the label table " + path + " beside it is incomplete; is the disk full?";
+    return false;
+  }
+  return file.Commit(why);
+}
+
+/// The name with the characters a format cannot hold replaced.
+std::string Clean(std::string name, const std::string& bad, char by)
+{
+  for (char& c : name)
+    if (bad.find(c) != std::string::npos)
+      c = by;
+  return name;
+}
+}
 
 std::string amLabelTable::PathFor(const std::string& imagePath)
 {
-  const std::string ext = amAtomicFile::Extension(imagePath);
-  return imagePath.substr(0, imagePath.size() - ext.size()) + ".ctbl";
+  return Stem(imagePath) + ".ctbl";
+}
+
+std::string amLabelTable::ItkSnapPathFor(const std::string& imagePath)
+{
+  return Stem(imagePath) + ".itksnap.txt";
 }
 
 void amLabelTable::Colour(int value, unsigned char rgb[3])
@@ -42,34 +94,34 @@ bool amLabelTable::Write(vtkImageData* image, const std::string& imagePath, std:
   if (!names || names->GetNumberOfValues() == 0 || !scalars || !scalars->GetName() ||
     std::string(scalars->GetName()) != "Labels")
     return true;
-  amAtomicFile file(PathFor(imagePath));
-  FILE* f = std::fopen(file.TemporaryPath().c_str(), "wb");
-  if (!f)
-  {
-    why = "cannot create the label table beside it";
-    return false;
-  }
-  bool ok = std::fprintf(f, "# Anatomesh label table of %s: value name R G B A\n",
-              imagePath.substr(imagePath.find_last_of('/') + 1).c_str()) > 0;
-  for (vtkIdType v = 0; v < names->GetNumberOfValues(); ++v)
-  {
-    std::string name = names->GetValue(v);
-    for (char& c : name)
-      if (c == ' ' || c == '\t')
-        c = '_';
-    unsigned char rgb[3];
-    Colour(static_cast<int>(v), rgb);
-    ok = ok &&
-      std::fprintf(f, "%lld %s %d %d %d %d\n", static_cast<long long>(v), name.empty() ? "unnamed" : name.c_str(),
-        rgb[0], rgb[1], rgb[2], v == 0 ? 0 : 255) > 0;
-  }
-  ok = std::fflush(f) == 0 && ok;
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok)
-  {
-    std::remove(file.TemporaryPath().c_str());
-    why = "the label table beside it is incomplete; is the disk full?";
-    return false;
-  }
-  return file.Commit(why);
+  const std::string file = imagePath.substr(imagePath.find_last_of('/') + 1);
+  // 3D Slicer's colour table (FreeSurfer's LUT layout): "value name R G B A", no spaces in names.
+  const bool slicer = WriteTable(PathFor(imagePath), "# Anatomesh label table of " + file + ": value name R G B A\n",
+    names,
+    [](int v, const std::string& name, const unsigned char* rgb) {
+      char line[512];
+      std::snprintf(line, sizeof(line), "%d %s %d %d %d %d\n", v,
+        name.empty() ? "unnamed" : Clean(name, " \t", '_').c_str(), rgb[0], rgb[1], rgb[2], v == 0 ? 0 : 255);
+      return std::string(line);
+    },
+    why);
+  // ITK-SNAP's label description: IDX R G B A(0-1) VIS MSH "LABEL"; 0 is its "Clear Label".
+  return slicer &&
+    WriteTable(ItkSnapPathFor(imagePath),
+      "################################################\n"
+      "# ITK-SnAP Label Description File\n"
+      "# Anatomesh labels of " +
+        file +
+        "\n"
+        "# Fields: IDX -R- -G- -B- -A-- VIS MSH LABEL\n"
+        "################################################\n",
+      names,
+      [](int v, const std::string& name, const unsigned char* rgb) {
+        char line[512];
+        std::snprintf(line, sizeof(line), "%5d %5d %4d %4d %8d %2d %2d    \"%s\"\n", v, rgb[0], rgb[1], rgb[2],
+          v == 0 ? 0 : 1, v == 0 ? 0 : 1, v == 0 ? 0 : 1,
+          v == 0 ? "Clear Label" : (name.empty() ? "unnamed" : Clean(name, "\"\n\r", '\'').c_str()));
+        return std::string(line);
+      },
+      why);
 }

@@ -132,6 +132,27 @@ TEST(ImageWriter, LabelNamesGoToATableBeside)
   EXPECT_STREQ(name, "Myocardium");
   EXPECT_EQ(a, 255);
   EXPECT_GT(r + g + b, 0);
+  // ITK-SNAP's label description beside it, the same colours: IDX R G B A VIS MSH "LABEL".
+  f = std::fopen(amTest::TempPath("labels_with_names.itksnap.txt").c_str(), "r");
+  ASSERT_NE(f, nullptr);
+  std::vector<std::string> snap;
+  while (std::fgets(line, sizeof(line), f))
+    if (line[0] != '#')
+      snap.emplace_back(line);
+  std::fclose(f);
+  ASSERT_EQ(snap.size(), 11u);
+  int idx = -1, sr = -1, sg = -1, sb = -1, vis = -1, msh = -1;
+  double alpha = -1;
+  char label[64];
+  ASSERT_EQ(std::sscanf(snap[5].c_str(), "%d %d %d %d %lf %d %d \"%63[^\"]\"", &idx, &sr, &sg, &sb, &alpha, &vis, &msh,
+              label),
+    8);
+  EXPECT_EQ(idx, 5);
+  EXPECT_EQ(std::vector<int>({ sr, sg, sb }), std::vector<int>({ r, g, b }));
+  EXPECT_EQ(alpha, 1.0);
+  EXPECT_EQ(vis, 1);
+  EXPECT_STREQ(label, "Myocardium");
+  EXPECT_NE(snap[0].find("\"Clear Label\""), std::string::npos);
 
   const std::string ct = amTest::TempPath("ct_without_names.nii.gz");
   std::remove(amTest::TempPath("ct_without_names.ctbl").c_str());
@@ -139,4 +160,5 @@ TEST(ImageWriter, LabelNamesGoToATableBeside)
   writer->SetFileName(ct.c_str());
   ASSERT_EQ(writer->Write(), 1);
   EXPECT_FALSE(amTest::Exists(amTest::TempPath("ct_without_names.ctbl")));
+  EXPECT_FALSE(amTest::Exists(amTest::TempPath("ct_without_names.itksnap.txt")));
 }

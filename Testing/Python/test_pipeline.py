@@ -68,6 +68,9 @@ class ThoraxJob(unittest.TestCase):
         with open(os.path.join(out, "thorax_labels.ctbl")) as f:
             table = [line.split() for line in f if not line.startswith("#")]
         self.assertEqual([row[:2] for row in table[5:7]], [["5", "Myocardium"], ["6", "LeftVentricleBlood"]])
+        with open(os.path.join(out, "thorax_labels.itksnap.txt")) as f:
+            snap = [line.split(None, 7) for line in f if not line.startswith("#")]
+        self.assertEqual((snap[5][0], snap[5][7].strip()), ("5", '"Myocardium"'))
         try:
             import nibabel
         except ImportError:
