@@ -86,7 +86,8 @@ def surface_by_distance(surface, path, tolerance=None):
     title = "Remeshed surface: distance to its input, largest %.3f mm" % (float(d.max()) if d.size else 0.0)
     if tolerance:
         title += " (tolerance %g mm)" % tolerance
-    render.save_png(path, [render.actor(half, lut, "HausdorffDistance", cells=True, edges=True),
+    edges = half.GetNumberOfCells() < 40000  # denser edges would hide the colours
+    render.save_png(path, [render.actor(half, lut, "HausdorffDistance", cells=True, edges=edges),
                            render.legend(lut, "mm")], title, VIEW, UP)
 
 
