@@ -53,19 +53,26 @@ void Chain(benchmark::State& state)
     amTetrahedralize* tetra = chain.Tetra;
     vtkNew<amMeshQuality> quality;
     quality->SetInputConnection(tetra->GetOutputPort());
+    // The process's peak after each stage: a stage's own peak is where the figure first grows.
     const auto t0 = Clock::now();
     src->Update();
     const auto t1 = Clock::now();
+    state.counters["peak_source_MB"] = PeakMegabytes();
     surface->Update();
     const auto t2 = Clock::now();
+    state.counters["peak_surface_MB"] = PeakMegabytes();
     smooth->Update();
     const auto t3 = Clock::now();
+    state.counters["peak_smooth_MB"] = PeakMegabytes();
     metric->Update();
     const auto t4 = Clock::now();
+    state.counters["peak_metric_MB"] = PeakMegabytes();
     remesh->Update();
     const auto t5 = Clock::now();
+    state.counters["peak_remesh_MB"] = PeakMegabytes();
     tetra->Update();
     const auto t6 = Clock::now();
+    state.counters["peak_tetgen_MB"] = PeakMegabytes();
     const std::set<int> in = amTest::DistinctValues(src->GetOutput()->GetPointData()->GetScalars());
     state.counters["labels"] = static_cast<double>(in.size() - in.count(0));
     state.counters["surface_tris"] = surface->GetOutput()->GetNumberOfCells();
