@@ -178,6 +178,24 @@ TEST(MetricRemeshing, PhantomWithCurvatureMetric)
   std::string why;
   ASSERT_TRUE(amSurfaceTopology::Analyse(out, regions, why));
   EXPECT_EQ(regions.size(), 10u);
+  // The per-triangle distances are the output's (the cleanups restore some states): their largest
+  // is the Hausdorff distance, and each interface's row is above the tolerance only if the
+  // filter counts it.
+  vtkDataArray* local = out->GetCellData()->GetArray("HausdorffDistance");
+  ASSERT_NE(local, nullptr);
+  EXPECT_NEAR(local->GetRange()[1], rm->GetHausdorff(), 1e-12);
+  vtkDataArray* interfaces = out->GetFieldData()->GetArray("InterfaceHausdorff");
+  ASSERT_NE(interfaces, nullptr);
+  int above = 0;
+  double largest = 0;
+  for (vtkIdType i = 0; i < interfaces->GetNumberOfTuples(); ++i)
+  {
+    above += interfaces->GetComponent(i, 2) > 0.5;
+    largest = std::max(largest, interfaces->GetComponent(i, 2));
+  }
+  EXPECT_EQ(above, rm->GetInterfacesAboveTolerance());
+  EXPECT_NEAR(largest, rm->GetHausdorff(), 1e-12);
+  EXPECT_GE(interfaces->GetNumberOfTuples(), 15);
 
   // Both surfaces stay within about one voxel (2 mm) of the phantom's analytic interfaces: every
   // analytic interface point has the surface within 2 mm; the surface is within 2 mm of its

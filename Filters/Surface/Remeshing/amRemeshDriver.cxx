@@ -51,6 +51,9 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
     if (!(smallestBefore < below))
       return false; // nothing to clean: no copy of the surface for an undo
     Snapshot before = this->Save();
+    // The per-triangle distances of the state saved, restored with it (no measure again).
+    std::vector<double> localBefore = this->Hausdorff.TriangleDistances();
+    const bool measuredBefore = measured;
     const double hBefore = h, upperBefore = upper;
     const long long insertedBefore = inserted;
     int cleaned = 0;
@@ -76,7 +79,8 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
       shortestAfter < 0.5 * shortestBefore)
     {
       this->Restore(std::move(before));
-      measured = false;
+      this->Hausdorff.RestoreTriangleDistances(std::move(localBefore));
+      measured = measuredBefore;
       h = hBefore;
       upper = upperBefore;
       inserted = insertedBefore;
@@ -89,7 +93,7 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
   attempt(DegenerateAngle, MinimumNewAngle);
   if (!measured)
   {
-    // Restored to an earlier state: measured again (incrementally) for its per-triangle distances.
+    // The distances are not of the surface as it is: measured again (incrementally).
     std::vector<std::pair<int, Vec3>> insert;
     std::vector<int> edgeOf;
     h = this->Hausdorff.Measure(this->Mesh, this->In, upper, insert, edgeOf);

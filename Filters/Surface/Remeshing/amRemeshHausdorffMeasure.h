@@ -37,6 +37,8 @@ public:
   /// Per triangle slot, at the last Measure: the largest distance measured on it (its samples to
   /// the input, and the input samples whose nearest triangle it is), mm; 0 for dead slots.
   const std::vector<double>& TriangleDistances() const { return this->Local; }
+  /// Back to the distances of an earlier state (the remesher restoring a surface it saved).
+  void RestoreTriangleDistances(std::vector<double>&& local) { this->Local = std::move(local); }
 
 private:
   std::vector<double> Local;
