@@ -100,6 +100,31 @@ class Report(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(moved, "report", name)), name)
         self.assertIn("5 Myocardium", page)
 
+    def test_report_names_the_outputs_it_cannot_read(self):
+        code, _, stderr = self.result
+        self.assertEqual(code, 0, stderr)
+        broken = os.path.join(TMP, "report_job_broken")
+        shutil.rmtree(broken, ignore_errors=True)
+        shutil.copytree(self.out, broken, ignore=shutil.ignore_patterns("report*"))
+        mesh = os.path.join(broken, "thorax_tets.vtu")
+        with open(mesh, "r+b") as f:  # truncated mid-file
+            f.truncate(os.path.getsize(mesh) // 3)
+        with open(os.path.join(broken, "thorax_quality.csv"), "a") as f:
+            f.write("not,a,row\n")
+        env = dict(os.environ)
+        env.pop("DISPLAY", None)
+        env["PATH"] = os.path.join(TMP, "report_empty_path")
+        os.makedirs(env["PATH"], exist_ok=True)
+        code, stdout, stderr = run("report", broken, env=env)
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("report: %s cannot be read" % mesh, stderr)
+        self.assertIn("thorax_quality.csv cannot be read", stderr)
+        with open(os.path.join(broken, "report.html")) as f:
+            page = f.read()
+        self.assertIn("thorax_tets.vtu cannot be read", page)
+        self.assertNotIn("Region volumes", page)  # the mesh's table needs the mesh
+        self.assertTrue(os.path.isfile(os.path.join(broken, "report", "ecg.png")))
+
     def test_report_of_what_is_not_a_run(self):
         code, _, stderr = run("report", os.path.join(TMP, "no_such_run_folder"))
         self.assertEqual(code, 1)

@@ -3,6 +3,7 @@ Dice and ECG tables, and the heart's and the torso's time series."""
 import csv
 import glob
 import os
+import re
 import xml.etree.ElementTree as ET
 
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
@@ -10,10 +11,25 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridRead
 from .. import marker
 
 
+class ReadError(Exception):
+    """An output of the run that cannot be read (truncated, corrupt)."""
+
+
 def read_xml(path):
+    """A .vtp or .vtu file's data; ReadError (with VTK's first message) when it cannot be read."""
     reader = vtkXMLPolyDataReader() if path.endswith(".vtp") else vtkXMLUnstructuredGridReader()
+    messages = []
+
+    def keep(caller, event, data=None):
+        lines = str(data or "").strip().splitlines()
+        messages.append(re.sub(r"^\w+ \(0x[0-9a-f]+\): ", "", lines[-1]) if lines else event)
+    keep.CallDataType = "string0"  # the message comes as the call data
+    for obj in (reader, reader.GetExecutive()):
+        obj.AddObserver("ErrorEvent", keep)
     reader.SetFileName(path)
     reader.Update()
+    if messages:
+        raise ReadError("%s cannot be read: %s" % (path, messages[0]))
     return reader.GetOutput()
 
 
@@ -48,13 +64,19 @@ def files_of(folder):
 
 
 def find(folder):
-    """A dict of what was found: 'record' (the marker, or None) and the paths under 'mesh',
-    'surface', 'quality', 'dice', 'ecg', 'heart', 'body' (each absent when the run made none)."""
+    """A dict of what was found: 'record' (the marker, or None), the paths under 'mesh',
+    'surface', 'quality', 'dice', 'ecg', 'heart', 'body' (each absent when the run made none),
+    the mesh's and the surface's data under 'mesh_data' and 'surface_data', and under
+    'unreadable' what could not be read and why."""
     record, files = files_of(folder)
-    found = {"record": record}
+    found = {"record": record, "unreadable": []}
     framed = set()
     for pvd in (p for p in files if p.endswith(".pvd")):
-        frames = series(pvd)
+        try:
+            frames = series(pvd)
+        except (ET.ParseError, OSError) as e:
+            found["unreadable"].append("%s cannot be read: %s" % (pvd, e))
+            continue
         framed.update(f for _, f in frames)
         if frames and frames[-1][1].endswith(".vtu"):
             found.setdefault("heart", pvd)
@@ -64,21 +86,25 @@ def find(folder):
     for p in files:
         if p in framed:
             continue
-        if p.endswith(".vtu"):
-            data = read_xml(p)
-            if data.GetCellData().GetArray("Region") is not None and data.GetNumberOfCells() > best:
-                best, found["mesh"] = data.GetNumberOfCells(), p
-        elif p.endswith(".vtp") and "surface" not in found:
-            if read_xml(p).GetFieldData().GetArray("Hausdorff") is not None:
-                found["surface"] = p
-        elif p.endswith(".csv"):
-            head, _ = table(p)
-            if "MeanQuality" in head and "Region" in head:
-                found.setdefault("quality", p)
-            elif "Dice" in head and "Label" in head:
-                found.setdefault("dice", p)
-            elif head[:2] == ["Time", "I"]:
-                found.setdefault("ecg", p)
+        try:
+            if p.endswith(".vtu"):
+                data = read_xml(p)
+                if data.GetCellData().GetArray("Region") is not None and data.GetNumberOfCells() > best:
+                    best, found["mesh"], found["mesh_data"] = data.GetNumberOfCells(), p, data
+            elif p.endswith(".vtp") and "surface" not in found:
+                data = read_xml(p)
+                if data.GetFieldData().GetArray("Hausdorff") is not None:
+                    found["surface"], found["surface_data"] = p, data
+            elif p.endswith(".csv"):
+                head, _ = table(p)
+                if "MeanQuality" in head and "Region" in head:
+                    found.setdefault("quality", p)
+                elif "Dice" in head and "Label" in head:
+                    found.setdefault("dice", p)
+                elif head[:2] == ["Time", "I"]:
+                    found.setdefault("ecg", p)
+        except (ReadError, UnicodeDecodeError, csv.Error) as e:
+            found["unreadable"].append(str(e) if isinstance(e, ReadError) else "%s cannot be read: %s" % (p, e))
     return found
 
 

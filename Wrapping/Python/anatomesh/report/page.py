@@ -20,11 +20,22 @@ def _ecg(path):
     return values[:, 0], {name: values[:, i] for i, name in enumerate(head) if i > 0}
 
 
-def _default_time(found, ecg):
+def _last_frame(found, key, notes):
+    """The last frame of a time series, or None (with a note when it cannot be read)."""
+    if key not in found:
+        return None
+    frames = collect.series(found[key])
+    try:
+        return collect.read_xml(frames[-1][1]) if frames else None
+    except collect.ReadError as e:
+        notes.append(str(e))
+        return None
+
+
+def _default_time(heart, ecg):
     """The body-surface picture's time when none is given: half the heart activated (the median
     activation time of its nodes), else when the leads are largest together."""
-    if "heart" in found:
-        heart = collect.read_xml(collect.series(found["heart"])[-1][1])
+    if heart is not None:
         times = heart.GetPointData().GetArray("ActivationTime")
         if times is not None:
             t = vtk_to_numpy(times)
@@ -35,14 +46,14 @@ def _default_time(found, ecg):
     return None
 
 
-def _pictures(found, mesh, names, folder, pictures, notes, time):
+def _pictures(found, heart, names, folder, pictures, notes, time):
     """The 3-D views; each failure is a note, never the end of the report."""
+    mesh, surface = found.get("mesh_data"), found.get("surface_data")
     jobs = []
     if mesh is not None:
         jobs.append(("mesh.png", "The mesh cut through the middle, coloured by region: the elements of every region "
                      "meet on their shared faces.", lambda p: scenes.mesh_by_region(mesh, p, names)))
-    if "surface" in found:
-        surface = collect.read_xml(found["surface"])
+    if surface is not None:
         if surface.GetCellData().GetArray("HausdorffDistance") is not None:
             tol = (found.get("record") or {}).get("variables", {}).get("tolerance")
             jobs.append(("surface.png", "The remeshed surface (back half) coloured by each triangle's largest distance "
@@ -50,18 +61,19 @@ def _pictures(found, mesh, names, folder, pictures, notes, time):
                          lambda p: scenes.surface_by_distance(surface, p, float(tol) if tol else None)))
         else:
             notes.append("%s has no per-triangle distances (made before they were recorded)." % found["surface"])
-    if "heart" in found:
-        frames = collect.series(found["heart"])
-        heart = collect.read_xml(frames[-1][1])
+    if heart is not None:
         if heart.GetPointData().GetArray("ActivationTime") is not None:
             jobs.append(("activation.png", "Activation time on the heart's surface (grey: never activated).",
                          lambda p: scenes.activation_map(heart, p)))
-    if "body" in found:
-        frames = collect.series(found["body"])
+    frames = collect.series(found["body"]) if "body" in found else []
+    if frames:
         at, frame = min(frames, key=lambda f: abs(f[0] - time)) if time is not None else frames[len(frames) // 2]
-        body = collect.read_xml(frame)
-        jobs.append(("body_surface.png", "The body-surface potential at %g ms." % at,
-                     lambda p, body=body, at=at: scenes.body_surface_potential(body, p, at)))
+        try:
+            body = collect.read_xml(frame)
+            jobs.append(("body_surface.png", "The body-surface potential at %g ms." % at,
+                         lambda p, body=body, at=at: scenes.body_surface_potential(body, p, at)))
+        except collect.ReadError as e:
+            notes.append(str(e))
     if not jobs:
         return
     with x_display() as why:
@@ -83,13 +95,19 @@ def write_report(folder, time=None):
     found = collect.find(folder)
     pictures_dir = os.path.join(folder, "report")
     os.makedirs(pictures_dir, exist_ok=True)
-    pictures, notes, sections = [], [], []
-    ecg = _ecg(found["ecg"]) if "ecg" in found else None
+    pictures, notes, sections = [], list(found["unreadable"]), []
+    ecg = None
+    if "ecg" in found:
+        try:
+            ecg = _ecg(found["ecg"])
+        except ValueError as e:  # a table that is not numbers
+            notes.append("%s cannot be read: %s" % (found["ecg"], e))
+    heart = _last_frame(found, "heart", notes)
     if time is None:
-        time = _default_time(found, ecg)
-    mesh = collect.read_xml(found["mesh"]) if "mesh" in found else None
+        time = _default_time(heart, ecg)
+    mesh = found.get("mesh_data")
     names = collect.label_names(mesh)
-    _pictures(found, mesh, names, pictures_dir, pictures, notes, time)
+    _pictures(found, heart, names, pictures_dir, pictures, notes, time)
     if mesh is not None and mesh.GetCellData().GetArray("Quality") is not None:
         charts.quality_histogram(vtk_to_numpy(mesh.GetCellData().GetArray("Quality")),
                                  os.path.join(pictures_dir, "quality.png"))
@@ -98,18 +116,19 @@ def write_report(folder, time=None):
     if ecg is not None:
         charts.ecg_leads(ecg[0], ecg[1], os.path.join(pictures_dir, "ecg.png"))
         pictures.append(("ecg.png", "The 12 leads, one shared mV scale, time in ms."))
-    if "quality" in found:
-        sections.append(tables.quality(*collect.table(found["quality"]), names=names))
+    for key, make in (("quality", tables.quality), ("dice", tables.dice)):
+        if key in found:
+            try:
+                sections.append(make(*collect.table(found[key]), names=names))
+            except (ValueError, IndexError) as e:  # a table whose rows are not what its header says
+                notes.append("%s cannot be read: %s" % (found[key], e))
     if mesh is not None and mesh.GetFieldData().GetArray("RegionVolumes") is not None:
         sections.append(tables.region_volumes(mesh.GetFieldData().GetArray("RegionVolumes"), names))
-    if "surface" in found:
-        surface = collect.read_xml(found["surface"])
-        array = surface.GetFieldData().GetArray("InterfaceHausdorff")
+    if "surface_data" in found:
+        array = found["surface_data"].GetFieldData().GetArray("InterfaceHausdorff")
         if array is not None:
             tol = (found.get("record") or {}).get("variables", {}).get("tolerance")
             sections.append(tables.interfaces(array, float(tol) if tol else None, names))
-    if "dice" in found:
-        sections.append(tables.dice(*collect.table(found["dice"]), names=names))
     return _write(folder, found.get("record"), pictures, sections, notes), notes
 
 
