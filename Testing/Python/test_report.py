@@ -129,6 +129,16 @@ class Report(unittest.TestCase):
         code, _, stderr = run("report", os.path.join(TMP, "no_such_run_folder"))
         self.assertEqual(code, 1)
         self.assertIn("no_such_run_folder: not a folder", stderr)
+        empty = os.path.join(TMP, "report_empty_folder")
+        shutil.rmtree(empty, ignore_errors=True)
+        os.makedirs(empty)
+        code, _, stderr = run("report", empty)
+        self.assertEqual(code, 0, stderr)
+        self.assertIn("no anatomesh-run.json", stderr)
+        self.assertIn("holds no mesh, surface", stderr)
+        code, _, stderr = run("report", empty, "--time", "nan")
+        self.assertEqual(code, 2)
+        self.assertIn("must be a number of ms", stderr)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@ and, for pipeline files, the line), 2 for a command-line mistake. A run writes `
 in its output folder last: "complete" with its key figures, or "failed" with the error.
 """
 import argparse
+import math
 import os
 import re
 import sys
@@ -190,6 +191,9 @@ def _run(args):
 
 def _write_report(folder, at, quiet):
     from .report import write_report
+    if at is not None and not math.isfinite(at):
+        sys.stderr.write("anatomesh: error: the report's time must be a number of ms, got %s\n" % at)
+        return 2
     t0 = time.time()
     path, notes = write_report(folder, at)
     for note in notes:

@@ -96,6 +96,8 @@ def write_report(folder, time=None):
     pictures_dir = os.path.join(folder, "report")
     os.makedirs(pictures_dir, exist_ok=True)
     pictures, notes, sections = [], list(found["unreadable"]), []
+    if not any(k in found for k in ("mesh", "surface", "quality", "dice", "ecg", "heart", "body")):
+        notes.append("%s holds no mesh, surface, quality, Dice or ECG table, nor time series to report on." % folder)
     ecg = None
     if "ecg" in found:
         try:
