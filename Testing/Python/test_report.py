@@ -77,18 +77,27 @@ class Report(unittest.TestCase):
             self.assertIn(text, page)
         self.assertEqual([f for f in os.listdir(os.path.join(self.out, "report")) if ".tmp" in f], [])
 
-    def test_report_of_a_moved_folder_without_any_display(self):
+    def copy_of_the_run(self, name):
+        """The run's folder copied elsewhere, without its report."""
         code, _, stderr = self.result
         self.assertEqual(code, 0, stderr)
-        moved = os.path.join(TMP, "report_job_moved")
-        shutil.rmtree(moved, ignore_errors=True)
-        shutil.copytree(self.out, moved, ignore=shutil.ignore_patterns("report*"))
+        copy = os.path.join(TMP, name)
+        shutil.rmtree(copy, ignore_errors=True)
+        shutil.copytree(self.out, copy, ignore=shutil.ignore_patterns("report*"))
+        return copy
+
+    @staticmethod
+    def without_x():
+        """An environment with no display and no Xvfb to start (the command runs as python3 SCRIPT)."""
         env = dict(os.environ)
         env.pop("DISPLAY", None)
-        empty = os.path.join(TMP, "report_empty_path")
-        os.makedirs(empty, exist_ok=True)
-        env["PATH"] = empty  # no Xvfb to start (the command runs as python3 SCRIPT, no PATH needed)
-        code, stdout, stderr = run("report", moved, "--time", "100", env=env)
+        env["PATH"] = os.path.join(TMP, "report_empty_path")
+        os.makedirs(env["PATH"], exist_ok=True)
+        return env
+
+    def test_report_of_a_moved_folder_without_any_display(self):
+        moved = self.copy_of_the_run("report_job_moved")
+        code, stdout, stderr = run("report", moved, "--time", "100", env=self.without_x())
         self.assertEqual(code, 0, stderr)
         self.assertIn("3-D pictures not drawn: no X display", stderr)
         with open(os.path.join(moved, "report.html")) as f:
@@ -101,21 +110,13 @@ class Report(unittest.TestCase):
         self.assertIn("5 Myocardium", page)
 
     def test_report_names_the_outputs_it_cannot_read(self):
-        code, _, stderr = self.result
-        self.assertEqual(code, 0, stderr)
-        broken = os.path.join(TMP, "report_job_broken")
-        shutil.rmtree(broken, ignore_errors=True)
-        shutil.copytree(self.out, broken, ignore=shutil.ignore_patterns("report*"))
+        broken = self.copy_of_the_run("report_job_broken")
         mesh = os.path.join(broken, "thorax_tets.vtu")
         with open(mesh, "r+b") as f:  # truncated mid-file
             f.truncate(os.path.getsize(mesh) // 3)
         with open(os.path.join(broken, "thorax_quality.csv"), "a") as f:
             f.write("not,a,row\n")
-        env = dict(os.environ)
-        env.pop("DISPLAY", None)
-        env["PATH"] = os.path.join(TMP, "report_empty_path")
-        os.makedirs(env["PATH"], exist_ok=True)
-        code, stdout, stderr = run("report", broken, env=env)
+        code, stdout, stderr = run("report", broken, env=self.without_x())
         self.assertEqual(code, 0, stderr)
         self.assertIn("report: %s cannot be read" % mesh, stderr)
         self.assertIn("thorax_quality.csv cannot be read", stderr)
