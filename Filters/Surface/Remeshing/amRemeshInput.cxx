@@ -24,31 +24,35 @@ void Input::Build(const amSurfaceMesh& mesh, const std::vector<Triangle>& triang
     tris[t.Sheet].push_back({ t.V[0], t.V[1], t.V[2] });
   const auto& P = this->Points;
   auto samples = [&]() {
-    std::vector<std::vector<char>> seen(static_cast<size_t>(nSheets));
     // Each edge of an interface once: an edge inside one interface is flagged; a junction edge
     // (few) is looked up with its interface.
     std::vector<char> edgeSeen(mesh.Edges.size(), 0);
     std::set<std::pair<vtkIdType, int>> junctionSeen;
-    for (const Triangle& t : triangles)
+    // Each vertex once per interface: the interfaces are sampled one after another, so one stamp
+    // per vertex (the last interface that took it) does, where a flag per vertex and interface
+    // took interfaces x vertices bytes (2.6 GB for 700 labels).
+    std::vector<int> stamp(np, -1);
+    for (int sheet = 0; sheet < nSheets; ++sheet)
     {
-      this->Samples[t.Sheet].push_back((P[t.V[0]] + P[t.V[1]] + P[t.V[2]]) / 3.0);
-      for (int k = 0; k < 3; ++k)
+      std::vector<Vec3>& out = this->Samples[sheet];
+      for (const auto& t : tris[sheet])
       {
-        const vtkIdType e = mesh.FindEdge(t.V[k], t.V[(k + 1) % 3]);
-        const bool first = mesh.FeatureEdge[e] ? junctionSeen.insert({ e, t.Sheet }).second : !edgeSeen[e];
-        edgeSeen[e] = 1;
-        if (first)
-          this->Samples[t.Sheet].push_back(0.5 * (P[t.V[k]] + P[t.V[(k + 1) % 3]]));
-      }
-      auto& s = seen[t.Sheet];
-      if (s.empty())
-        s.assign(np, 0);
-      for (int k = 0; k < 3; ++k)
-        if (!s[t.V[k]])
+        out.push_back((P[t[0]] + P[t[1]] + P[t[2]]) / 3.0);
+        for (int k = 0; k < 3; ++k)
         {
-          s[t.V[k]] = 1;
-          this->Samples[t.Sheet].push_back(P[t.V[k]]);
+          const vtkIdType e = mesh.FindEdge(t[k], t[(k + 1) % 3]);
+          const bool first = mesh.FeatureEdge[e] ? junctionSeen.insert({ e, sheet }).second : !edgeSeen[e];
+          edgeSeen[e] = 1;
+          if (first)
+            out.push_back(0.5 * (P[t[k]] + P[t[(k + 1) % 3]]));
         }
+        for (int k = 0; k < 3; ++k)
+          if (stamp[t[k]] != sheet)
+          {
+            stamp[t[k]] = sheet;
+            out.push_back(P[t[k]]);
+          }
+      }
     }
   };
   vtkSMPTools::For(0, 2, 1, [&](vtkIdType j0, vtkIdType j1) {
