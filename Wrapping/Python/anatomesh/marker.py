@@ -8,6 +8,8 @@ outputs it made; a run in progress has no marker (the old one is removed when a 
 import json
 import os
 
+from . import atomic
+
 NAME = "anatomesh-run.json"
 
 
@@ -25,16 +27,7 @@ def clear(folder):
 def _write(folder, record):
     """Write the marker atomically; on an error (a full disk) no temporary file stays behind."""
     os.makedirs(folder, exist_ok=True)
-    tmp = path(folder) + ".tmp%d" % os.getpid()
-    try:
-        with open(tmp, "w") as f:
-            json.dump(record, f, indent=1, sort_keys=True)
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path(folder))
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+    atomic.write_text(path(folder), json.dumps(record, indent=1, sort_keys=True))
 
 
 def write_complete(folder, pipeline, variables, written, data, seconds):

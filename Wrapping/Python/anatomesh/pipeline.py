@@ -613,8 +613,7 @@ def write_vtk_xml(data, path):
     # reparse deferral) breaks VTK 9.2's reading of appended data beyond a few kB.
     writer.SetDataModeToBinary()
     writer.SetCompressorTypeToZLib()
-    # zlib's fastest level: a third less time than VTK's default level for files 2 % larger (the
-    # time series write hundreds of frames); every zlib reader reads it.
+    # zlib's fastest level: the time series write hundreds of frames, and every zlib reader reads it.
     writer.SetCompressionLevel(1)
     try:
         if not writer.Write() or writer.GetErrorCode() or not os.path.exists(tmp):

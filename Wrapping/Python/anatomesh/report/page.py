@@ -5,6 +5,7 @@ import os
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
+from .. import atomic
 from . import charts, collect, scenes, tables
 from .display import x_display
 
@@ -46,6 +47,15 @@ def _default_time(heart, ecg):
     return None
 
 
+def _tolerance(found):
+    """The run's remeshing tolerance (its "tolerance" variable, mm), or None."""
+    text = (found.get("record") or {}).get("variables", {}).get("tolerance")
+    try:
+        return float(text) if text else None
+    except ValueError:
+        return None
+
+
 def _pictures(found, heart, names, folder, pictures, notes, time):
     """The 3-D views; each failure is a note, never the end of the report."""
     mesh, surface = found.get("mesh_data"), found.get("surface_data")
@@ -55,10 +65,9 @@ def _pictures(found, heart, names, folder, pictures, notes, time):
                      "meet on their shared faces.", lambda p: scenes.mesh_by_region(mesh, p, names)))
     if surface is not None:
         if surface.GetCellData().GetArray("HausdorffDistance") is not None:
-            tol = (found.get("record") or {}).get("variables", {}).get("tolerance")
             jobs.append(("surface.png", "The remeshed surface (back half) coloured by each triangle's largest distance "
                          "to the smoothed surface it approximates.",
-                         lambda p: scenes.surface_by_distance(surface, p, float(tol) if tol else None)))
+                         lambda p: scenes.surface_by_distance(surface, p, _tolerance(found))))
         else:
             notes.append("%s has no per-triangle distances (made before they were recorded)." % found["surface"])
     if heart is not None:
@@ -129,8 +138,7 @@ def write_report(folder, time=None):
     if "surface_data" in found:
         array = found["surface_data"].GetFieldData().GetArray("InterfaceHausdorff")
         if array is not None:
-            tol = (found.get("record") or {}).get("variables", {}).get("tolerance")
-            sections.append(tables.interfaces(array, float(tol) if tol else None, names))
+            sections.append(tables.interfaces(array, _tolerance(found), names))
     return _write(folder, found.get("record"), pictures, sections, notes), notes
 
 
@@ -150,14 +158,5 @@ def _write(folder, record, pictures, sections, notes):
     out.append(tables.variables(record))
     out.append("</body></html>")
     path = os.path.join(folder, "report.html")
-    tmp = path + ".tmp%d" % os.getpid()
-    try:
-        with open(tmp, "w") as f:
-            f.write("\n".join(out) + "\n")
-            f.flush()
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+    atomic.write_text(path, "\n".join(out) + "\n")
     return path
