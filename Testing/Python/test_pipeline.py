@@ -1,12 +1,15 @@
 """Pipeline XML files through the ``anatomesh`` command: the thorax job runs and writes what it
 says; every kind of mistake exits non-zero with a message naming the file and the line."""
 import io
+import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
 import textwrap
+import time
 import unittest
 
 import numpy as np
@@ -45,6 +48,25 @@ class ThoraxJob(unittest.TestCase):
         self.assertEqual(len(rows), 102)  # header + 0, 5, ..., 500 ms
         self.assertTrue(rows[0].startswith("Time,I,II,III"), rows[0])
         self.assertIn("phantom", stderr)  # progress lines
+        # The timing table: every filter with its own seconds, the output files and the rest, adding
+        # up to the run's time; the same figures in the run marker.
+        table = stdout[stdout.index("Seconds per filter"):].splitlines()
+        names = ["phantom", "snake", "segmentation", "dice", "surface", "smooth", "metric", "remesh",
+                 "save_surface_mesh", "tets", "quality", "save_volume_mesh", "save_gmsh", "heart", "torso",
+                 "save_ct", "save_truth", "save_labels", "(outputs)", "(other)"]
+        self.assertEqual([l.split()[0] for l in table[1:len(names) + 1]], names)
+        self.assertRegex(stdout, r"heart +FitzHughNagumoSolver +[0-9.]+ s +[0-9.]+ % +\(\d+ runs\)")
+        total = float(table[len(names) + 1].split()[1])
+        done = float(re.search(r"Done in ([0-9.]+) s", stdout).group(1))
+        self.assertLessEqual(total, done + 0.05)
+        with open(os.path.join(out, "anatomesh-run.json")) as f:
+            record = json.load(f)
+        stages = record["stage_seconds"]
+        self.assertEqual(sorted(stages), sorted(names))
+        self.assertAlmostEqual(sum(stages.values()), record["seconds"], delta=0.05)
+        self.assertLess(stages["(other)"], 0.2 * record["seconds"])  # the filters account for the run
+        self.assertGreater(stages["tets"], 0.0)
+        self.assertGreater(stages["(outputs)"], 0.0)
         # Warnings in a log: one plain line naming the filter, no terminal colour codes.
         self.assertIn("anatomesh: warning: surface: ", stderr)
         self.assertNotIn("\x1b[", stderr)
@@ -323,9 +345,9 @@ class ThoraxJob(unittest.TestCase):
 
 
 class ProgressLog(unittest.TestCase):
-    def test_a_filter_run_per_frame_is_summed_up_not_repeated(self):
+    def test_a_filter_run_per_frame_is_not_repeated(self):
         # In a log (not a terminal), a filter that runs once per frame (the heart and torso of a
-        # time series) shows its first pass every 25 %, then one line with its number of passes.
+        # time series) shows its first pass every 25 %; its time is in the summary's timing table.
         from anatomesh.cli import _Progress
         stream = io.StringIO()
         progress = _Progress(stream)
@@ -339,9 +361,26 @@ class ProgressLog(unittest.TestCase):
         lines = stream.getvalue().splitlines()
         self.assertEqual([l.split()[:2] for l in lines],
                          [["phantom", "0%"], ["phantom", "25%"], ["phantom", "100%"], ["heart", "0%"],
-                          ["heart", "100%"], ["torso", "0%"], ["torso", "100%"], ["heart", "50"],
-                          ["torso", "50"]])
-        self.assertIn("50 passes", lines[-1])
+                          ["heart", "100%"], ["torso", "0%"], ["torso", "100%"]])
+
+    def test_stage_clock_counts_each_stage_its_own_time(self):
+        # A filter updated from inside another (nested Start/End events) pauses the outer one's clock.
+        from anatomesh.pipeline import StageClock
+        clock = StageClock()
+        clock.start("outer")
+        time.sleep(0.05)
+        clock.start("inner")
+        time.sleep(0.2)
+        clock.stop("inner")
+        time.sleep(0.05)
+        clock.stop("outer")
+        with clock.running("outer"):
+            time.sleep(0.05)
+        self.assertAlmostEqual(clock.seconds["inner"], 0.2, delta=0.05)
+        self.assertAlmostEqual(clock.seconds["outer"], 0.15, delta=0.05)
+        self.assertEqual(clock.runs, {"outer": 2, "inner": 1})
+        clock.stop("never started")  # ignored, not an error
+        self.assertNotIn("never started", clock.seconds)
 
 
 class DeprecatedNames(unittest.TestCase):

@@ -22,23 +22,17 @@ from . import marker
 
 class _Progress:
     """One line per filter on a terminal (\\r-updated), every 25 % otherwise. A filter that runs
-    again (once per frame of a time series) is not shown again in a log: its passes are counted
-    and summed up at the end, one line per filter."""
+    again (once per frame of a time series) is not shown again in a log."""
 
     def __init__(self, stream):
         self.stream, self.tty = stream, stream.isatty()
         self.current, self.shown, self.start = None, -1, {}
-        self.best, self.last, self.passes = {}, {}, {}
+        self.best = {}
 
     def __call__(self, name, fraction):
-        if name is None:
+        if name is None:  # the end: each filter's time is in the summary's timing table
             if self.tty and self.current:
                 self.stream.write("\n")
-            for other, count in self.passes.items():
-                if count > 1:
-                    elapsed = time.time() - self.start[other]
-                    self.stream.write("  %-24s %d passes %6.1f s\n" % (other, count, elapsed))
-            self.passes.clear()
             self.stream.flush()
             return
         if name != self.current:
@@ -46,9 +40,6 @@ class _Progress:
                 self.stream.write("\n")
             self.current, self.shown = name, -1
         self.start.setdefault(name, time.time())
-        if name not in self.last or fraction < self.last[name]:
-            self.passes[name] = self.passes.get(name, 0) + 1  # a new pass: its fraction starts again
-        self.last[name] = fraction
         step = int(fraction * 100) if self.tty else int(fraction * 4) * 25
         if step == self.shown or (not self.tty and step <= self.best.get(name, -1)):
             return
@@ -133,6 +124,32 @@ def _summary(paths, data, out):
             out.write(line + "\n")
 
 
+def stage_seconds(pipeline, total):
+    """Seconds of each filter's own execution in pipeline order, then the <Output> files' writing
+    and the rest of the run (building the pipeline, Python), adding up to the run's total."""
+    from .pipeline import WRITING
+    seconds = pipeline.clock.seconds
+    stages = {s.name: round(seconds.get(s.name, 0.0), 3) for s in pipeline.steps}
+    stages[WRITING] = round(seconds.get(WRITING, 0.0), 3)
+    stages["(other)"] = round(max(0.0, total - sum(seconds.values())), 3)
+    return stages
+
+
+def _timing(pipeline, stages, out):
+    """The timing table: seconds per filter, its share of the run, and how often it ran (a filter
+    feeding a time series runs once per frame)."""
+    total = sum(stages.values())
+    types = {s.name: s.proxy.name for s in pipeline.steps}
+    runs = pipeline.clock.runs
+    out.write("Seconds per filter (its own execution):\n")
+    for name, seconds in stages.items():
+        times = runs.get(name, 0)
+        out.write("  %-24s %-24s %8.1f s %5.1f %%%s\n" % (
+            name, types.get(name, ""), seconds, 100.0 * seconds / total if total else 0.0,
+            "  (%d runs)" % times if times > 1 else ""))
+    out.write("  %-24s %-24s %8.1f s\n" % ("total", "", total))
+
+
 def _version():
     from vtkmodules.vtkCommonCore import vtkVersion
     from . import __version__
@@ -180,9 +197,12 @@ def _run(args):
         if os.path.isdir(folder):
             marker.write_failed(folder, args.pipeline, p.variables, str(e))
         return 1
-    marker.write_complete(folder, args.pipeline, p.variables, written, p.written_data, time.time() - t0)
+    total = time.time() - t0
+    stages = stage_seconds(p, total)
+    marker.write_complete(folder, args.pipeline, p.variables, written, p.written_data, total, stages)
     if not args.quiet:
         _summary(written, p.written_data, sys.stdout)
+        _timing(p, stages, sys.stdout)
         sys.stdout.write("Done in %.1f s.\n" % (time.time() - t0))
     if args.report:
         return _write_report(folder, args.report_time, args.quiet)

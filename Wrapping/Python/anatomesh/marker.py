@@ -30,9 +30,11 @@ def _write(folder, record):
     atomic.write_text(path(folder), json.dumps(record, indent=1, sort_keys=True))
 
 
-def write_complete(folder, pipeline, variables, written, data, seconds):
+def write_complete(folder, pipeline, variables, written, data, seconds, stages=None):
+    """stages: seconds per filter (and for writing the outputs), as the run's timing table lists them."""
     _write(folder, {"status": "complete", "pipeline": os.path.abspath(pipeline), "variables": variables,
-                    "files": written, "seconds": round(seconds, 3), "figures": figures(data)})
+                    "files": written, "seconds": round(seconds, 3), "stage_seconds": stages or {},
+                    "figures": figures(data)})
 
 
 def write_failed(folder, pipeline, variables, message):

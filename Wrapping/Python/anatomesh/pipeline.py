@@ -20,6 +20,7 @@ runs. ``${name}`` is replaced by a variable (``output`` always exists, default "
 command line's ``--set name=value``; ``--output DIR`` sets ``output``). Every problem is a
 PipelineError naming the file and line.
 """
+import contextlib
 import os
 import re
 import sys
@@ -389,6 +390,8 @@ class Pipeline:
             watcher.watch(step.name, step.algorithm)
         written = []
         self.written_data = {}
+        self.clock = watcher.clock  # each filter's own execution time, and the <Output> files'
+        self.clock.seconds.update((s.name, 0.0) for s in self.steps)
         by_name = {s.name: s for s in self.steps}
         for step in self.steps:
             if not step.proxy.is_writer:
@@ -410,23 +413,31 @@ class Pipeline:
             _make_parent(path, self, line)
             if os.path.splitext(path)[1].lower() == ".pvd":
                 written.extend(write_time_series(algorithm, index, path,
-                                                 lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None))
+                                                 lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None,
+                                                 watcher.clock))
                 self.written_data[path] = algorithm.GetOutputDataObject(index)
                 continue
-            write_vtk_xml(algorithm.GetOutputDataObject(index), path)
+            with watcher.clock.running(WRITING):
+                write_vtk_xml(algorithm.GetOutputDataObject(index), path)
             written.append(path)
             self.written_data[path] = algorithm.GetOutputDataObject(index)
         watcher.finish()
         return written
 
 
+WRITING = "(outputs)"
+
+
 class _Watcher:
-    """Collects VTK errors and reports progress of each algorithm."""
+    """Collects VTK errors, reports progress of each algorithm and times each one's own execution."""
 
     def __init__(self, errors, progress):
         self.errors, self.progress, self.last = errors, progress, {}
+        self.clock = StageClock()
 
     def watch(self, name, algorithm):
+        algorithm.AddObserver("StartEvent", lambda obj, event: self.clock.start(name))
+        algorithm.AddObserver("EndEvent", lambda obj, event: self.clock.stop(name))
         def error_cb(obj, event, data=None):
             message = str(data) if data is not None else "error"
             # VTK's text: "ERROR: In file, line N\nclass (0x..): message"
@@ -459,6 +470,39 @@ class _Watcher:
             self.progress(None, 1.0)
 
 
+class StageClock:
+    """Wall seconds per stage, each stage's own: a stage that starts while another runs (an upstream
+    filter updated from inside a filter) pauses the other's clock until it ends."""
+
+    def __init__(self):
+        self.seconds, self.runs, self.stack = {}, {}, []
+
+    def start(self, name):
+        now = time.perf_counter()
+        self.runs[name] = self.runs.get(name, 0) + 1
+        if self.stack:
+            outer, since = self.stack[-1]
+            self.seconds[outer] = self.seconds.get(outer, 0.0) + now - since
+        self.stack.append((name, now))
+
+    def stop(self, name):
+        now = time.perf_counter()
+        if not self.stack or self.stack[-1][0] != name:
+            return  # an end without its start (an observer added mid-run): nothing to count
+        _, since = self.stack.pop()
+        self.seconds[name] = self.seconds.get(name, 0.0) + now - since
+        if self.stack:
+            self.stack[-1] = (self.stack[-1][0], now)
+
+    @contextlib.contextmanager
+    def running(self, name):
+        self.start(name)
+        try:
+            yield
+        finally:
+            self.stop(name)
+
+
 def _make_parent(path, pipeline, line):
     folder = os.path.dirname(os.path.abspath(path))
     try:
@@ -486,7 +530,7 @@ def _write_csv(table, path):
             os.remove(tmp)
 
 
-def write_time_series(algorithm, port, path, error=lambda: None):
+def write_time_series(algorithm, port, path, error=lambda: None, clock=None):
     """Write every time step an algorithm's output port advertises as NAME_NNNN.vtu (or .vtp/.vti)
     beside a ParaView collection NAME.pvd; without time steps, one file. The .pvd is written last,
     so a failed run never leaves a collection naming missing files. Returns the paths written."""
@@ -511,7 +555,8 @@ def write_time_series(algorithm, port, path, error=lambda: None):
         if ext is None:
             raise PipelineError("%s: cannot write a %s as a time series" % (path, data.GetClassName()))
         name = "%s_%04d%s" % (stem, k, ext)
-        write_vtk_xml(data, os.path.join(folder, name))
+        with (clock or StageClock()).running(WRITING):
+            write_vtk_xml(data, os.path.join(folder, name))
         written.append(os.path.join(folder, name))
         entries.append('    <DataSet timestep="%r" part="0" file="%s"/>' % (0.0 if t is None else t, name))
     text = ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n'
