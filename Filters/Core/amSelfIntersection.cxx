@@ -1,6 +1,7 @@
 #include "amSelfIntersection.h"
 
 #include "amSurfaceMesh.h"
+#include "vtkSMPTools.h"
 
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -79,41 +80,103 @@ std::vector<vtkIdType> amSelfIntersection::Triangles(
   return result;
 }
 
+namespace
+{
+using TriangleBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, vtkIdType>;
+
+TriangleBox BoxOf(const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& points, vtkIdType t)
+{
+  double lo[3], hi[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    lo[d] = hi[d] = points[mesh.Triangles[t][0]][d];
+    for (int k = 1; k < 3; ++k)
+    {
+      lo[d] = std::min(lo[d], points[mesh.Triangles[t][k]][d]);
+      hi[d] = std::max(hi[d], points[mesh.Triangles[t][k]][d]);
+    }
+  }
+  return TriangleBox(lo, hi, t);
+}
+}
+
 std::vector<vtkIdType> amSelfIntersection::AllTriangles(
   const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& points)
 {
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, vtkIdType>;
+  return amSelfIntersection::AllTriangles(mesh, points, nullptr);
+}
+
+std::vector<vtkIdType> amSelfIntersection::AllTriangles(const amSurfaceMesh& mesh,
+  const std::vector<std::array<double, 3>>& points, const std::vector<vtkIdType>* among)
+{
   const vtkIdType nt = mesh.NumberOfTriangles();
-  std::vector<Box> boxes;
+  std::vector<TriangleBox> boxes;
   boxes.reserve(static_cast<size_t>(nt));
   for (vtkIdType t = 0; t < nt; ++t)
-  {
-    double lo[3], hi[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      lo[d] = hi[d] = points[mesh.Triangles[t][0]][d];
-      for (int k = 1; k < 3; ++k)
+    boxes.push_back(BoxOf(mesh, points, t));
+  auto checker = [&](std::vector<vtkIdType>& found) {
+    return [&](const TriangleBox& a, const TriangleBox& b) {
+      if (a.info() == b.info())
+        return; // one triangle in both sets of a partial check
+      const auto& ta = mesh.Triangles[a.info()];
+      const auto& tb = mesh.Triangles[b.info()];
+      const double* pa[3] = { points[ta[0]].data(), points[ta[1]].data(), points[ta[2]].data() };
+      const double* pb[3] = { points[tb[0]].data(), points[tb[1]].data(), points[tb[2]].data() };
+      const vtkIdType ia[3] = { ta[0], ta[1], ta[2] }, ib[3] = { tb[0], tb[1], tb[2] };
+      if (amSelfIntersection::Cross(pa, ia, pb, ib))
       {
-        lo[d] = std::min(lo[d], points[mesh.Triangles[t][k]][d]);
-        hi[d] = std::max(hi[d], points[mesh.Triangles[t][k]][d]);
+        found.push_back(a.info());
+        found.push_back(b.info());
       }
-    }
-    boxes.emplace_back(lo, hi, t);
-  }
-  std::vector<vtkIdType> result;
-  auto check = [&](const Box& a, const Box& b) {
-    const auto& ta = mesh.Triangles[a.info()];
-    const auto& tb = mesh.Triangles[b.info()];
-    const double* pa[3] = { points[ta[0]].data(), points[ta[1]].data(), points[ta[2]].data() };
-    const double* pb[3] = { points[tb[0]].data(), points[tb[1]].data(), points[tb[2]].data() };
-    const vtkIdType ia[3] = { ta[0], ta[1], ta[2] }, ib[3] = { tb[0], tb[1], tb[2] };
-    if (amSelfIntersection::Cross(pa, ia, pb, ib))
-    {
-      result.push_back(a.info());
-      result.push_back(b.info());
-    }
+    };
   };
-  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), check);
+  std::vector<vtkIdType> result;
+  if (among)
+  {
+    // A few triangles against the whole surface: the sweep ends early in every part of space
+    // where none of them is.
+    std::vector<TriangleBox> few;
+    few.reserve(among->size());
+    for (vtkIdType t : *among)
+      few.push_back(BoxOf(mesh, points, t));
+    CGAL::box_intersection_d(few.begin(), few.end(), boxes.begin(), boxes.end(), checker(result));
+  }
+  else if (nt < 100000)
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), checker(result));
+  else
+  {
+    // Two halves at once, cut across the longest axis at the median box: a box goes to each half
+    // it reaches, so two boxes that meet share a half (where their overlap begins, or beyond the
+    // cut when it begins there), and the pairs found twice are merged below.
+    double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+    for (const TriangleBox& b : boxes)
+      for (int d = 0; d < 3; ++d)
+      {
+        lo[d] = std::min(lo[d], b.min_coord(d));
+        hi[d] = std::max(hi[d], b.max_coord(d));
+      }
+    const int axis = hi[0] - lo[0] >= std::max(hi[1] - lo[1], hi[2] - lo[2]) ? 0 : hi[1] - lo[1] >= hi[2] - lo[2] ? 1 : 2;
+    std::vector<double> lows(boxes.size());
+    for (size_t i = 0; i < boxes.size(); ++i)
+      lows[i] = boxes[i].min_coord(axis);
+    std::nth_element(lows.begin(), lows.begin() + lows.size() / 2, lows.end());
+    const double cut = lows[lows.size() / 2];
+    std::vector<TriangleBox> halves[2];
+    for (const TriangleBox& b : boxes)
+    {
+      if (b.min_coord(axis) <= cut)
+        halves[0].push_back(b);
+      if (b.max_coord(axis) >= cut)
+        halves[1].push_back(b);
+    }
+    std::vector<vtkIdType> found[2];
+    vtkSMPTools::For(0, 2, 1, [&](vtkIdType h0, vtkIdType h1) {
+      for (vtkIdType h = h0; h < h1; ++h)
+        CGAL::box_self_intersection_d(halves[h].begin(), halves[h].end(), checker(found[h]));
+    });
+    result = std::move(found[0]);
+    result.insert(result.end(), found[1].begin(), found[1].end());
+  }
   std::sort(result.begin(), result.end());
   result.erase(std::unique(result.begin(), result.end()), result.end());
   return result;

@@ -32,6 +32,10 @@ public:
   /// their regions (two organs' boundaries running through each other are found too).
   static std::vector<vtkIdType> AllTriangles(
     const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& points);
+  /// The same for the crossings that involve one of the triangles 'among' (any order; nullptr:
+  /// all): each of them against the whole surface, both triangles of a crossing pair returned.
+  static std::vector<vtkIdType> AllTriangles(const amSurfaceMesh& mesh,
+    const std::vector<std::array<double, 3>>& points, const std::vector<vtkIdType>* among);
 
   /// Exact test (CGAL's filtered predicates): do triangles a and b, with vertex ids ia and ib,
   /// meet anywhere other than in the vertices and edge they share? Identical vertex sets count

@@ -1,5 +1,6 @@
 #include "amSnakeSegmentation.h"
 
+#include "amConcurrentTasks.h"
 #include "amInputCheck.h"
 #include "amProvenance.h"
 #include "amSnakeTracker.h"
@@ -20,9 +21,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -242,60 +245,85 @@ int amSnakeSegmentation::RequestData(
   tp.AreaCost = this->AreaCost;
   tp.MinimumSectionContrast = this->MinimumSectionContrast;
 
-  for (size_t li = 0; li < order.size(); ++li)
+  // Each organ's contour is independent of the others (its own region of interest, its own
+  // intensity interval), so the organs run at once, one per core; the pasting below keeps the
+  // precedence of their order.
+  struct Organ
   {
-    const int label = order[li];
-    const double p0 = static_cast<double>(li) / order.size(), p1 = static_cast<double>(li + 1) / order.size();
-    std::vector<std::array<double, 3>> mine;
-    for (const Seed& s : seeds)
-      if (s.Label == label)
-        mine.push_back({ s.Index[0], s.Index[1], s.Index[2] });
-    // 1. Region of interest around the seeds.
-    int lo[3], hi[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      double mn = 1e300, mx = -1e300;
-      for (const auto& s : mine)
+    int Lo[3], Size[3];
+    std::unique_ptr<amSnakeTracker> Tracker;
+    bool Segmented = false;
+    long AirSeed = -1; // a seed found in air, before any contour
+  };
+  std::vector<Organ> organs(order.size());
+  amConcurrentTasks::Run(
+    order.size(), 0,
+    [&](size_t li, std::atomic<double>& fraction, const std::atomic<bool>& abort) {
+      Organ& organ = organs[li];
+      std::vector<std::array<double, 3>> mine;
+      for (const Seed& s : seeds)
+        if (s.Label == order[li])
+          mine.push_back({ s.Index[0], s.Index[1], s.Index[2] });
+      // 1. Region of interest around the seeds.
+      int* lo = organ.Lo;
+      int* rd = organ.Size;
+      for (int a = 0; a < 3; ++a)
       {
-        mn = std::min(mn, s[a]);
-        mx = std::max(mx, s[a]);
+        double mn = 1e300, mx = -1e300;
+        for (const auto& s : mine)
+        {
+          mn = std::min(mn, s[a]);
+          mx = std::max(mx, s[a]);
+        }
+        const double margin = this->MaximumDistance / spacing[a];
+        lo[a] = std::max(0, static_cast<int>(std::floor(mn - margin)));
+        rd[a] = std::min(dims[a] - 1, static_cast<int>(std::ceil(mx + margin))) - lo[a] + 1;
       }
-      const double margin = this->MaximumDistance / spacing[a];
-      lo[a] = std::max(0, static_cast<int>(std::floor(mn - margin)));
-      hi[a] = std::min(dims[a] - 1, static_cast<int>(std::ceil(mx + margin)));
-    }
-    const int rd[3] = { hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1 };
-    std::vector<float> roi(static_cast<size_t>(rd[0]) * rd[1] * rd[2]);
-    vtkSMPTools::For(0, rd[2], [&](vtkIdType k0, vtkIdType k1) {
-      for (vtkIdType k = k0; k < k1; ++k)
+      std::vector<float> roi(static_cast<size_t>(rd[0]) * rd[1] * rd[2]);
+      for (int k = 0; k < rd[2]; ++k)
         for (int j = 0; j < rd[1]; ++j)
           for (int i = 0; i < rd[0]; ++i)
           {
             const vtkIdType id = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + (i + lo[0]);
             roi[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i] = static_cast<float>(scalars->GetComponent(id, 0));
           }
-    });
-    amSnakeTracker tracker(tp, spacing);
-    tracker.SetRegion(lo, rd, roi);
-    this->UpdateProgress(p0 + 0.1 * (p1 - p0));
+      organ.Tracker.reset(new amSnakeTracker(tp, spacing));
+      amSnakeTracker& tracker = *organ.Tracker;
+      tracker.SetRegion(lo, rd, roi);
+      fraction = 0.1;
+      // 2. Intensity statistics in the seed balls; a seed in air (a CT in HU) is a mistake.
+      tracker.MeasureSeeds(mine);
+      for (size_t s = 0; s < mine.size() && organ.AirSeed < 0; ++s)
+        if (!this->AllowAirSeeds && range[0] <= -900.0 && tracker.SeedMean(s) < -950.0)
+          organ.AirSeed = static_cast<long>(s);
+      // 3. The contour.
+      if (organ.AirSeed < 0)
+        organ.Segmented = tracker.Segment(
+          range[1], [&](double f) { fraction = f; }, [&]() { return abort.load(); });
+    },
+    [this](double f) { this->UpdateProgress(f); }, [this]() { return this->GetAbortExecute() != 0; });
 
-    // 2. Intensity statistics in the seed balls; a seed in air (a CT in HU) is a mistake.
-    tracker.MeasureSeeds(mine);
-    for (size_t s = 0; s < mine.size(); ++s)
-      if (!this->AllowAirSeeds && range[0] <= -900.0 && tracker.SeedMean(s) < -950.0)
-      {
-        double w[3];
-        input->TransformContinuousIndexToPhysicalPoint(
-          mine[s][0] + extent[0], mine[s][1] + extent[2], mine[s][2] + extent[4], w);
-        vtkErrorMacro("Seed (" << w[0] << ", " << w[1] << ", " << w[2] << ") for label " << label
-                               << " lies in air (mean " << tracker.SeedMean(s)
-                               << " HU around it); move it into the organ, or set AllowAirSeeds.");
-        return 0;
-      }
-    // 3. The contour.
-    if (!tracker.Segment(
-          range[1], [&](double f) { this->UpdateProgress(p0 + (p1 - p0) * f); },
-          [this]() { return this->GetAbortExecute() != 0; }))
+  for (size_t li = 0; li < order.size(); ++li)
+  {
+    const int label = order[li];
+    Organ& organ = organs[li];
+    amSnakeTracker& tracker = *organ.Tracker;
+    if (organ.AirSeed >= 0)
+    {
+      const Seed* seed = nullptr;
+      long n = organ.AirSeed;
+      for (const Seed& s : seeds)
+        if (s.Label == label && n-- == 0)
+          seed = &s;
+      double w[3];
+      input->TransformContinuousIndexToPhysicalPoint(
+        seed->Index[0] + extent[0], seed->Index[1] + extent[2], seed->Index[2] + extent[4], w);
+      vtkErrorMacro("Seed (" << w[0] << ", " << w[1] << ", " << w[2] << ") for label " << label
+                             << " lies in air (mean " << tracker.SeedMean(static_cast<size_t>(organ.AirSeed))
+                             << " HU around it); move it into the organ, or set AllowAirSeeds.");
+      return 0;
+    }
+    if (!organ.Segmented)
     {
       if (!tracker.Error.empty())
         vtkErrorMacro("Level-set evolution failed for label " << label << ": " << tracker.Error);
@@ -306,6 +334,8 @@ int amSnakeSegmentation::RequestData(
 
     // Paste into the label map: earlier labels keep their voxels.
     const std::vector<unsigned char>& inside = tracker.Inside();
+    const int* lo = organ.Lo;
+    const int* rd = organ.Size;
     size_t voxels = 0;
     for (int k = 0; k < rd[2]; ++k)
       for (int j = 0; j < rd[1]; ++j)
@@ -323,8 +353,9 @@ int amSnakeSegmentation::RequestData(
     if (voxels == 0)
       vtkWarningMacro("Label " << label << ": the contour vanished (no voxel in [" << tlo << ", " << thi
                                << "] around its seeds, or every voxel already taken by an earlier label).");
-    this->UpdateProgress(p1);
+    organ.Tracker.reset();
   }
+  this->UpdateProgress(1.0);
 
   output->CopyStructure(input);
   output->GetPointData()->SetScalars(labelArray);
