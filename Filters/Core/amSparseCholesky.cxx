@@ -11,12 +11,15 @@ namespace
 {
 // The supernodal factor calls BLAS; a threaded OpenBLAS splits its sums differently for each
 // thread count, which changes the last bits of the result. For results that do not depend on
-// the machine's core count, OpenBLAS (when it is the BLAS in use) runs on one thread while
-// CHOLMOD works, and gets its setting back afterwards.
-class SerialBlas
+// the machine's core count, OpenBLAS (when it is the BLAS in use) runs on a fixed number of
+// threads while CHOLMOD works (two: the factor's dense products are most of the torso's time),
+// and gets its setting back afterwards.
+constexpr int Threads = 2;
+
+class FixedBlasThreads
 {
 public:
-  SerialBlas()
+  FixedBlasThreads()
   {
     void* blas = dlopen("libopenblas.so.0", RTLD_LAZY | RTLD_NOLOAD);
     if (!blas)
@@ -27,16 +30,16 @@ public:
     if (this->Set && get)
     {
       this->Saved = get();
-      this->Set(1);
+      this->Set(Threads);
     }
   }
-  ~SerialBlas()
+  ~FixedBlasThreads()
   {
     if (this->Set && this->Saved > 0)
       this->Set(this->Saved);
   }
-  SerialBlas(const SerialBlas&) = delete;
-  SerialBlas& operator=(const SerialBlas&) = delete;
+  FixedBlasThreads(const FixedBlasThreads&) = delete;
+  FixedBlasThreads& operator=(const FixedBlasThreads&) = delete;
 
 private:
   void (*Set)(int) = nullptr;
@@ -142,7 +145,7 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
   }
   colStart[m] = fill;
 
-  SerialBlas serial;
+  FixedBlasThreads blas;
   in.L = cholmod_l_analyze(S, c);
   bool ok = in.L && c->status >= CHOLMOD_OK;
   if (ok)
@@ -218,7 +221,7 @@ bool amSparseCholesky::Solve(const double* b, double* x, int count)
       rc[r] = s;
     }
   }
-  SerialBlas serial;
+  FixedBlasThreads blas;
   if (!cholmod_l_solve2(CHOLMOD_A, in.L, in.B, nullptr, &in.X, nullptr, &in.Y, &in.E, &in.Common))
     return false;
   const auto* solution = static_cast<const double*>(in.X->x);

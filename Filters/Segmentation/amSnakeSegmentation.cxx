@@ -26,6 +26,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -256,29 +257,41 @@ int amSnakeSegmentation::RequestData(
     long AirSeed = -1; // a seed found in air, before any contour
   };
   std::vector<Organ> organs(order.size());
+  std::vector<std::vector<std::array<double, 3>>> organSeeds(order.size());
+  for (size_t li = 0; li < order.size(); ++li)
+  {
+    for (const Seed& s : seeds)
+      if (s.Label == order[li])
+        organSeeds[li].push_back({ s.Index[0], s.Index[1], s.Index[2] });
+    // 1. Region of interest around the seeds.
+    for (int a = 0; a < 3; ++a)
+    {
+      double mn = 1e300, mx = -1e300;
+      for (const auto& s : organSeeds[li])
+      {
+        mn = std::min(mn, s[a]);
+        mx = std::max(mx, s[a]);
+      }
+      const double margin = this->MaximumDistance / spacing[a];
+      organs[li].Lo[a] = std::max(0, static_cast<int>(std::floor(mn - margin)));
+      organs[li].Size[a] = std::min(dims[a] - 1, static_cast<int>(std::ceil(mx + margin))) - organs[li].Lo[a] + 1;
+    }
+  }
+  // The largest regions first, so that the last one to start is a small one.
+  std::vector<size_t> schedule(order.size());
+  std::iota(schedule.begin(), schedule.end(), 0);
+  auto voxels = [&](size_t li) {
+    return static_cast<double>(organs[li].Size[0]) * organs[li].Size[1] * organs[li].Size[2];
+  };
+  std::stable_sort(schedule.begin(), schedule.end(), [&](size_t a, size_t b) { return voxels(a) > voxels(b); });
   amConcurrentTasks::Run(
     order.size(), 0,
-    [&](size_t li, std::atomic<double>& fraction, const std::atomic<bool>& abort) {
+    [&](size_t task, std::atomic<double>& fraction, const std::atomic<bool>& abort) {
+      const size_t li = schedule[task];
       Organ& organ = organs[li];
-      std::vector<std::array<double, 3>> mine;
-      for (const Seed& s : seeds)
-        if (s.Label == order[li])
-          mine.push_back({ s.Index[0], s.Index[1], s.Index[2] });
-      // 1. Region of interest around the seeds.
-      int* lo = organ.Lo;
-      int* rd = organ.Size;
-      for (int a = 0; a < 3; ++a)
-      {
-        double mn = 1e300, mx = -1e300;
-        for (const auto& s : mine)
-        {
-          mn = std::min(mn, s[a]);
-          mx = std::max(mx, s[a]);
-        }
-        const double margin = this->MaximumDistance / spacing[a];
-        lo[a] = std::max(0, static_cast<int>(std::floor(mn - margin)));
-        rd[a] = std::min(dims[a] - 1, static_cast<int>(std::ceil(mx + margin))) - lo[a] + 1;
-      }
+      const std::vector<std::array<double, 3>>& mine = organSeeds[li];
+      const int* lo = organ.Lo;
+      const int* rd = organ.Size;
       std::vector<float> roi(static_cast<size_t>(rd[0]) * rd[1] * rd[2]);
       for (int k = 0; k < rd[2]; ++k)
         for (int j = 0; j < rd[1]; ++j)
