@@ -30,6 +30,7 @@ amMetricRemeshing::amMetricRemeshing()
   : Tolerance(0.2)
   , TargetSize(0.0)
   , NumberOfIterations(3)
+  , PreserveVolumes(1)
   , Hausdorff(0)
   , HausdorffUpperBound(0)
   , InsertedPoints(0)
@@ -90,6 +91,7 @@ int amMetricRemeshing::RequestData(
 
   amRemesh::Remesher r;
   r.Setup(mesh, tensors, this->Tolerance);
+  r.KeepVolumes = this->PreserveVolumes != 0;
   this->UpdateProgress(0.05);
   const amRemesh::Remesher::Result result =
     r.Run(this->NumberOfIterations, [this](double fraction) { this->UpdateProgress(fraction); });
@@ -172,7 +174,8 @@ int amMetricRemeshing::RequestData(
   }
   std::ostringstream params;
   params << "Tolerance=" << this->Tolerance << " TargetSize=" << this->TargetSize
-         << " NumberOfIterations=" << this->NumberOfIterations << " Hausdorff=" << h
+         << " NumberOfIterations=" << this->NumberOfIterations << " PreserveVolumes=" << this->PreserveVolumes
+         << " Hausdorff=" << h
          << " InsertedPoints=" << result.Inserted << " Collapses=" << r.Collapses() << " Flips=" << r.Flips()
          << " Moves=" << r.Moves();
   amProvenance::Record(output, input, "amMetricRemeshing", params.str());
@@ -186,4 +189,5 @@ void amMetricRemeshing::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "TargetSize: " << this->TargetSize << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "PreserveVolumes: " << this->PreserveVolumes << "\n";
 }

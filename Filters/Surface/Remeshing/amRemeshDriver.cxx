@@ -91,6 +91,34 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
   for (int n = 0; n < 3 && attempt(SmallAngle, SmallAngle); ++n)
     ;
   attempt(DegenerateAngle, MinimumNewAngle);
+  // The regions' volumes given back: a coarser triangulation of a convex part lies inside it (the
+  // chords of a thin rib take several per cent of its volume). Kept only where the distance
+  // ends within the tolerance (or no worse than before).
+  if (this->KeepVolumes && !this->InputVolumes.empty())
+  {
+    Snapshot before = this->Save();
+    std::vector<double> localBefore = this->Hausdorff.TriangleDistances();
+    if (this->PreserveVolumes(this->InputVolumes, 3) > 0)
+    {
+      // Where a move took a triangle's far point beyond the tolerance, points are inserted as
+      // in the remeshing itself.
+      double upperAfter = 0;
+      long long insertedAfter = 0;
+      const double hAfter = this->Enforce(upperAfter, insertedAfter);
+      if (hAfter > std::max(h, this->In.Eps))
+      {
+        this->Restore(std::move(before));
+        this->Hausdorff.RestoreTriangleDistances(std::move(localBefore));
+      }
+      else
+      {
+        h = hAfter;
+        upper = upperAfter;
+        inserted += insertedAfter;
+        measured = true;
+      }
+    }
+  }
   if (!measured)
   {
     // The distances are not of the surface as it is: measured again (incrementally).

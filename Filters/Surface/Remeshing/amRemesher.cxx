@@ -16,6 +16,7 @@ void Remesher::Setup(const amSurfaceMesh& mesh, const std::vector<Mat3>& metric,
 {
   Surface& S = this->Mesh;
   this->In.Eps = eps;
+  this->InputVolumes = amRemesh::RegionVolumes(mesh);
   const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
   S.P.resize(static_cast<size_t>(np));
   for (vtkIdType v = 0; v < np; ++v)

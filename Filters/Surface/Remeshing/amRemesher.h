@@ -14,6 +14,7 @@
  * - Components: closed fragments too small to collapse further.
  * - OnTwoWorkers (amRemeshScheduler): a pass on two threads, the same result whatever the count.
  * - HausdorffMeasure: the two-sided distance, and where to insert points.
+ * - Volumes (amRemeshVolumes): each region's volume, given back where the remeshing lost it.
  * - The operations, each a check and an apply in one file: collapse (amRemeshCollapse), flip
  *   (amRemeshFlip), split and insertion (amRemeshSplit), relaxation and moves (amRemeshRelax),
  *   the small-angle cleanup (amRemeshCleanup); the driver (amRemeshDriver) runs them.
@@ -36,10 +37,15 @@
 #include "amRemeshWorker.h"
 
 #include <functional>
+#include <map>
 #include <string>
 
 namespace amRemesh
 {
+/// The volume each label's side of a labelled surface encloses (mm^3; Labels[0] is the side a
+/// triangle's normal leaves; the outside, label 0, gets minus the total).
+ANATOMESHFILTERSSURFACE_EXPORT std::map<int, double> RegionVolumes(const amSurfaceMesh& mesh);
+
 class ANATOMESHFILTERSSURFACE_EXPORT Remesher
 {
 public:
@@ -123,6 +129,15 @@ public:
 
   /// The bound enforced: measure, insert where it is exceeded, measure again (at most 30 rounds).
   double Enforce(double& upper, long long& inserted);
+
+  /// The volumes of the input's regions (Setup), given back at the end of Run when KeepVolumes.
+  std::map<int, double> InputVolumes;
+  bool KeepVolumes = true;
+  /// The volume of each region of the surface as it is.
+  std::map<int, double> RegionVolumes() const;
+  /// Moves interface vertices along their normals towards each region's target volume, within
+  /// the guards; returns the number of vertices moved.
+  int PreserveVolumes(const std::map<int, double>& target, int rounds);
 
   /// The state the operations change, for an undo: the input, the bins and the measure's cache
   /// are not copied (the input never changes; Restore rebuilds the bins, and the measure's cache
