@@ -22,13 +22,13 @@
  * sampling), and wherever it exceeds Tolerance the offending triangle is bisected towards the input
  * (a junction edge at the input curve vertex halfway along the curve), or the far point inserted;
  * an insertion refused because something is in the way refines that instead, up to 30 rounds.
- * Last, triangles with an angle under 10 degrees that the insertions left are flipped or collapsed
- * away under the same guards, kept only if the bound and the angles end no worse. With
- * PreserveVolumes (default), each region then gets back the volume it has in the input: the
+ * With PreserveVolumes (default), each region then gets back the volume it has in the input: the
  * vertices inside each interface move along their normals by one offset per interface, the
  * smallest that restores every region's volume to first order (label 0, the outside, takes up the
- * rest), under the same guards, three rounds; the bound is enforced again, and the step undone if
- * the distance would end above the tolerance.
+ * rest), under the same guards, three rounds; where the measure then finds a triangle beyond the
+ * tolerance its vertices move back, and the step is undone if the distance would still end above
+ * it. Last, triangles with an angle under 10 degrees that the insertions left are flipped or
+ * collapsed away under the same guards, kept only if the bound and the angles end no worse.
  *
  * The achieved distance is in field data "Hausdorff" (and "HausdorffUpperBound", with the
  * sampling gap); per triangle in cell data "HausdorffDistance" (the largest distance measured on

@@ -97,6 +97,7 @@ void Chain(benchmark::State& state)
       state.counters["min_dihedral"] = table->GetValueByName(last, "MinimumDihedralAngle").ToDouble();
       state.counters["slivers"] = static_cast<double>(tetra->GetNumberOfSlivers());
       state.counters["surface_moved_mm"] = tetra->GetSurfaceDeviation();
+      state.counters["volume_misses"] = static_cast<double>(tetra->GetNumberOfVolumeMisses());
     }
     state.counters["peak_MB"] = PeakMegabytes();
   }
