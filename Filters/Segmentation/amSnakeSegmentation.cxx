@@ -323,14 +323,10 @@ int amSnakeSegmentation::RequestData(
     amSnakeTracker& tracker = *organ.Tracker;
     if (organ.AirSeed >= 0)
     {
-      const Seed* seed = nullptr;
-      long n = organ.AirSeed;
-      for (const Seed& s : seeds)
-        if (s.Label == label && n-- == 0)
-          seed = &s;
+      const std::array<double, 3>& seed = organSeeds[li][static_cast<size_t>(organ.AirSeed)];
       double w[3];
       input->TransformContinuousIndexToPhysicalPoint(
-        seed->Index[0] + extent[0], seed->Index[1] + extent[2], seed->Index[2] + extent[4], w);
+        seed[0] + extent[0], seed[1] + extent[2], seed[2] + extent[4], w);
       vtkErrorMacro("Seed (" << w[0] << ", " << w[1] << ", " << w[2] << ") for label " << label
                              << " lies in air (mean " << tracker.SeedMean(static_cast<size_t>(organ.AirSeed))
                              << " HU around it); move it into the organ, or set AllowAirSeeds.");

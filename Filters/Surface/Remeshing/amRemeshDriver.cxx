@@ -36,54 +36,10 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
   h = this->Enforce(upper, inserted);
   bool measured = true; // the last Measure saw the surface as it is (its per-triangle distances)
   report(0.85);
-  // The regions' volumes given back: a coarser triangulation of a convex part lies inside it (the
-  // chords of a thin rib take several per cent of its volume). Kept only where the distance
-  // ends within the tolerance (or no worse than before).
-  if (this->KeepVolumes && !this->InputVolumes.empty())
-  {
-    Snapshot before = this->Save();
-    std::vector<double> localBefore = this->Hausdorff.TriangleDistances();
-    const std::vector<Vec3> positions = this->Mesh.P;
-    if (this->PreserveVolumes(this->InputVolumes, 3) > 0)
-    {
-      // The guards keep each star near the input; the measure, finer, may still find a triangle
-      // beyond: its vertices go back (guarded), a few rounds, and all is undone if that fails.
-      double upperAfter = 0, hAfter = 0;
-      for (int round = 0; round < 4; ++round)
-      {
-        std::vector<std::pair<int, Vec3>> insert;
-        std::vector<int> edgeOf;
-        hAfter = this->Hausdorff.Measure(this->Mesh, this->In, upperAfter, insert, edgeOf);
-        if (hAfter <= std::max(h, this->In.Eps))
-          break;
-        const std::vector<double>& local = this->Hausdorff.TriangleDistances();
-        std::vector<int> back;
-        for (size_t t = 0; t < this->Mesh.T.size() && t < local.size(); ++t)
-          if (this->Mesh.T[t].Alive &&
-            local[t] > std::max(this->In.Eps, t < localBefore.size() ? localBefore[t] : 0.0))
-            back.insert(back.end(), this->Mesh.T[t].V, this->Mesh.T[t].V + 3);
-        std::sort(back.begin(), back.end());
-        back.erase(std::unique(back.begin(), back.end()), back.end());
-        int undone = 0;
-        for (int v : back)
-          if (this->Mesh.P[v] != positions[v])
-            undone += this->Move(v, positions[v], false);
-        if (undone == 0)
-          break;
-      }
-      if (hAfter > std::max(h, this->In.Eps))
-      {
-        this->Restore(std::move(before));
-        this->Hausdorff.RestoreTriangleDistances(std::move(localBefore));
-      }
-      else
-      {
-        h = hAfter;
-        upper = upperAfter;
-        measured = true;
-      }
-    }
-  }
+  // The regions' volumes given back (amRemeshVolumes), before the cleanups below; either way the
+  // per-triangle distances stay those of the surface as it is.
+  if (this->KeepVolumes)
+    this->KeepInputVolumes(h, upper);
   // Triangles with small angles that the insertions left (no tetrahedron on them can be good):
   // removed where a flip or collapse allows it (junction vertices closing the strips of an
   // interface that narrows to nothing between two curves too), then the bound enforced again.
