@@ -448,6 +448,7 @@ TEST(Tetrahedralize, MainJobOrgansQuality)
   vtkNew<amMetricRemeshing> rm;
   rm->SetInputConnection(metric->GetOutputPort());
   rm->SetTolerance(0.2);
+  rm->SetPreserveVolumes(true); // as the main job
   rm->Update();
   vtkPolyData* surface = rm->GetOutput();
   // A radius-edge bound of 1.4 and 8 improvement passes: a margin under the mean of 1.4 on this

@@ -44,6 +44,7 @@ struct AtlasChain
     this->Metric->SetAnisotropic(false);
     this->Remesh->SetInputConnection(this->Metric->GetOutputPort());
     this->Remesh->SetTolerance(eps);
+    this->Remesh->SetPreserveVolumes(true);
     this->Tetra->SetInputConnection(this->Remesh->GetOutputPort());
   }
 };

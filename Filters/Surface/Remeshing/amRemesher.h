@@ -133,7 +133,7 @@ public:
   /// The volumes of the input's regions (Setup), given back in Run once the bound is enforced,
   /// when KeepVolumes.
   std::map<int, double> InputVolumes;
-  bool KeepVolumes = true;
+  bool KeepVolumes = false;
   /// The volume of each region of the surface as it is.
   std::map<int, double> RegionVolumes() const;
   /// Moves interface vertices along their normals towards each region's target volume, within
