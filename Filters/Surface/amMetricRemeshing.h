@@ -22,7 +22,7 @@
  * sampling), and wherever it exceeds Tolerance the offending triangle is bisected towards the input
  * (a junction edge at the input curve vertex halfway along the curve), or the far point inserted;
  * an insertion refused because something is in the way refines that instead, up to 30 rounds.
- * With PreserveVolumes (off by default), each region then gets back the volume it has in the input: the
+ * With PreserveVolumes (on by default), each region then gets back the volume it has in the input: the
  * vertices inside each interface move along their normals by one offset per interface, the
  * smallest that restores every region's volume to first order (label 0, the outside, takes up the
  * rest), under the same guards, three rounds; where the measure then finds a triangle beyond the
@@ -80,12 +80,12 @@ public:
   ///@}
 
   ///@{
-  /// Give each region the volume it has in the input (default off): at the end, the vertices of
+  /// Give each region the volume it has in the input (default on): at the end, the vertices of
   /// each interface move along their normals by one offset per interface (the smallest that
   /// restores every region's volume, junction curves kept, within the tolerance and without
-  /// crossings). A coarser triangulation of a convex part lies inside it: without this, a thin
-  /// part (a rib) loses several per cent of its volume. Off by default: on the 1 mm phantom's truth
-  /// labels (paper_table.xml) the result is a surface TetGen refuses (labels inconsistent).
+  /// crossings or passing through another part of the surface). A coarser triangulation of a
+  /// convex part lies inside it: without this, a thin part (a rib) loses several per cent of its
+  /// volume. Off keeps the surface the remeshing left (a few seconds less).
   vtkSetMacro(PreserveVolumes, vtkTypeBool);
   vtkGetMacro(PreserveVolumes, vtkTypeBool);
   vtkBooleanMacro(PreserveVolumes, vtkTypeBool);

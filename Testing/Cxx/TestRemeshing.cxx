@@ -168,6 +168,48 @@ TEST(RemeshCrossingGuard, RefusesNewTrianglesThroughLiveOnes)
   EXPECT_TRUE(r->Crossing.Crosses(ids, flat, {}, w));
 }
 
+TEST(RemeshCrossingGuard, InsideASweptTetrahedron)
+{
+  const std::array<Vec3, 4> t = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1) };
+  EXPECT_TRUE(CrossingGuard::StrictlyInside(t, Vec3(0.2, 0.2, 0.2)));
+  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0.5, 0.5, 0.5)));  // outside
+  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0.3, 0.3, 0.0)));  // on a face
+  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0, 0, 0)));        // a corner
+  const std::array<Vec3, 4> flat = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0) };
+  EXPECT_FALSE(CrossingGuard::StrictlyInside(flat, Vec3(0.5, 0.5, 0.0))); // no inside
+}
+
+TEST(RemeshCrossingGuard, RefusesAMoveThatTurnsARegionInsideOut)
+{
+  // A one-voxel region: the unit cube, its two opposite corners A = (0,0,0) and B = (1,1,1) each
+  // the apex of the six triangles of their three faces, normals out of region 1.
+  amSurfaceMesh m;
+  for (int k = 0; k < 8; ++k)
+    m.Points.push_back({ double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1) });
+  const vtkIdType A = 0, B = 7;
+  // Around A the faces x = 0, y = 0, z = 0; around B the faces x = 1, y = 1, z = 1.
+  m.Triangles = { { A, 4, 6 }, { A, 6, 2 }, { A, 1, 5 }, { A, 5, 4 }, { A, 2, 3 }, { A, 3, 1 }, { B, 5, 1 },
+    { B, 1, 3 }, { B, 3, 2 }, { B, 2, 6 }, { B, 6, 4 }, { B, 4, 5 } };
+  m.Labels.assign(m.Triangles.size(), { 1, 0 });
+  m.BuildTopology();
+  auto r = Start(m, 10.0, 10.0);
+  ASSERT_GT(r->RegionVolumes()[1], 0.99);
+  const Vec3 c(0.5, 0.5, 0.5), diagonal(1, 1, 1);
+  // A just short of the centre: the region keeps a positive volume.
+  ASSERT_TRUE(r->Move(A, c - 0.01 * diagonal, false));
+  EXPECT_GT(r->RegionVolumes()[1], 0.0);
+  // B halfway, then past A: no triangle would cross another at the end, but the region would
+  // enclose a negative volume; B's triangles pass through A on the way. (In one step the
+  // triangles would turn too far: the guard on normals refuses that.)
+  ASSERT_TRUE(r->Move(B, c + 0.2 * diagonal, false));
+  const Remesher::Snapshot before = r->Save();
+  EXPECT_FALSE(r->Move(B, c - 0.03 * diagonal, false));
+  EXPECT_TRUE(Same(before.Mesh, r->Mesh));
+  // B to the centre's other side of A is fine.
+  EXPECT_TRUE(r->Move(B, c + 0.03 * diagonal, false));
+  EXPECT_GT(r->RegionVolumes()[1], 0.0);
+}
+
 TEST(RemeshCollapse, ShortEdgeCollapsesAndTheSurfaceStaysValid)
 {
   const int n = 6;

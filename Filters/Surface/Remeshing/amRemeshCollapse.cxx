@@ -28,6 +28,7 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
        &affected = worker.C.Affected;
   auto& ids = worker.C.Ids;
   auto& pos = worker.C.Pos;
+  auto& swept = worker.C.Swept;
   this->Mesh.EdgeTriangles(a, b, edge);
   if (edge.empty())
     return false;
@@ -75,6 +76,7 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
   ids.clear();
   pos.clear();
   sheets.clear();
+  swept.clear();
   for (int t : changed)
   {
     std::array<int, 3> v;
@@ -101,6 +103,9 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
     ids.push_back(v);
     pos.push_back(p);
     sheets.push_back(this->Mesh.T[t].Sheet);
+    // The corner that moves (a, or b on its way to 'to') sweeps a tetrahedron over the fixed edge.
+    const bool ofA = this->Mesh.T[t].V[0] == a || this->Mesh.T[t].V[1] == a || this->Mesh.T[t].V[2] == a;
+    swept.push_back({ { this->Mesh.P[other[0]], this->Mesh.P[other[1]], this->Mesh.P[ofA ? a : b], x } });
   }
   if (!this->LabelsInOrderAround(b, x, edge, changed, ids))
     return false;
@@ -121,7 +126,7 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
     affected.erase(std::remove(affected.begin(), affected.end(), a), affected.end());
     if (!this->Approximation.ClustersStayNear(removed, ids, pos, sheets, changed, affected, worker, a, b))
       return false;
-    if (this->Crossing.Crosses(ids, pos, removed, this->W()))
+    if (this->Crossing.Crosses(ids, pos, removed, this->W(), &swept))
       return false;
   }
   this->Approximation.KeepHints(this->W());

@@ -2,6 +2,8 @@
 
 #include "amSelfIntersection.h"
 
+#include <cmath>
+
 namespace amRemesh
 {
 bool CrossingGuard::Separated(const Vec3* p, const int* ip, const Vec3* q, const int* iq)
@@ -64,8 +66,53 @@ bool CrossingGuard::PairCrosses(
   return amSelfIntersection::Cross(a, va, b, vb);
 }
 
+namespace
+{
+/// A swept tetrahedron prepared for inclusion tests: its box, and the rows of its inverse (the
+/// barycentric coordinates of x are (x - O) . R[k]); a flat one has no inside.
+struct SweptTetrahedron
+{
+  Vec3 O, R[3], Lo, Hi;
+  bool Flat;
+  explicit SweptTetrahedron(const std::array<Vec3, 4>& t)
+    : O(t[0])
+    , Lo(t[0])
+    , Hi(t[0])
+  {
+    const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0], e3 = t[3] - t[0];
+    const double six = e1.dot(e2.cross(e3));
+    const double scale =
+      e1.squaredNorm() * e1.norm() + e2.squaredNorm() * e2.norm() + e3.squaredNorm() * e3.norm();
+    this->Flat = !(std::fabs(six) > 1e-9 * scale);
+    this->R[0] = e2.cross(e3) / six;
+    this->R[1] = e3.cross(e1) / six;
+    this->R[2] = e1.cross(e2) / six;
+    for (const Vec3& x : t)
+    {
+      this->Lo = this->Lo.cwiseMin(x);
+      this->Hi = this->Hi.cwiseMax(x);
+    }
+  }
+  /// Each barycentric coordinate strictly positive by a margin far above rounding.
+  bool StrictlyInside(const Vec3& x) const
+  {
+    if (this->Flat || (x.array() < this->Lo.array()).any() || (x.array() > this->Hi.array()).any())
+      return false;
+    const Vec3 d = x - this->O;
+    const double l1 = d.dot(this->R[0]), l2 = d.dot(this->R[1]), l3 = d.dot(this->R[2]);
+    constexpr double margin = 1e-7;
+    return l1 > margin && l2 > margin && l3 > margin && 1.0 - l1 - l2 - l3 > margin;
+  }
+};
+}
+
+bool CrossingGuard::StrictlyInside(const std::array<Vec3, 4>& t, const Vec3& x)
+{
+  return SweptTetrahedron(t).StrictlyInside(x);
+}
+
 bool CrossingGuard::Crosses(const std::vector<std::array<int, 3>>& ids, const std::vector<std::array<Vec3, 3>>& pos,
-  const std::vector<int>& removed, Worker& worker) const
+  const std::vector<int>& removed, Worker& worker, const std::vector<std::array<Vec3, 4>>* swept) const
 {
   const Surface& S = this->S;
   if (worker.Stamp.size() < S.T.size())
@@ -93,6 +140,13 @@ bool CrossingGuard::Crosses(const std::vector<std::array<int, 3>>& ids, const st
       hi = hi.cwiseMax(x);
     }
   }
+  if (swept)
+    for (const auto& t : *swept)
+      for (const Vec3& x : t)
+      {
+        lo = lo.cwiseMin(x);
+        hi = hi.cwiseMax(x);
+      }
   // The live triangles near the new ones, each once (the removed ones are stamped first), then
   // every pair whose boxes overlap tested exactly.
   const int stamp = ++worker.StampValue;
@@ -137,6 +191,24 @@ bool CrossingGuard::Crosses(const std::vector<std::array<int, 3>>& ids, const st
         return true;
       }
   }
+  if (swept)
+    for (const auto& tet : *swept)
+    {
+      const SweptTetrahedron t(tet);
+      if (t.Flat)
+        continue;
+      for (const NearTriangle& c : near)
+      {
+        if (!((c.Lo.array() <= t.Hi.array()).all() && (c.Hi.array() >= t.Lo.array()).all()))
+          continue;
+        if (t.StrictlyInside(c.X[0]) || t.StrictlyInside(c.X[1]) || t.StrictlyInside(c.X[2]) ||
+          t.StrictlyInside((c.X[0] + c.X[1] + c.X[2]) / 3.0))
+        {
+          worker.LastHit = c.Id;
+          return true;
+        }
+      }
+    }
   return false;
 }
 }

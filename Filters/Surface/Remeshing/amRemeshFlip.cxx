@@ -55,7 +55,10 @@ bool Remesher::Flip(int a, int b)
   if (!this->Approximation.ClustersStayNear({ t1, t2 }, { { a, d, c }, { d, b, c } },
         { { pa, pd, pc }, { pd, pb, pc } }, { sheet, sheet }, { t1, t2 }, { a, b, c, d }, this->W()))
     return false;
-  if (this->Crossing.Crosses({ { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } }, { t1, t2 }, this->W()))
+  // The flip sweeps the tetrahedron (a, b, c, d): nothing may lie inside it.
+  const std::vector<std::array<Vec3, 4>> swept = { { pa, pb, pc, pd } };
+  if (this->Crossing.Crosses(
+        { { a, d, c }, { d, b, c } }, { { pa, pd, pc }, { pd, pb, pc } }, { t1, t2 }, this->W(), &swept))
     return false;
   this->Approximation.KeepHints(this->W());
   const std::vector<int> pair = { t1, t2 };

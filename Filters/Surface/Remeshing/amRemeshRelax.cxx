@@ -65,14 +65,22 @@ bool Remesher::Move(int v, const Vec3& x, bool relax)
   std::vector<std::array<int, 3>> ids;
   std::vector<std::array<Vec3, 3>> pos;
   std::vector<int> sheets;
+  std::vector<std::array<Vec3, 4>> swept;
   for (int t : this->Mesh.VT[v])
   {
     std::array<Vec3, 3> p, q;
+    int fixed = 0;
+    std::array<Vec3, 4> sweep;
     for (int k = 0; k < 3; ++k)
     {
       p[k] = this->Mesh.P[this->Mesh.T[t].V[k]];
       q[k] = this->Mesh.T[t].V[k] == v ? x : p[k];
+      if (this->Mesh.T[t].V[k] != v)
+        sweep[fixed++] = p[k];
     }
+    sweep[2] = this->Mesh.P[v];
+    sweep[3] = x;
+    swept.push_back(sweep);
     before = std::min(before, MinAngle(p[0], p[1], p[2]));
     after = std::min(after, MinAngle(q[0], q[1], q[2]));
     const Vec3 n0 = (p[1] - p[0]).cross(p[2] - p[0]), n1 = (q[1] - q[0]).cross(q[2] - q[0]);
@@ -91,7 +99,7 @@ bool Remesher::Move(int v, const Vec3& x, bool relax)
   this->Mesh.Neighbours(v, ring);
   ring.push_back(v);
   if (!this->Approximation.ClustersStayNear(this->Mesh.VT[v], ids, pos, sheets, this->Mesh.VT[v], ring, this->W()) ||
-    this->Crossing.Crosses(ids, pos, this->Mesh.VT[v], this->W()))
+    this->Crossing.Crosses(ids, pos, this->Mesh.VT[v], this->W(), &swept))
     return false;
   this->Approximation.KeepHints(this->W());
   this->Mesh.P[v] = x;

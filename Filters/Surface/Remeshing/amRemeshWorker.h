@@ -39,6 +39,7 @@ struct alignas(64) Worker
     std::vector<int> Edge, Na, Nb, Common, Apex, Changed, Removed, Sheets, Affected;
     std::vector<std::array<int, 3>> Ids;
     std::vector<std::array<Vec3, 3>> Pos;
+    std::vector<std::array<Vec3, 4>> Swept;
   } C;
 };
 
