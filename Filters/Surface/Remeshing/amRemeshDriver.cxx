@@ -111,7 +111,21 @@ double Remesher::Enforce(double& upper, long long& inserted)
   std::vector<int> edgeOf;
   double h = this->Hausdorff.Measure(this->Mesh, this->In, upper, insert, edgeOf);
   this->Grid.Rebuild();
-  for (int round = 0; round < 30 && !insert.empty(); ++round)
+  // How far beyond the tolerance the triangles to refine are, in sum: where a part is thinner
+  // than the tolerance allows, the refinements only chase the same far point round after round
+  // (a smaller triangle each time, as far from it as the last); the rounds stop when three in a
+  // row bring neither h nor this sum down.
+  auto excess = [&]() {
+    const std::vector<double>& local = this->Hausdorff.TriangleDistances();
+    double sum = 0;
+    for (const auto& far : insert)
+      if (far.first < static_cast<int>(local.size()))
+        sum += std::max(0.0, local[far.first] - this->In.Eps);
+    return sum;
+  };
+  double bestH = h, bestExcess = excess();
+  int stalled = 0;
+  for (int round = 0; round < 30 && !insert.empty() && stalled < 3; ++round)
   {
     long long done = 0;
     std::vector<int> blocked;
@@ -139,6 +153,11 @@ double Remesher::Enforce(double& upper, long long& inserted)
     h = this->Hausdorff.Measure(this->Mesh, this->In, upper, insert, edgeOf);
     if (done == 0)
       break;
+    const double e = excess();
+    const bool better = h < bestH - 1e-6 * this->In.Eps || e < 0.99 * bestExcess;
+    stalled = better ? 0 : stalled + 1;
+    bestH = std::min(bestH, h);
+    bestExcess = std::min(bestExcess, e);
   }
   return h;
 }

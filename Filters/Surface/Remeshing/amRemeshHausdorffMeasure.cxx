@@ -51,6 +51,7 @@ double HausdorffMeasure::ToBothRegions(
 double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, double& upperBound,
   std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf)
 {
+  static const std::vector<int> none;
   edgeOf.clear();
   // The regions' boundaries of this state of the surface, built on demand.
   this->Regions.clear();
@@ -68,6 +69,7 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
   // measures change a few triangles; querying every sample cost a tenth of a second each).
   std::vector<NearCells> changedNear(static_cast<size_t>(nSheets));
   std::vector<std::vector<int>> ids(static_cast<size_t>(nSheets)), changedIds(static_cast<size_t>(nSheets));
+  std::vector<char> whole(static_cast<size_t>(nSheets), 0);
   std::vector<std::array<double, 3>> pts(S.P.size());
   for (size_t i = 0; i < S.P.size(); ++i)
     pts[i] = { S.P[i].x(), S.P[i].y(), S.P[i].z() };
@@ -86,18 +88,37 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
           changedIds[S.T[t].Sheet].push_back(static_cast<int>(t));
         }
       }
-    // The whole surface on one thread, what changed on the other (read only where the cache
-    // is valid: the first Measure queries the whole surface everywhere).
-    vtkSMPTools::For(0, 2, 1, [&](vtkIdType j0, vtkIdType j1) {
-      for (vtkIdType j = j0; j < j1; ++j)
-        for (int s = 0; s < nSheets; ++s)
-          if (j == 0)
-            cur[s].Build(pts, tris[s]);
-          else if (this->Cache.Valid)
+    // A sheet's whole surface is searched only for the samples whose nearest triangle changed
+    // (all of them at the first Measure): most later measures change a few sheets of thousands.
+    vtkSMPTools::For(0, nSheets, [&](vtkIdType s0, vtkIdType s1) {
+      for (vtkIdType s = s0; s < s1; ++s)
+      {
+        const std::vector<int>& at = this->Cache.At.size() > static_cast<size_t>(s) ? this->Cache.At[s] : none;
+        if (!this->Cache.Valid || this->Cache.D2.size() <= static_cast<size_t>(s) ||
+          this->Cache.D2[s].size() != In.Samples[s].size())
+        {
+          whole[s] = 1;
+          continue;
+        }
+        for (int a : at)
+          if (a < 0 || static_cast<size_t>(a) >= nt || !same[a])
           {
-            changed[s].Build(pts, changedTris[s]);
-            changedNear[s].Build(In.Samples[s], 2.0 * In.Eps, pts, changedTris[s]);
+            whole[s] = 1;
+            break;
           }
+      }
+    });
+    vtkSMPTools::For(0, nSheets, [&](vtkIdType s0, vtkIdType s1) {
+      for (vtkIdType s = s0; s < s1; ++s)
+      {
+        if (whole[s])
+          cur[s].Build(pts, tris[s]);
+        if (this->Cache.Valid && !changedTris[s].empty())
+        {
+          changed[s].Build(pts, changedTris[s]);
+          changedNear[s].Build(In.Samples[s], 2.0 * In.Eps, pts, changedTris[s]);
+        }
+      }
     });
   }
   MeasureCache& cache = this->Cache;
@@ -120,7 +141,9 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
       d2.assign(samples.size(), 0.0);
       at.assign(samples.size(), -1);
     }
-    vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType i0, vtkIdType i1) {
+    // Nothing of this sheet changed, and no sample's nearest triangle: every distance stays.
+    const bool keep = known && !whole[s] && changedIds[s].empty();
+    vtkSMPTools::For(0, keep ? 0 : static_cast<vtkIdType>(samples.size()), [&](vtkIdType i0, vtkIdType i1) {
       double cl[3];
       vtkIdType a;
       for (vtkIdType i = i0; i < i1; ++i)
