@@ -51,7 +51,6 @@ double HausdorffMeasure::ToBothRegions(
 double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, double& upperBound,
   std::vector<std::pair<int, Vec3>>& insert, std::vector<int>& edgeOf)
 {
-  static const std::vector<int> none;
   edgeOf.clear();
   // The regions' boundaries of this state of the surface, built on demand.
   this->Regions.clear();
@@ -93,14 +92,14 @@ double HausdorffMeasure::Measure(const Surface& S, const amRemesh::Input& In, do
     vtkSMPTools::For(0, nSheets, [&](vtkIdType s0, vtkIdType s1) {
       for (vtkIdType s = s0; s < s1; ++s)
       {
-        const std::vector<int>& at = this->Cache.At.size() > static_cast<size_t>(s) ? this->Cache.At[s] : none;
+        // D2 and At are sized together: a sheet with distances known has its nearest triangles.
         if (!this->Cache.Valid || this->Cache.D2.size() <= static_cast<size_t>(s) ||
           this->Cache.D2[s].size() != In.Samples[s].size())
         {
           whole[s] = 1;
           continue;
         }
-        for (int a : at)
+        for (int a : this->Cache.At[s])
           if (a < 0 || static_cast<size_t>(a) >= nt || !same[a])
           {
             whole[s] = 1;
