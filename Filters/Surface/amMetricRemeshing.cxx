@@ -92,6 +92,11 @@ int amMetricRemeshing::RequestData(
   amRemesh::Remesher r;
   r.Setup(mesh, tensors, this->Tolerance);
   r.KeepVolumes = this->PreserveVolumes != 0;
+  // The remesher keeps what it needs of the input (its points, interfaces and curves): the
+  // input's topology and the tensors (a quarter of the memory on a many-label input) go now.
+  const bool labelled = !mesh.Labels.empty();
+  mesh = amSurfaceMesh();
+  std::vector<Mat3>().swap(tensors);
   this->UpdateProgress(0.05);
   const amRemesh::Remesher::Result result =
     r.Run(this->NumberOfIterations, [this](double fraction) { this->UpdateProgress(fraction); });
@@ -133,7 +138,7 @@ int amMetricRemeshing::RequestData(
   output->SetPolys(polys);
   output->GetFieldData()->PassData(input->GetFieldData());
   output->GetCellData()->AddArray(distance);
-  if (!mesh.Labels.empty())
+  if (labelled)
   {
     output->GetCellData()->AddArray(labels);
     // Per interface (lower label, higher label, its largest distance): where the bound is missed

@@ -53,6 +53,7 @@ void Input::Build(const amSurfaceMesh& mesh, const std::vector<Triangle>& triang
             out.push_back(P[t[k]]);
           }
       }
+      out.shrink_to_fit(); // kept for the whole run: no doubling's slack
     }
   };
   vtkSMPTools::For(0, 2, 1, [&](vtkIdType j0, vtkIdType j1) {

@@ -32,6 +32,7 @@ void Remesher::Setup(const amSurfaceMesh& mesh, const std::vector<Mat3>& metric,
   // One sheet per interface: per pair of labels (unordered).
   std::map<std::pair<int, int>, int> sheetIds;
   const bool labelled = !mesh.Labels.empty();
+  S.T.reserve(static_cast<size_t>(nt));
   for (vtkIdType t = 0; t < nt; ++t)
   {
     Triangle tri;
