@@ -8,7 +8,7 @@ namespace amTetraImprove
 /// Edge removal: replaces the tetrahedra around (u, v) by the best triangulation of their ring.
 bool RemoveEdge(Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std::vector<int>& ring)
 {
-  if (m.FixedEdges.count(EdgeKey(u, v)) || !m.Ring(u, v, tets, ring))
+  if (m.FixedEdges.count(EdgeKey(u, v)) || !m.Ring(u, v, tets, ring, static_cast<size_t>(std::max(maxRing, 0))))
     return false;
   const int n = static_cast<int>(ring.size());
   if (n > maxRing)

@@ -2,15 +2,18 @@
 
 namespace amTetraImprove
 {
-bool Mesh::Ring(int u, int v, std::vector<int>& tets, std::vector<int>& ring) const
+bool Mesh::Ring(int u, int v, std::vector<int>& tets, std::vector<int>& ring, size_t most) const
 {
   tets.clear();
   ring.clear();
-  std::vector<int> around;
+  // Kept between calls: the improvement asks for rings millions of times.
+  thread_local std::vector<int> around;
+  thread_local std::vector<char> used;
+  around.clear();
   for (int t : this->Inc[u])
     if (this->Has(t, v))
       around.push_back(t);
-  if (around.size() < 3)
+  if (around.size() < 3 || around.size() > most)
     return false;
   auto others = [&](int t, int& a, int& b) {
     a = b = -1;
@@ -24,7 +27,7 @@ bool Mesh::Ring(int u, int v, std::vector<int>& tets, std::vector<int>& ring) co
     std::swap(a, b);
   tets.push_back(around[0]);
   ring.push_back(a);
-  std::vector<char> used(around.size(), 0);
+  used.assign(around.size(), 0);
   used[0] = 1;
   int current = b;
   while (current != a)

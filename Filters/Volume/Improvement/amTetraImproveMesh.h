@@ -156,8 +156,10 @@ public:
   }
 
   /// The tetrahedra around edge (u, v), ordered, with their ring w such that every tetrahedron
-  /// (u, v, w[i], w[i+1]) is positively oriented. False when the ring is not closed.
-  bool Ring(int u, int v, std::vector<int>& tets, std::vector<int>& ring) const;
+  /// (u, v, w[i], w[i+1]) is positively oriented. False when the ring is not closed, or has more
+  /// than 'most' tetrahedra.
+  bool Ring(int u, int v, std::vector<int>& tets, std::vector<int>& ring,
+    size_t most = std::numeric_limits<size_t>::max()) const;
 };
 
 /// Edge removal: replaces the tetrahedra around (u, v) by the best triangulation of their ring.
@@ -167,8 +169,10 @@ bool Flip23(Mesh& m, int t, int i);
 /// The star of v as it is: its worst objective and the sum of the inverse objectives.
 void CurrentStar(const Mesh& m, int v, double& worst, double& sum);
 /// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
-/// (inf when a tetrahedron inverts).
-void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ);
+/// (inf when a tetrahedron inverts); it stops early, with a worst under 'floor' or a sum at
+/// least 'ceiling', once the star is surely worse than either.
+void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ,
+  double floor = -std::numeric_limits<double>::infinity(), double ceiling = std::numeric_limits<double>::infinity());
 /// Moves v to x and updates its star's objectives.
 void MoveVertex(Mesh& m, int v, const double* x);
 /// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's

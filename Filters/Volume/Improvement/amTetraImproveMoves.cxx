@@ -18,8 +18,10 @@ void CurrentStar(const Mesh& m, int v, double& worst, double& sum)
 }
 
 /// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
-/// (inf when a tetrahedron inverts).
-void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ)
+/// (inf when a tetrahedron inverts). The evaluation stops at the first tetrahedron worse than
+/// 'floor' or once the sum reaches 'ceiling' (every term is positive, so it only grows): then the
+/// candidate is refused whatever the rest of the star, and most candidates are.
+void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ, double floor, double ceiling)
 {
   worst = std::numeric_limits<double>::infinity();
   sumQ = 0;
@@ -36,6 +38,8 @@ void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& s
       return;
     }
     sumQ += 1.0 / q;
+    if (q < floor || sumQ >= ceiling)
+      return;
   }
 }
 
@@ -95,7 +99,7 @@ bool Smooth(Mesh& m, int v)
       for (int d = 0; d < 3; ++d)
         y[d] = x[d] + f * (target[d] - x[d]);
       double worst, sum;
-      StarQuality(m, v, y, worst, sum);
+      StarQuality(m, v, y, worst, sum, worst0, bestSum);
       if (worst >= worst0 && sum < bestSum)
       {
         bestSum = sum;
@@ -166,7 +170,7 @@ bool Climb(Mesh& m, int v, double radius, double goal)
       if (radius < std::numeric_limits<double>::infinity() && !(StarDeviation(m, v, y) <= radius))
         continue;
       double worst, sum;
-      StarQuality(m, v, y, worst, sum);
+      StarQuality(m, v, y, worst, sum, worst0 + 1e-12);
       if (worst > worst0 + 1e-12)
       {
         MoveVertex(m, v, y);
