@@ -25,13 +25,23 @@ using MaskImage = itk::Image<unsigned char, D>;
 struct Parameters
 {
   double Propagation, Curvature, Edge, RMS;
+  bool StopOnStall = true; // see Evolve
 };
 
+/// Iterations between two counts of the inside: the evolution stops when two counts in a row
+/// are equal.
+constexpr unsigned StallWindow = 25;
+
 /// Evolve a threshold level set (ITK's ThresholdSegmentationLevelSetImageFilter) from phi0
-/// (negative inside) on 'feature'; returns the inside mask.
+/// (negative inside) on 'feature'; returns the inside mask. Besides ITK's own stop (the RMS
+/// change under p.RMS), the evolution stops once the inside has kept its voxel count for
+/// StallWindow iterations: on a noisy image the front settles into a cycle of two states with the
+/// same inside whose RMS change stays above any useful bound, and would run to 'iterations'.
+/// p.StopOnStall false leaves ITK's stops alone. 'elapsed' (may be null) is added the
+/// iterations run.
 template<unsigned D>
 typename MaskImage<D>::Pointer Evolve(FloatImage<D>* feature, FloatImage<D>* phi0, double lo, double hi,
-  const Parameters& p, int iterations, const std::function<void(double)>& progress)
+  const Parameters& p, int iterations, const std::function<void(double)>& progress, long long* elapsed = nullptr)
 {
   using Filter = itk::ThresholdSegmentationLevelSetImageFilter<FloatImage<D>, FloatImage<D>>;
   auto ls = Filter::New();
@@ -46,7 +56,23 @@ typename MaskImage<D>::Pointer Evolve(FloatImage<D>* feature, FloatImage<D>* phi
   ls->SetNumberOfIterations(iterations);
   if (progress)
     ls->AddObserver(itk::ProgressEvent(), [&](const itk::EventObject&) { progress(ls->GetProgress()); });
+  size_t lastInside = 0;
+  bool counted = false;
+  ls->AddObserver(itk::IterationEvent(), [&](const itk::EventObject&) {
+    const unsigned done = ls->GetElapsedIterations();
+    if (!p.StopOnStall || done == 0 || done % StallWindow != 0)
+      return;
+    const float* phi = ls->GetOutput()->GetBufferPointer();
+    const size_t n = ls->GetOutput()->GetLargestPossibleRegion().GetNumberOfPixels();
+    const size_t inside = static_cast<size_t>(std::count_if(phi, phi + n, [](float v) { return v <= 0.0f; }));
+    if (counted && inside == lastInside)
+      ls->SetNumberOfIterations(done); // ITK's Halt() ends the loop at the next check
+    lastInside = inside;
+    counted = true;
+  });
   ls->Update();
+  if (elapsed)
+    *elapsed += ls->GetElapsedIterations();
   auto mask = MaskImage<D>::New();
   mask->SetRegions(ls->GetOutput()->GetLargestPossibleRegion());
   mask->CopyInformation(ls->GetOutput());

@@ -18,7 +18,9 @@
  *    curvature cannot collapse it at coarse spacing), and it evolves as a
  *    threshold level set (ITK ThresholdSegmentationLevelSetImageFilter): it expands where the
  *    smoothed intensity is in the interval, is held back elsewhere, and is kept smooth by
- *    CurvatureScaling, until NumberOfIterations or an RMS change below MaximumRMSError;
+ *    CurvatureScaling, until NumberOfIterations, an RMS change below MaximumRMSError, or 25
+ *    iterations that leave the number of voxels inside unchanged (on a noisy scan the front
+ *    settles into a two-state cycle whose RMS change never falls below the bound);
  * 4. with RefineToHalfContrast, the intensity of a 2-voxel shell outside the contour (beyond
  *    twice SmoothingSigma) gives the
  *    surroundings' level; the threshold facing it moves half-way (the partial-volume boundary)

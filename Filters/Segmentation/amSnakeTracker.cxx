@@ -112,6 +112,7 @@ bool amSnakeTracker::Segment(
   this->Progress = progress;
   this->Abort = abort;
   this->Error.clear();
+  this->Elapsed = 0;
   double tlo = this->P.LowerThreshold, thi = this->P.UpperThreshold;
   if (this->P.AutomaticThresholds)
   {
@@ -208,14 +209,16 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
   auto feature = NewImage<FloatImage<3>>(rd, this->Spacing);
   std::copy(this->Feature.begin(), this->Feature.end(), feature->GetBufferPointer());
   const Parameters& p = this->P;
-  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError };
+  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
+    p.StopOnStall };
   std::function<void(double)> progress;
   if (this->Progress)
     progress = [this, pa, pb](double f) { this->Progress(pa + pb * f); };
   try
   {
     auto mask = Evolve<3>(
-      feature, phi, lo, hi, lsp, initial ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations, progress);
+      feature, phi, lo, hi, lsp, initial ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations, progress,
+      &this->Elapsed);
     std::copy(mask->GetBufferPointer(), mask->GetBufferPointer() + this->InsideMask.size(), this->InsideMask.begin());
   }
   catch (const itk::ExceptionObject& e)

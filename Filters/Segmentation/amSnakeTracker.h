@@ -51,6 +51,8 @@ public:
     double LowerThreshold = 100.0, UpperThreshold = 600.0;
     double PropagationScaling = 1.0, CurvatureScaling = 1.0, EdgeWeight = 0.0, MaximumRMSError = 0.002;
     int NumberOfIterations = 800;
+    // Stop a level set once its inside keeps its size (amSnakeLevelSet::Evolve), not only on RMS.
+    bool StopOnStall = true;
     double MaximumAreaChange = 2.0;
     double MinimumSliceArea = 4.0; // mm^2
     bool RefineToHalfContrast = true;
@@ -82,9 +84,12 @@ public:
   /// The intensity interval used at the end.
   double Lower() const { return this->Low; }
   double Upper() const { return this->High; }
+  /// The level-set iterations the last Segment ran, over all its evolutions.
+  long long Iterations() const { return this->Elapsed; }
   std::string Error;
 
 private:
+  long long Elapsed = 0;
   bool Run(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb);
   bool RunThreeD(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb);
   bool RunSlices(double lo, double hi);

@@ -17,7 +17,8 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
   const int* rd = this->Size;
   const float* fv = this->Feature.data();
   const Parameters& p = this->P;
-  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError };
+  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
+    p.StopOnStall };
   const int ax = p.SliceAxis, u = ax == 0 ? 1 : 0, v = ax == 2 ? 1 : 2;
   const int nu = rd[u], nv = rd[v], ns = rd[ax];
   const double pixelArea = this->Spacing[u] * this->Spacing[v];
@@ -100,7 +101,7 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
         slo = m - half;
         shi = m + half;
       }
-      mask = Evolve<2>(sliceFeature(s0), phi, slo, shi, lsp, iterations2, nullptr);
+      mask = Evolve<2>(sliceFeature(s0), phi, slo, shi, lsp, iterations2, nullptr, &this->Elapsed);
       KeepOverlapping<2>(mask, ballMask);
       if (this->P.AdaptiveSliceStatistics && this->P.AutomaticThresholds && this->P.RefineToHalfContrast)
       {
@@ -171,7 +172,7 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
               shi = m + half;
             }
           }
-          next = Evolve<2>(feature2, SignedDistance<2>(start), slo, shi, lsp, iterations2, nullptr);
+          next = Evolve<2>(feature2, SignedDistance<2>(start), slo, shi, lsp, iterations2, nullptr, &this->Elapsed);
           if (this->P.AdaptiveSliceStatistics && this->P.AutomaticThresholds && this->P.RefineToHalfContrast)
           {
             KeepOverlapping<2>(next, previous);

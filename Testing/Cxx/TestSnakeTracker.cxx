@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
 
 namespace
 {
@@ -109,4 +111,37 @@ TEST(SnakeTracker, AbortStopsSliceBySlice)
   tracker.MeasureSeeds({ ball.Centre });
   EXPECT_FALSE(tracker.Segment(200.0, nullptr, []() { return true; }));
   EXPECT_TRUE(tracker.Error.empty()); // aborted, not failed
+}
+
+// On a noisy ball the front settles into a cycle of two states whose RMS change stays above
+// MaximumRMSError: ITK's stop alone runs every iteration; the stall stop ends the evolution once
+// the inside keeps its size, with the same inside.
+TEST(SnakeTracker, StopsWhenTheInsideNoLongerChanges)
+{
+  Ball ball;
+  std::mt19937 random(7);
+  std::normal_distribution<float> noise(0.0f, 30.0f);
+  for (float& v : ball.Values)
+    v += noise(random);
+  auto segment = [&](bool stall, amSnakeTracker& tracker) {
+    tracker.SetRegion(ball.Lo, ball.Size, ball.Values);
+    tracker.MeasureSeeds({ ball.Centre });
+    EXPECT_TRUE(tracker.Segment(300.0, nullptr, nullptr)) << stall << tracker.Error;
+  };
+  amSnakeTracker::Parameters p;
+  p.NumberOfIterations = 400;
+  p.StopOnStall = false;
+  amSnakeTracker full(p, ball.Spacing);
+  segment(false, full);
+  p.StopOnStall = true;
+  amSnakeTracker stopped(p, ball.Spacing);
+  segment(true, stopped);
+  std::printf("iterations: %lld with ITK's stop alone, %lld with the stall stop; %zu voxels inside\n",
+    full.Iterations(), stopped.Iterations(), Count(stopped.Inside()));
+  // The ball's first evolution runs to the limit without the stall stop (the refinement's, at
+  // most 200, too), and stops early with it.
+  EXPECT_GE(full.Iterations(), p.NumberOfIterations);
+  EXPECT_LT(stopped.Iterations(), full.Iterations() / 2);
+  EXPECT_EQ(stopped.Inside(), full.Inside());
+  EXPECT_NEAR(static_cast<double>(Count(stopped.Inside())) / ball.Volume(), 1.0, 0.15);
 }
