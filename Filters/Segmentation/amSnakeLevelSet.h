@@ -29,8 +29,9 @@ struct Parameters
 };
 
 /// Iterations between two counts of the inside: the evolution stops when two counts in a row
-/// are equal.
-constexpr unsigned StallWindow = 25;
+/// are equal. Even: a front cycling between two states is compared with itself, and stops in the
+/// state an even iteration limit would have ended in.
+constexpr unsigned StallWindow = 20;
 
 /// Evolve a threshold level set (ITK's ThresholdSegmentationLevelSetImageFilter) from phi0
 /// (negative inside) on 'feature'; returns the inside mask. Besides ITK's own stop (the RMS

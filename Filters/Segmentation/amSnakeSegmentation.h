@@ -18,7 +18,7 @@
  *    curvature cannot collapse it at coarse spacing), and it evolves as a
  *    threshold level set (ITK ThresholdSegmentationLevelSetImageFilter): it expands where the
  *    smoothed intensity is in the interval, is held back elsewhere, and is kept smooth by
- *    CurvatureScaling, until NumberOfIterations, an RMS change below MaximumRMSError, or 25
+ *    CurvatureScaling, until NumberOfIterations, an RMS change below MaximumRMSError, or 20
  *    iterations that leave the number of voxels inside unchanged (on a noisy scan the front
  *    settles into a two-state cycle whose RMS change never falls below the bound);
  * 4. with RefineToHalfContrast, the intensity of a 2-voxel shell outside the contour (beyond
