@@ -141,11 +141,15 @@ std::vector<TriangleBox> Near(const std::vector<TriangleBox>& few, const std::ve
       for (long long j = cell(b.min_coord(1), 1); j <= cell(b.max_coord(1), 1); ++j)
         for (long long i = cell(b.min_coord(0), 0); i <= cell(b.max_coord(0), 0); ++i)
           cells.insert(key(i, j, k));
-  // A hash collision only keeps a box that could have gone: the sweep decides.
+  // A hash collision only keeps a box that could have gone: the sweep decides. So does a box
+  // over more than 64 cells (a long sliver of a triangle), kept without a look-up per cell.
   std::vector<TriangleBox> near;
   for (const TriangleBox& b : all)
   {
-    bool reaches = false;
+    double cellsOf = 1;
+    for (int d = 0; d < 3; ++d)
+      cellsOf *= static_cast<double>(cell(b.max_coord(d), d) - cell(b.min_coord(d), d) + 1);
+    bool reaches = !(cellsOf <= 64);
     for (long long k = cell(b.min_coord(2), 2); k <= cell(b.max_coord(2), 2) && !reaches; ++k)
       for (long long j = cell(b.min_coord(1), 1); j <= cell(b.max_coord(1), 1) && !reaches; ++j)
         for (long long i = cell(b.min_coord(0), 0); i <= cell(b.max_coord(0), 0) && !reaches; ++i)
