@@ -16,7 +16,6 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstdint>
 #include <sstream>
