@@ -97,41 +97,24 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
   // Fixed: the given faces and the mesh's own boundary (faces of one tetrahedron only).
   for (const Tri& f : fixedFaces)
     m.FixedFaces.insert(Sorted(f[0], f[1], f[2]));
-  if (m.Inc.size() < (size_t(1) << 21))
   {
-    // A face of one tetrahedron only: every face as one sorted 63-bit key, sorted (a hash map
-    // of four million faces took seconds), the keys seen once kept.
-    std::vector<uint64_t> keys;
-    keys.reserve(4 * tets.size());
+    // A face of one tetrahedron only: every face sorted, then the faces seen once kept (a hash
+    // map of four million faces took seconds).
+    std::vector<Tri> faces;
+    faces.reserve(4 * tets.size());
     for (const Tet& t : tets)
       for (int i = 0; i < 4; ++i)
-      {
-        const Tri f = Sorted(t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]);
-        keys.push_back((static_cast<uint64_t>(f[0]) << 42) | (static_cast<uint64_t>(f[1]) << 21) | f[2]);
-      }
-    std::sort(keys.begin(), keys.end());
-    const uint64_t mask = (uint64_t(1) << 21) - 1;
-    for (size_t i = 0; i < keys.size();)
+        faces.push_back(Sorted(t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]));
+    std::sort(faces.begin(), faces.end());
+    for (size_t i = 0; i < faces.size();)
     {
       size_t j = i + 1;
-      while (j < keys.size() && keys[j] == keys[i])
+      while (j < faces.size() && faces[j] == faces[i])
         ++j;
       if (j == i + 1)
-        m.FixedFaces.insert({ static_cast<int>(keys[i] >> 42), static_cast<int>((keys[i] >> 21) & mask),
-          static_cast<int>(keys[i] & mask) });
+        m.FixedFaces.insert(faces[i]);
       i = j;
     }
-  }
-  else
-  {
-    std::unordered_map<Tri, int, TriHash> count;
-    count.reserve(tets.size() * 3);
-    for (const Tet& t : tets)
-      for (int i = 0; i < 4; ++i)
-        ++count[Sorted(t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4])];
-    for (const auto& kv : count)
-      if (kv.second == 1)
-        m.FixedFaces.insert(kv.first);
   }
   auto fixEdges = [&m]() {
     m.FixedEdges.clear();
