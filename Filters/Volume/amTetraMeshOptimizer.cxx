@@ -54,7 +54,7 @@ std::string amTetraMeshOptimizer::Report::Describe() const
   std::ostringstream os;
   os << "worst Q " << this->WorstBefore << " -> " << this->WorstAfter << ", mean " << this->MeanBefore << " -> "
      << this->MeanAfter << " (" << this->EdgeRemovals << " edge removals, " << this->Flips23 << " 2-3 flips, "
-     << this->EdgeSplits << " edge splits, " << this->Moves << " vertex moves";
+     << this->EdgeSplits << " edge splits, " << this->FaceSplits << " face splits, " << this->Moves << " vertex moves";
   if (this->SurfaceMoves + this->Relabels + this->SurfaceSplits > 0)
     os << "; around slivers " << this->SurfaceMoves << " surface vertex slides, " << this->Relabels
        << " region changes, " << this->SurfaceSplits << " surface edge splits: the surface moved by "
@@ -177,6 +177,15 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
         if (done)
         {
           ++report.EdgeSplits;
+          ++changes;
+          continue;
+        }
+        // A sliver with three faces on the surface has no free edge: its free face is split.
+        for (int i = 0; i < 4 && !done; ++i)
+          done = SplitFace(m, Sorted(x[(i + 1) % 4], x[(i + 2) % 4], x[(i + 3) % 4]), split);
+        if (done)
+        {
+          ++report.FaceSplits;
           ++changes;
           continue;
         }

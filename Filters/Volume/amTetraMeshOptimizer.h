@@ -10,7 +10,8 @@
  *   as in Shewchuk, "Two discrete optimization algorithms for the topological improvement of
  *   tetrahedral meshes", 2002), for rings of up to MaxRing vertices; for the worst elements
  *   (Q above SplitQuality) that no flip mends, such as a sliver whose four vertices lie on the
- *   surface, the split of a free edge whose new vertex then moves to the best place found;
+ *   surface, the split of a free edge, else of a free face (a sliver with three faces on the
+ *   surface has no free edge), whose new vertex then moves to the best place found;
  * - geometric: smoothing of free vertices (candidate positions: the centroid of the star's
  *   centroids, weighted by volume, and the neighbours' mean), kept when the star's worst element
  *   is not worse and the mean of its inverse objectives better; then a local search that moves each vertex of a bad
@@ -50,10 +51,11 @@ public:
     // angle, or a surface triangle lies almost flat on another, no element there can be better
     // than the surface allows. When MaximumSurfaceDeviation (mm) is positive, the surface may
     // move that far to free them (amTetraImproveSlivers.cxx): their surface vertices slide, those
-    // still bad take the region across a surface face (or leave the mesh at its boundary), the
-    // longest surface edge of the rest is split at its midpoint, and the flips and moves run
-    // again around them, for up to SliverRounds rounds. The deviation is measured (two-sided,
-    // against the surface as it was) and kept within the bound.
+    // still bad take the region across a surface face (or leave the mesh at its boundary), a
+    // surface edge of the rest (where its dihedral angle is smallest, else the longest) is split
+    // at its midpoint, and the flips and moves run again around them, for up to SliverRounds
+    // rounds. The deviation is measured (two-sided, against the surface as it was) and kept
+    // within the bound; up to four budgets are tried and the one leaving fewest slivers kept.
     double SliverQuality = 10;
     double SliverDihedral = 10;
     double MaximumSurfaceDeviation = 0;
@@ -62,7 +64,7 @@ public:
   struct Report
   {
     double WorstBefore = 0, WorstAfter = 0, MeanBefore = 0, MeanAfter = 0;
-    long Flips23 = 0, EdgeRemovals = 0, EdgeSplits = 0, Moves = 0;
+    long Flips23 = 0, EdgeRemovals = 0, EdgeSplits = 0, FaceSplits = 0, Moves = 0;
     long Relabels = 0;             // elements that changed region (or left the mesh)
     long SurfaceSplits = 0;        // surface edges split at their midpoints near slivers
     long SurfaceMoves = 0;         // slides of surface vertices

@@ -3,9 +3,9 @@
  * @brief   The mesh that amTetraMeshOptimizer improves, and its local operations (not wrapped).
  *
  * One operation per file: amTetraImproveFlips.cxx (edge removal, 2-3 flip),
- * amTetraImproveMoves.cxx (smoothing, local search), amTetraImproveInsert.cxx (edge split,
- * vertex insertion in a cavity). Each is accepted only when it makes the worst element it
- * touches better; none crosses a fixed face or moves a fixed vertex.
+ * amTetraImproveMoves.cxx (smoothing, local search), amTetraImproveInsert.cxx (free edge split),
+ * amTetraImproveFaceSplit.cxx (free face split). Each is accepted only when it makes the worst
+ * element it touches better; none crosses a fixed face or moves a fixed vertex.
  *
  * The sliver phase (amTetraImproveSlivers.cxx), where the surface may move within a budget:
  * surface vertex slides (Climb with a radius, StarDeviation), amTetraImproveRelabel.cxx (a
@@ -188,6 +188,9 @@ bool Climb(Mesh& m, int v, double radius = std::numeric_limits<double>::infinity
 /// Splits the free edge (u, v) at its midpoint, then moves the new vertex where its star is best.
 /// Undone unless every element around the new vertex reaches 'goal'.
 bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::vector<int>& ring);
+/// Splits the free face f (2-6: both tetrahedra on it in three), then moves the new vertex where
+/// its star is best. Undone unless every element around it reaches 'goal'.
+bool SplitFace(Mesh& m, const Tri& f, double goal);
 /// Gives tetrahedron t the region across one of its fixed faces (removes it at the mesh's
 /// boundary) when that moves the surface by at most maxDeviation; the faces it shared with
 /// that region leave FixedFaces and those with its own region join (FixedEdges is not updated).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace amTetraImprove
 {
@@ -27,28 +28,62 @@ bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options
 
 namespace
 {
-/// The longest surface edge of tetrahedron t, {-1, -1} when none.
-std::pair<int, int> LongestFixedEdge(const Mesh& m, int t)
+/// The surface edges of tetrahedron t to split, best first: the one where its dihedral angle is
+/// smallest (its midpoint, on the surface, may then slide where the surface is flat and turn
+/// that edge), then the longest.
+std::vector<std::pair<int, int>> FixedEdgesToSplit(const Mesh& m, int t)
 {
-  static const int edges[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
-  std::pair<int, int> best{ -1, -1 };
-  double longest = 0;
+  using G = amTetraGeometry;
+  static const int edges[6][4] = { { 0, 1, 2, 3 }, { 0, 2, 1, 3 }, { 0, 3, 1, 2 }, { 1, 2, 0, 3 }, { 1, 3, 0, 2 },
+    { 2, 3, 0, 1 } };
+  const Tet& x = m.T[t];
+  std::pair<int, int> sharpest{ -1, -1 }, longest{ -1, -1 };
+  double smallestCos = 2, longestLength = 0;
   for (const auto& e : edges)
   {
-    const int a = m.T[t][e[0]], b = m.T[t][e[1]];
-    const double l = amTetraGeometry::Norm(amTetraGeometry::Sub(m.X(a), m.X(b)));
-    if (m.FixedEdges.count(EdgeKey(a, b)) && l > longest)
+    const int a = x[e[0]], b = x[e[1]];
+    if (!m.FixedEdges.count(EdgeKey(a, b)))
+      continue;
+    const Vec ab = G::Sub(m.X(b), m.X(a));
+    const Vec n1 = G::Cross(ab, G::Sub(m.X(x[e[2]]), m.X(a))), n2 = G::Cross(ab, G::Sub(m.X(x[e[3]]), m.X(a)));
+    const double c = -G::Dot(n1, n2) / (G::Norm(n1) * G::Norm(n2) + 1e-300); // minus the dihedral's cosine
+    if (c < smallestCos)
     {
-      longest = l;
-      best = { a, b };
+      smallestCos = c;
+      sharpest = { a, b };
+    }
+    if (G::Norm(ab) > longestLength)
+    {
+      longestLength = G::Norm(ab);
+      longest = { a, b };
     }
   }
-  return best;
+  std::vector<std::pair<int, int>> order;
+  if (sharpest.first >= 0)
+    order.push_back(sharpest);
+  if (longest != sharpest)
+    order.push_back(longest);
+  return order;
+}
+
+/// How far the vertices of x have moved from where the surface was (the most of the four): the
+/// surface on its faces has moved at most that far.
+double Moved(const Mesh& m, const Tet& x)
+{
+  double most = 0;
+  for (int v : x)
+  {
+    const double* o = &m.Origin[3 * static_cast<size_t>(v)];
+    if (!std::isnan(o[0]))
+      most = std::max(most, amTetraGeometry::Norm(amTetraGeometry::Sub(m.X(v), o)));
+  }
+  return most;
 }
 
 /// The rounds of one attempt with the given budget (mm): slivers' surface vertices slide (three
-/// quarters of it), slivers still bad change region (the rest), the longest surface edge of those
-/// left is split, then the flips and moves run again.
+/// quarters of it), slivers still bad change region (once each, within what the budget leaves
+/// where their vertices slid), a surface edge of those left is split, then the flips and moves
+/// run again.
 void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budget, amTetraMeshOptimizer::Report& report,
   const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
 {
@@ -56,7 +91,8 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
   for (size_t t = 0; t < m.T.size(); ++t)
     if (m.Alive[t])
       ++regionCount[m.R[t]];
-  const double slide = 0.75 * budget, relabel = budget - slide;
+  const double slide = 0.75 * budget;
+  std::unordered_set<int> relabelled; // once each: a sliver handed back and forth frees nothing
   const double goal = 1.05 * SliverClear(options); // a margin: the bar is on Q and angles, the goal on the objective
   for (int round = 1; round <= options.SliverRounds; ++round)
   {
@@ -71,21 +107,23 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
             ++changes;
           }
     for (size_t t = 0; t < limit; ++t)
-      if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options) &&
-        Relabel(m, static_cast<int>(t), relabel, regionCount) >= 0)
+      if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options) && !relabelled.count(static_cast<int>(t)) &&
+        Relabel(m, static_cast<int>(t), budget - Moved(m, m.T[t]), regionCount) >= 0)
       {
+        relabelled.insert(static_cast<int>(t));
         ++report.Relabels;
         ++changes;
       }
     for (size_t t = 0; t < limit; ++t)
       if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options))
       {
-        const auto e = LongestFixedEdge(m, static_cast<int>(t));
-        if (e.first >= 0 && SplitSurfaceEdge(m, e.first, e.second) >= 0)
-        {
-          ++report.SurfaceSplits;
-          ++changes;
-        }
+        for (const auto& e : FixedEdgesToSplit(m, static_cast<int>(t)))
+          if (SplitSurfaceEdge(m, e.first, e.second) >= 0)
+          {
+            ++report.SurfaceSplits;
+            ++changes;
+            break;
+          }
       }
     if (changes == 0)
       break;
@@ -102,21 +140,62 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   m.Origin = m.P;
   // The operations bound their own displacement; together they may exceed the budget where
   // several act on one place. The deviation is measured, and the attempt is made again from the
-  // same mesh with a smaller budget until it is within MaximumSurfaceDeviation (or left undone).
+  // same mesh with another budget: smaller after one that went past MaximumSurfaceDeviation,
+  // between the two after one within it that left slivers (which slivers the rounds free
+  // depends on the budget in no simple way). The best within the bound is kept (fewest slivers,
+  // the larger budget of equals); none within it leaves the mesh as it was.
   const std::vector<double> points = m.P;
   const Mesh saved = m;
   const amTetraMeshOptimizer::Report savedReport = report;
-  double budget = options.MaximumSurfaceDeviation;
+  std::vector<double> bestPoints;
+  Mesh best(bestPoints);
+  amTetraMeshOptimizer::Report bestReport = savedReport;
+  long bestSlivers = -1;
+  const double bound = options.MaximumSurfaceDeviation;
+  double budget = bound, within = 0, past = std::numeric_limits<double>::infinity();
   for (int attempt = 0; attempt < 4; ++attempt)
   {
     Attempt(m, options, budget, report, improve, fixEdges);
     const double deviation = SurfaceDeviation(m, surfaceBefore);
-    if (deviation <= options.MaximumSurfaceDeviation)
+    long slivers = 0;
+    for (size_t t = 0; t < m.T.size(); ++t)
+      slivers += m.Alive[t] && IsSliver(m, static_cast<int>(t), options);
+    if (deviation <= bound)
     {
       report.SurfaceDeviation = deviation;
-      return;
+      if (slivers == 0)
+        return; // the first budget that frees every sliver within the bound
+      if (bestSlivers < 0 || slivers < bestSlivers)
+      {
+        bestSlivers = slivers;
+        bestPoints = m.P;
+        best.Assign(m);
+        bestReport = report;
+      }
+      within = std::max(within, budget);
     }
-    budget *= 0.9 * options.MaximumSurfaceDeviation / deviation;
+    else
+      past = std::min(past, budget);
+    if (attempt == 3)
+      break;
+    if (within == 0)
+      budget *= 0.9 * bound / deviation;
+    else if (std::isfinite(past))
+      budget = 0.5 * (within + past);
+    else
+      budget = std::min(2 * within, budget * 0.98 * bound / std::max(deviation, 1e-9 * bound));
+    m.P = points;
+    m.Assign(saved);
+    report = savedReport;
+  }
+  if (bestSlivers >= 0)
+  {
+    m.P = bestPoints;
+    m.Assign(best);
+    report = bestReport;
+  }
+  else
+  {
     m.P = points;
     m.Assign(saved);
     report = savedReport;

@@ -1,0 +1,95 @@
+// The optimizer's local operations (Filters/Volume/Improvement) on meshes small enough to follow
+// by hand.
+#include "amTetraGeometry.h"
+#include "amTetraImproveMesh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using amTetraImprove::Tet;
+
+/// Two tetrahedra on face abc: a cap (d 0.12 above the centroid of abc, its three small
+/// dihedral angles at the edges of that face) and e under it. Every vertex is fixed.
+struct Cap
+{
+  std::vector<double> Points = { 0, 0, 0, /*b*/ 2, 0, 0, /*c*/ 1, 1.7, 0, /*d*/ 1, 0.57, 0.12, /*e*/ 1.6, 1.2, -1.2 };
+  amTetraImprove::Mesh M{ Points };
+  Cap()
+  {
+    this->M.Inc.resize(5);
+    this->M.FixedVertex.assign(5, 1);
+    this->M.Dirty.assign(5, 0);
+    this->M.Add(this->Positive({ 0, 1, 2, 3 }), 7);
+    this->M.Add(this->Positive({ 0, 1, 2, 4 }), 7);
+  }
+  Tet Positive(Tet t) const
+  {
+    const double* p = this->Points.data();
+    if (amTetraGeometry::SignedVolume(p + 3 * t[0], p + 3 * t[1], p + 3 * t[2], p + 3 * t[3]) < 0)
+      std::swap(t[2], t[3]);
+    return t;
+  }
+  /// The live tetrahedra's worst objective and total volume.
+  std::pair<double, double> WorstAndVolume() const
+  {
+    double worst = 1, volume = 0;
+    for (size_t t = 0; t < this->M.T.size(); ++t)
+      if (this->M.Alive[t])
+      {
+        const Tet& x = this->M.T[t];
+        const double v = amTetraGeometry::SignedVolume(this->M.X(x[0]), this->M.X(x[1]), this->M.X(x[2]), this->M.X(x[3]));
+        EXPECT_GT(v, 0);
+        volume += v;
+        worst = std::min(worst, this->M.Q[t]);
+      }
+    return { worst, volume };
+  }
+  long Alive() const { return std::count(this->M.Alive.begin(), this->M.Alive.end(), 1); }
+};
+}
+
+// Every edge of the cap is fixed, so no edge split reaches it; its one free face, split in a 2-6,
+// gives a vertex that moves off the face into the element below, and each of the six elements
+// is better than the cap was.
+TEST(TetraImprove, SplitFaceMendsACapWithoutAFreeEdge)
+{
+  Cap cap;
+  const auto [worstBefore, volumeBefore] = cap.WorstAndVolume();
+  EXPECT_LT(worstBefore, 0.2); // Q about 6.9
+  ASSERT_TRUE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 2), 0.2));
+  EXPECT_EQ(cap.Alive(), 6);
+  EXPECT_EQ(cap.M.Inc.size(), 6u);
+  EXPECT_EQ(cap.M.Inc[5].size(), 6u); // the new vertex is in all six
+  EXPECT_LT(cap.Points[3 * 5 + 2], 0.0); // below the face, towards e
+  const auto [worstAfter, volumeAfter] = cap.WorstAndVolume();
+  EXPECT_GE(worstAfter, 0.2);
+  EXPECT_NEAR(volumeAfter, volumeBefore, 1e-12);
+  for (size_t t = 0; t < cap.M.T.size(); ++t)
+    if (cap.M.Alive[t])
+      EXPECT_EQ(cap.M.R[t], 7);
+}
+
+// A goal the split cannot reach leaves the two elements as they were; a fixed face is never split.
+TEST(TetraImprove, SplitFaceUndoneBelowItsGoalAndNeverOnAFixedFace)
+{
+  Cap cap;
+  const auto [worstBefore, volumeBefore] = cap.WorstAndVolume();
+  EXPECT_FALSE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 2), 0.9));
+  EXPECT_EQ(cap.Alive(), 2);
+  EXPECT_TRUE(cap.M.Inc[5].empty());
+  const auto [worstAfter, volumeAfter] = cap.WorstAndVolume();
+  EXPECT_DOUBLE_EQ(worstAfter, worstBefore);
+  EXPECT_DOUBLE_EQ(volumeAfter, volumeBefore);
+
+  cap.M.FixedFaces.insert(amTetraImprove::Sorted(0, 1, 2));
+  EXPECT_FALSE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 2), 0.2));
+  EXPECT_EQ(cap.Alive(), 2);
+  // A face on one element only (the mesh's boundary) has nothing to split into.
+  EXPECT_FALSE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 3), 0.2));
+}
