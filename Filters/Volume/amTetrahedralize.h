@@ -106,8 +106,9 @@ public:
 
   ///@{
   /// Improve the elements after TetGen (default on): 2-3 flips and edge removals that make the
-  /// worst element they touch better, smoothing and local search on the vertices that are not on
-  /// the surface (amTetraMeshOptimizer). The surface and interface triangles stay exactly as
+  /// worst element they touch better, for the worst elements no flip mends the split of a free
+  /// edge or face, smoothing and local search on the vertices that are not on the surface
+  /// (amTetraMeshOptimizer). The surface and interface triangles stay exactly as
   /// they are, and every tetrahedron keeps its region.
   vtkSetMacro(ImproveQuality, vtkTypeBool);
   vtkGetMacro(ImproveQuality, vtkTypeBool);
@@ -129,7 +130,9 @@ public:
   /// moves leave above Q 10 or below 10 degrees, surface vertices slide, such an element takes
   /// the region across its surface face, or a surface edge is split at its midpoint; the
   /// two-sided Hausdorff distance between the surface before and after is measured and kept
-  /// within this bound (SurfaceDeviation). The triangles of output port 1 are then the mesh's
+  /// within this bound (SurfaceDeviation). Which slivers those rounds free depends on how far
+  /// each operation may move the surface: up to four such budgets within the bound are tried
+  /// and the result with the fewest slivers kept. The triangles of output port 1 are then the mesh's
   /// faces anew: those that remain keep their cell data, new ones have SourceTriangle -1. The
   /// mesh's surface is thus within the remeshing's Hausdorff distance plus SurfaceDeviation of
   /// the label surface.
