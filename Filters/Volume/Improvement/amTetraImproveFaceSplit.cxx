@@ -1,14 +1,15 @@
 #include "amTetraImproveMesh.h"
 
-#include <limits>
+#include <algorithm>
 
 namespace amTetraImprove
 {
-/// Splits the free face f (a 2-6 split: both tetrahedra on it in three), then moves the new vertex where its star is best. A sliver with three
-/// faces on the surface has every edge fixed, so no edge split reaches it; its one free face
-/// does. The new vertex takes the place of the face's corners in turn, so the six tetrahedra
-/// keep the orientation of the two they replace. Undone unless every element around the new
-/// vertex is better than the worst of the two and reaches 'goal'.
+/// Splits the free face f (a 2-6 split: both tetrahedra on it in three), then moves the new
+/// vertex where its star is best. A sliver with three faces on the surface has every edge fixed,
+/// so no edge split reaches it; its one free face does. The new vertex takes the place of the
+/// face's corners in turn, so the six tetrahedra keep the orientation of the two they replace.
+/// Undone unless every element around the new vertex is better than the worst of the two and
+/// reaches 'goal'.
 bool SplitFace(Mesh& m, const Tri& f, double goal)
 {
   if (m.FixedFaces.count(f))
@@ -25,7 +26,7 @@ bool SplitFace(Mesh& m, const Tri& f, double goal)
     centroid[k] = (m.X(f[0])[k] + m.X(f[1])[k] + m.X(f[2])[k]) / 3.0;
   const int w = m.AddPoint(centroid);
   const int region = m.R[t];
-  const Tet before[2] = { m.T[t], m.T[s] };
+  const std::vector<Tet> before = { m.T[t], m.T[s] };
   m.Kill(t);
   m.Kill(s);
   for (const Tet& b : before)
@@ -36,19 +37,6 @@ bool SplitFace(Mesh& m, const Tri& f, double goal)
         y[k] = w;
         m.Add(y, region);
       }
-  Climb(m, w);
-  Smooth(m, w);
-  double now = std::numeric_limits<double>::infinity();
-  for (int u : m.Inc[w])
-    now = std::min(now, m.Q[u]);
-  if (now > old + 1e-12 && now >= goal)
-    return true;
-  const std::vector<int> made = m.Inc[w];
-  for (int u : made)
-    m.Kill(u);
-  for (const Tet& b : before)
-    m.Add(b, region);
-  m.FixedVertex[w] = 1; // unused from now on
-  return false;
+  return KeepInsertion(m, w, before, region, old, goal);
 }
 }

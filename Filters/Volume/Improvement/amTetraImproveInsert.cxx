@@ -32,6 +32,11 @@ bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::
     m.Add({ u, w, ring[i], ring[(i + 1) % n] }, region);
     m.Add({ w, v, ring[i], ring[(i + 1) % n] }, region);
   }
+  return KeepInsertion(m, w, before, region, old, goal);
+}
+
+bool KeepInsertion(Mesh& m, int w, const std::vector<Tet>& before, int region, double old, double goal)
+{
   Climb(m, w);
   Smooth(m, w);
   double now = std::numeric_limits<double>::infinity();

@@ -188,6 +188,10 @@ bool Climb(Mesh& m, int v, double radius = std::numeric_limits<double>::infinity
 /// Splits the free edge (u, v) at its midpoint, then moves the new vertex where its star is best.
 /// Undone unless every element around the new vertex reaches 'goal'.
 bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::vector<int>& ring);
+/// The end of an insertion (SplitEdge, SplitFace): moves the new vertex w to the best place for
+/// its star, and keeps it when every element around it is better than 'old' and reaches 'goal';
+/// else the elements 'before' (of 'region') replace its star and w is left unused.
+bool KeepInsertion(Mesh& m, int w, const std::vector<Tet>& before, int region, double old, double goal);
 /// Splits the free face f (2-6: both tetrahedra on it in three), then moves the new vertex where
 /// its star is best. Undone unless every element around it reaches 'goal'.
 bool SplitFace(Mesh& m, const Tri& f, double goal);
