@@ -31,6 +31,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -56,6 +57,7 @@ struct amFitzHughNagumoSolver::Run
 
 amFitzHughNagumoSolver::amFitzHughNagumoSolver()
   : HeartRegions{ 5 }
+  , EndocardialConductionVelocity(0.0)
   , RegionArrayName(nullptr)
   , Conductivity(3.5)
   , FiberArrayName(nullptr)
@@ -327,8 +329,29 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   sp.StimulusStrength = this->StimulusStrength;
   sp.SolverTolerance = this->SolverTolerance;
   sp.MaximumIterations = this->MaximumIterations;
+  // The Purkinje network's stand-in spreading at a speed: each endocardial node's stimulus
+  // starts after StimulusStart by its distance from StimulusCenter, less that of the nearest
+  // endocardial node (which starts at StimulusStart), over that speed.
+  std::vector<double> delays;
+  if (!this->EndocardialRegions.empty() && this->EndocardialConductionVelocity > 0)
+  {
+    delays.assign(n, 0.0);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (vtkIdType i = 0; i < n; ++i)
+      if (stimulated[i])
+      {
+        double d2 = 0;
+        for (int c = 0; c < 3; ++c)
+          d2 += (fem.Points[i][c] - this->StimulusCenter[c]) * (fem.Points[i][c] - this->StimulusCenter[c]);
+        delays[i] = std::sqrt(d2);
+        nearest = std::min(nearest, delays[i]);
+      }
+    for (vtkIdType i = 0; i < n; ++i)
+      if (stimulated[i])
+        delays[i] = (delays[i] - nearest) / this->EndocardialConductionVelocity;
+  }
   amFitzHughNagumoStepper stepper;
-  stepper.Setup(fem, tensors, stimulated, sp);
+  stepper.Setup(fem, tensors, stimulated, sp, delays);
   this->UpdateProgress(0.05);
 
   const int steps = static_cast<int>(std::llround(this->EndTime / dt));
@@ -390,6 +413,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
          << " A=" << a << " TimeStep=" << dt << " EndTime=" << this->EndTime << " Stimulus=(" << this->StimulusCenter[0]
          << "," << this->StimulusCenter[1] << "," << this->StimulusCenter[2] << ") r=" << this->StimulusRadius
          << " region=" << this->StimulusRegion << " endocardial=" << this->EndocardialRegions.size()
+         << " endocardial_velocity=" << this->EndocardialConductionVelocity
          << " start=" << this->StimulusStart << " duration=" << this->StimulusDuration
          << " strength=" << this->StimulusStrength;
   amProvenance::Record(heart, input, "amFitzHughNagumoSolver", params.str());
@@ -468,4 +492,6 @@ void amFitzHughNagumoSolver::PrintSelf(ostream& os, vtkIndent indent)
      << " OutputInterval: " << this->OutputInterval << "\n";
   os << indent << "StimulusCenter: " << this->StimulusCenter[0] << " " << this->StimulusCenter[1] << " "
      << this->StimulusCenter[2] << " radius " << this->StimulusRadius << " region " << this->StimulusRegion << "\n";
+  os << indent << "EndocardialRegions: " << this->EndocardialRegions.size()
+     << " EndocardialConductionVelocity: " << this->EndocardialConductionVelocity << "\n";
 }

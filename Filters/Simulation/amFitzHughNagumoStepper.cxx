@@ -21,7 +21,7 @@ double amFitzHughNagumoStepper::StableTimeStep(double c1, double c2, double a)
 }
 
 void amFitzHughNagumoStepper::Setup(const amP1Assembly& fem, const std::vector<std::array<double, 6>>& tensors,
-  const std::vector<unsigned char>& stimulated, const Parameters& parameters)
+  const std::vector<unsigned char>& stimulated, const Parameters& parameters, const std::vector<double>& delays)
 {
   this->P = parameters;
   fem.Assemble(&tensors, this->M, this->K);
@@ -31,6 +31,7 @@ void amFitzHughNagumoStepper::Setup(const amP1Assembly& fem, const std::vector<s
   this->Solver.MaximumIterations = this->P.MaximumIterations;
   const size_t n = fem.Points.size();
   this->Stimulated = stimulated;
+  this->Delays = delays;
   this->U.assign(n, 0.0);
   this->V.assign(n, 0.0);
   this->W.resize(n);
@@ -46,19 +47,22 @@ bool amFitzHughNagumoStepper::Step(double t)
   const double dt = this->P.TimeStep;
   const double c1 = this->P.C1, c2 = this->P.C2, c3 = this->P.C3, c4 = this->P.C4, a = this->P.A;
   const double theta = this->P.ActivationThreshold;
-  const double stim =
-    (t + 1e-9 * dt >= this->P.StimulusStart && t < this->P.StimulusStart + this->P.StimulusDuration - 1e-9 * dt)
-    ? this->P.StimulusStrength
-    : 0.0;
+  const double start = this->P.StimulusStart, duration = this->P.StimulusDuration, strength = this->P.StimulusStrength;
+  auto stimulus = [=](double delay) {
+    return t + 1e-9 * dt >= start + delay && t < start + delay + duration - 1e-9 * dt ? strength : 0.0;
+  };
+  const double stim = stimulus(0.0);
   const double* up = this->U.data();
   const double* vp = this->V.data();
   double* wp = this->W.data();
   const unsigned char* sp = this->Stimulated.data();
+  const double* dp = this->Delays.empty() ? nullptr : this->Delays.data();
   amThreading::For(0, n, [=](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end; ++i)
     {
       const double ui = up[i];
-      const double f = c1 * ui * (ui - a) * (1.0 - ui) - c2 * ui * vp[i] + (sp[i] ? stim : 0.0);
+      const double s = sp[i] ? (dp ? stimulus(dp[i]) : stim) : 0.0;
+      const double f = c1 * ui * (ui - a) * (1.0 - ui) - c2 * ui * vp[i] + s;
       wp[i] = ui + dt * f;
     }
   });

@@ -47,9 +47,11 @@ public:
 
   /// Assembles the matrices of the mesh (tensors: the conductivity per tetrahedron, xx yy zz xy
   /// yz xz) and starts from rest (u = v = 0, no activation). 'stimulated': per node, 1 where the
-  /// stimulus applies.
+  /// stimulus applies; 'delays' (empty: none): per node, ms after StimulusStart when its stimulus
+  /// starts (it then lasts StimulusDuration).
   void Setup(const amP1Assembly& fem, const std::vector<std::array<double, 6>>& tensors,
-    const std::vector<unsigned char>& stimulated, const Parameters& parameters);
+    const std::vector<unsigned char>& stimulated, const Parameters& parameters,
+    const std::vector<double>& delays = std::vector<double>());
   /// One step from time t to t + dt. False when the conjugate gradients did not converge (Error
   /// says how far they got).
   bool Step(double t);
@@ -64,6 +66,7 @@ private:
   amSparseMatrix M, K, S;
   amConjugateGradient Solver;
   std::vector<unsigned char> Stimulated;
+  std::vector<double> Delays;
   std::vector<double> W, B, UOld;
 };
 

@@ -235,6 +235,48 @@ TEST(FitzHughNagumo, EndocardialRegionsActivateTheHeartFromInside)
   EXPECT_DOUBLE_EQ(solver->GetActivatedFraction(), 1.0);
 }
 
+TEST(FitzHughNagumo, EndocardialActivationSpreadsAtItsConductionVelocity)
+{
+  // The slab's endocardial face x = 6 is 40 mm long in y. Spreading from (6, 0, 1) at 2 mm/ms, the
+  // stimulus at y starts y / 2 ms after the near end's (the wall conducts slower, so nothing
+  // reaches a node before its own stimulus does); at once (velocity 0), all start together.
+  const int n[3] = { 16, 40, 2 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 16, 40, 2 };
+  auto mesh = amTest::BoxMesh(n, origin, size, [](const double* c) { return c[0] < 6 ? 6 : 5; });
+  for (double velocity : { 2.0, 0.0 })
+  {
+    vtkNew<amFitzHughNagumoSolver> solver;
+    solver->SetInputData(mesh);
+    solver->AddEndocardialRegion(6);
+    solver->SetEndocardialConductionVelocity(velocity);
+    solver->SetStimulusCenter(6, 0, 1);
+    solver->SetStimulusStrength(2);
+    solver->SetTimeStep(0.5);
+    solver->SetEndTime(60);
+    solver->SetOutputInterval(10);
+    solver->UpdateTimeStep(60);
+    vtkUnstructuredGrid* out = solver->GetOutput();
+    ASSERT_GT(out->GetNumberOfPoints(), 0);
+    vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");
+    auto at = [&](double x, double y) { return act->GetComponent(out->FindPoint(x, y, 1), 0); };
+    std::printf("velocity %.0f mm/ms: activation at y = 0, 20, 40: %.2f, %.2f, %.2f ms\n", velocity, at(6, 0),
+      at(6, 20), at(6, 40));
+    for (double y : { 0.0, 20.0, 40.0 })
+    {
+      // Each node within a few ms after its own stimulus starts (sooner where its neighbours
+      // along the face are already active), never before it.
+      const double onset = velocity > 0 ? y / velocity : 0.0;
+      EXPECT_GE(at(6, y), onset) << y;
+      EXPECT_LE(at(6, y), onset + 2.5) << y;
+    }
+    if (velocity > 0)
+      EXPECT_GT(at(6, 40) - at(6, 0), 15.0);
+    else
+      EXPECT_LT(std::fabs(at(6, 40) - at(6, 0)), 0.5);
+    EXPECT_DOUBLE_EQ(solver->GetActivatedFraction(), 1.0);
+  }
+}
+
 TEST(FitzHughNagumo, SameInputSameResult)
 {
   const int n[3] = { 20, 4, 2 };

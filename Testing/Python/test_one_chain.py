@@ -34,7 +34,7 @@ def tetrahedra(labels):
     return tets
 
 
-def simulate(tets, end=END, interval=5, endocardial=(), coupling=0):
+def simulate(tets, end=END, interval=5, endocardial=(), coupling=0, purkinje=0.0):
     """FitzHugh-Nagumo on the mesh's region 5 and the torso potentials: the heart at the end time and the leads."""
     heart = anatomesh.amFitzHughNagumoSolver()
     heart.SetInputConnection(tets.GetOutputPort(0))
@@ -44,6 +44,7 @@ def simulate(tets, end=END, interval=5, endocardial=(), coupling=0):
     heart.SetOutputInterval(interval)
     for region in endocardial:
         heart.AddEndocardialRegion(region)
+    heart.SetEndocardialConductionVelocity(purkinje)
     torso = anatomesh.amTorsoPotential()
     torso.SetInputConnection(0, tets.GetOutputPort(0))
     torso.SetInputConnection(1, heart.GetOutputPort())
@@ -118,15 +119,17 @@ class SegmentedAgainstTruth(unittest.TestCase):
 
 
 class ClinicalECG(unittest.TestCase):
-    """The second coupling on the phantom's exact labels: the endocardium activated at once (the Purkinje
-    network's stand-in) and the transmembrane potential as a current source give a short QRS of a few mV;
-    the paper's apical stimulus and Dirichlet coupling give a 300 ms activation and leads of tens of mV."""
+    """The second coupling on the phantom's exact labels: the endocardium activated at once or spreading at a
+    speed (the Purkinje network's stand-in) and the transmembrane potential as a current source give a QRS of
+    60-100 ms and a few mV; the paper's apical stimulus and Dirichlet coupling give a 300 ms activation and leads of tens of mV."""
 
     def test_endocardial_current_source_ecg(self):
         tets = truth_tetrahedra()
         peaks, last = {}, {}
-        for name, endocardial, coupling in (("paper", (), 0), ("clinical", (6, 7), 1)):
-            heart, leads = simulate(tets, end=200, interval=2, endocardial=endocardial, coupling=coupling)
+        for name, endocardial, coupling, purkinje in (("paper", (), 0, 0.0), ("clinical", (6, 7), 1, 0.0),
+                                                      ("purkinje", (6, 7), 1, 1.5)):
+            heart, leads = simulate(tets, end=200, interval=2, endocardial=endocardial, coupling=coupling,
+                                    purkinje=purkinje)
             act = vtk_to_numpy(heart.GetPointData().GetArray("ActivationTime"))
             peaks[name] = max(np.abs(v).max() for k, v in leads.items() if k != "Time")
             last[name] = act.max()
@@ -134,6 +137,11 @@ class ClinicalECG(unittest.TestCase):
                   % (name, act.max(), 100 * np.mean(act >= 0), peaks[name]))
         self.assertLess(last["clinical"], 100.0)  # ms: the whole heart within a QRS
         self.assertTrue(1.0 < peaks["clinical"] < 15.0, peaks)  # mV: a few
+        # The endocardium's activation spreading from the apex at 1.5 mm/ms instead of at once: a
+        # QRS of about 100 ms (60 ms at once), the leads still of a few mV.
+        self.assertTrue(85.0 < last["purkinje"] < 110.0, last)
+        self.assertGreater(last["purkinje"], last["clinical"] + 20.0)
+        self.assertTrue(1.0 < peaks["purkinje"] < 15.0, peaks)
         self.assertGreater(peaks["paper"], 15.0)
 
 
