@@ -9,6 +9,7 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <gtest/gtest.h>
@@ -205,24 +206,40 @@ TEST(FitzHughNagumo, TimeDependentOutputAndFullCycle)
   EXPECT_LT(a1, a2);
 }
 
+namespace
+{
+/// A slab of n cells over 'size' mm from the origin: a "blood pool" (region 6) for x < 6, the
+/// heart (region 5) beyond, activated from region 6 (spreading from 'centre' at 'velocity' mm/ms,
+/// 0: at once) and run to 'end' ms. A single layer of nodes drains into the wall: it needs more
+/// charge (StimulusStrength 2) than a sphere of 10 mm.
+vtkSmartPointer<amFitzHughNagumoSolver> EndocardialSlab(
+  const int n[3], const double size[3], const double centre[3], double velocity, double end)
+{
+  const double origin[3] = { 0, 0, 0 };
+  auto mesh = amTest::BoxMesh(n, origin, size, [](const double* c) { return c[0] < 6 ? 6 : 5; });
+  auto solver = vtkSmartPointer<amFitzHughNagumoSolver>::New();
+  solver->SetInputData(mesh);
+  solver->AddEndocardialRegion(6);
+  solver->SetEndocardialConductionVelocity(velocity);
+  solver->SetStimulusCenter(centre[0], centre[1], centre[2]);
+  solver->SetStimulusStrength(2);
+  solver->SetTimeStep(0.5);
+  solver->SetEndTime(end);
+  solver->SetOutputInterval(10);
+  solver->UpdateTimeStep(end);
+  return solver;
+}
+}
+
 TEST(FitzHughNagumo, EndocardialRegionsActivateTheHeartFromInside)
 {
   // A slab x in [0, 30] mm: a "blood pool" (region 6) for x < 6, the heart (region 5) beyond.
   // With EndocardialRegions 6 the heart starts at its face x = 6 at once: activation grows with
   // x alone (a plane wave), and no stimulus sphere is needed.
   const int n[3] = { 30, 4, 2 };
-  const double origin[3] = { 0, 0, 0 }, size[3] = { 30, 4, 2 };
-  auto mesh = amTest::BoxMesh(n, origin, size, [](const double* c) { return c[0] < 6 ? 6 : 5; });
-  vtkNew<amFitzHughNagumoSolver> solver;
-  solver->SetInputData(mesh);
-  solver->AddEndocardialRegion(6);
-  solver->SetStimulusCenter(1000, 1000, 1000); // far away: ignored
-  // A single layer of nodes drains into the wall: it needs more charge than a sphere of 10 mm.
-  solver->SetStimulusStrength(2);
-  solver->SetTimeStep(0.5);
-  solver->SetEndTime(80);
-  solver->SetOutputInterval(10);
-  solver->UpdateTimeStep(80);
+  const double size[3] = { 30, 4, 2 };
+  const double far[3] = { 1000, 1000, 1000 }; // the stimulus centre, ignored without a velocity
+  auto solver = EndocardialSlab(n, size, far, 0.0, 80);
   vtkUnstructuredGrid* out = solver->GetOutput();
   ASSERT_GT(out->GetNumberOfPoints(), 0);
   vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");
@@ -241,20 +258,11 @@ TEST(FitzHughNagumo, EndocardialActivationSpreadsAtItsConductionVelocity)
   // stimulus at y starts y / 2 ms after the near end's (the wall conducts slower, so nothing
   // reaches a node before its own stimulus does); at once (velocity 0), all start together.
   const int n[3] = { 16, 40, 2 };
-  const double origin[3] = { 0, 0, 0 }, size[3] = { 16, 40, 2 };
-  auto mesh = amTest::BoxMesh(n, origin, size, [](const double* c) { return c[0] < 6 ? 6 : 5; });
+  const double size[3] = { 16, 40, 2 };
+  const double centre[3] = { 6, 0, 1 };
   for (double velocity : { 2.0, 0.0 })
   {
-    vtkNew<amFitzHughNagumoSolver> solver;
-    solver->SetInputData(mesh);
-    solver->AddEndocardialRegion(6);
-    solver->SetEndocardialConductionVelocity(velocity);
-    solver->SetStimulusCenter(6, 0, 1);
-    solver->SetStimulusStrength(2);
-    solver->SetTimeStep(0.5);
-    solver->SetEndTime(60);
-    solver->SetOutputInterval(10);
-    solver->UpdateTimeStep(60);
+    auto solver = EndocardialSlab(n, size, centre, velocity, 60);
     vtkUnstructuredGrid* out = solver->GetOutput();
     ASSERT_GT(out->GetNumberOfPoints(), 0);
     vtkDataArray* act = out->GetPointData()->GetArray("ActivationTime");
