@@ -38,7 +38,7 @@ std::vector<std::pair<int, int>> FixedEdgesToSplit(const Mesh& m, int t)
     { 2, 3, 0, 1 } };
   const Tet& x = m.T[t];
   std::pair<int, int> sharpest{ -1, -1 }, longest{ -1, -1 };
-  double smallestCos = 2, longestLength = 0;
+  double largestCosine = -2, longestLength = 0;
   for (const auto& e : edges)
   {
     const int a = x[e[0]], b = x[e[1]];
@@ -46,10 +46,10 @@ std::vector<std::pair<int, int>> FixedEdgesToSplit(const Mesh& m, int t)
       continue;
     const Vec ab = G::Sub(m.X(b), m.X(a));
     const Vec n1 = G::Cross(ab, G::Sub(m.X(x[e[2]]), m.X(a))), n2 = G::Cross(ab, G::Sub(m.X(x[e[3]]), m.X(a)));
-    const double c = -G::Dot(n1, n2) / (G::Norm(n1) * G::Norm(n2) + 1e-300); // minus the dihedral's cosine
-    if (c < smallestCos)
+    const double cosine = G::Dot(n1, n2) / (G::Norm(n1) * G::Norm(n2) + 1e-300); // of the dihedral angle
+    if (cosine > largestCosine)
     {
-      smallestCos = c;
+      largestCosine = cosine;
       sharpest = { a, b };
     }
     if (G::Norm(ab) > longestLength)
