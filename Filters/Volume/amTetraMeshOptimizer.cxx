@@ -232,9 +232,7 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     std::fill(m.Tried.begin(), m.Tried.end(), 1);
     FreeSlivers(m, options, report, improve, fixEdges);
   }
-  for (size_t t = 0; t < m.T.size(); ++t)
-    if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options))
-      ++report.Slivers;
+  report.Slivers = CountSlivers(m, options);
 
   tets.clear();
   regions.clear();

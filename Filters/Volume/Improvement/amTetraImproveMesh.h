@@ -205,6 +205,8 @@ double Relabel(Mesh& m, int t, double maxDeviation, std::unordered_map<int, long
 bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options);
 /// The objective above which no element is a sliver by the options' bar.
 double SliverClear(const amTetraMeshOptimizer::Options& options);
+/// The live tetrahedra that fail the sliver bar of the options.
+long CountSlivers(const Mesh& m, const amTetraMeshOptimizer::Options& options);
 /// The sliver phase of amTetraMeshOptimizer (Options::MaximumSurfaceDeviation > 0): rounds of
 /// surface vertex slides, region changes and surface edge splits around the slivers left, each
 /// followed by improve(round) (the flips and moves) and fixEdges() (FixedEdges from FixedFaces);

@@ -26,6 +26,14 @@ bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options
   return !(q <= options.SliverQuality && minDihedral >= options.SliverDihedral);
 }
 
+long CountSlivers(const Mesh& m, const amTetraMeshOptimizer::Options& options)
+{
+  long count = 0;
+  for (size_t t = 0; t < m.T.size(); ++t)
+    count += m.Alive[t] && IsSliver(m, static_cast<int>(t), options);
+  return count;
+}
+
 namespace
 {
 /// The surface edges of tetrahedron t to split, best first: the one where its dihedral angle is
@@ -157,9 +165,7 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   {
     Attempt(m, options, budget, report, improve, fixEdges);
     const double deviation = SurfaceDeviation(m, surfaceBefore);
-    long slivers = 0;
-    for (size_t t = 0; t < m.T.size(); ++t)
-      slivers += m.Alive[t] && IsSliver(m, static_cast<int>(t), options);
+    const long slivers = CountSlivers(m, options);
     if (deviation <= bound)
     {
       report.SurfaceDeviation = deviation;
