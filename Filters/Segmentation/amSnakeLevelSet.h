@@ -8,6 +8,8 @@
 #define amSnakeLevelSet_h
 
 #include <itkConnectedComponentImageFilter.h>
+#include <itkImageAlgorithm.h>
+#include <itkImageRegionConstIteratorWithIndex.h>
 #include <itkSignedMaurerDistanceMapImageFilter.h>
 #include <itkThresholdSegmentationLevelSetImageFilter.h>
 
@@ -98,6 +100,58 @@ typename FloatImage<D>::Pointer SignedDistance(MaskImage<D>* mask)
   dist->SetBackgroundValue(0);
   dist->Update();
   return dist->GetOutput();
+}
+
+/// SignedDistance computed only in the mask's bounding box grown by 'margin' voxels, and 'far'
+/// (positive: outside) beyond it. Exact in the box, where every boundary voxel lies: enough for a
+/// level set, which reads the distance only next to the contour, and for shells within 'margin'
+/// voxels of it, on a region of interest much larger than the organ.
+template<unsigned D>
+typename FloatImage<D>::Pointer SignedDistanceNear(MaskImage<D>* mask, int margin, float far)
+{
+  using Index = typename MaskImage<D>::IndexType;
+  const auto whole = mask->GetLargestPossibleRegion();
+  Index lo, hi;
+  for (unsigned a = 0; a < D; ++a)
+  {
+    lo[a] = whole.GetIndex(a) + static_cast<long>(whole.GetSize(a));
+    hi[a] = whole.GetIndex(a) - 1;
+  }
+  itk::ImageRegionConstIteratorWithIndex<MaskImage<D>> in(mask, whole);
+  for (; !in.IsAtEnd(); ++in)
+    if (in.Get())
+      for (unsigned a = 0; a < D; ++a)
+      {
+        lo[a] = std::min(lo[a], in.GetIndex()[a]);
+        hi[a] = std::max(hi[a], in.GetIndex()[a]);
+      }
+  typename MaskImage<D>::RegionType box;
+  bool all = true;
+  for (unsigned a = 0; a < D; ++a)
+  {
+    const long first = std::max<long>(whole.GetIndex(a), lo[a] - margin);
+    const long last = std::min<long>(whole.GetIndex(a) + static_cast<long>(whole.GetSize(a)) - 1, hi[a] + margin);
+    box.SetIndex(a, first);
+    box.SetSize(a, static_cast<itk::SizeValueType>(std::max<long>(0, last - first + 1)));
+    all = all && box.GetSize(a) == whole.GetSize(a);
+  }
+  if (all)
+    return SignedDistance<D>(mask);
+  auto out = FloatImage<D>::New();
+  out->SetRegions(whole);
+  out->CopyInformation(mask);
+  out->Allocate();
+  out->FillBuffer(far);
+  if (box.GetNumberOfPixels() == 0)
+    return out; // an empty mask: outside everywhere
+  auto sub = MaskImage<D>::New();
+  sub->SetRegions(box);
+  sub->CopyInformation(mask);
+  sub->Allocate();
+  itk::ImageAlgorithm::Copy(mask, sub.GetPointer(), box, box);
+  auto dist = SignedDistance<D>(sub);
+  itk::ImageAlgorithm::Copy(dist.GetPointer(), out.GetPointer(), box, box);
+  return out;
 }
 
 template<unsigned D>

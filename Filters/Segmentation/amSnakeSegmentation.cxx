@@ -63,6 +63,7 @@ amSnakeSegmentation::amSnakeSegmentation()
   , MinimumSliceArea(4.0)
   , AllowAirSeeds(false)
   , RefineToHalfContrast(true)
+  , CoarseToFine(true)
   , AdaptiveSliceStatistics(false)
   , ContourModel(LevelSet)
   , OutsideThreshold(-30.0)
@@ -238,6 +239,7 @@ int amSnakeSegmentation::RequestData(
   tp.MaximumAreaChange = this->MaximumAreaChange;
   tp.MinimumSliceArea = this->MinimumSliceArea;
   tp.RefineToHalfContrast = this->RefineToHalfContrast;
+  tp.CoarseToFine = this->CoarseToFine;
   tp.AdaptiveSliceStatistics = this->AdaptiveSliceStatistics;
   tp.OutsideThreshold = this->OutsideThreshold;
   tp.EdgeContrast = this->EdgeContrast;
@@ -378,6 +380,8 @@ int amSnakeSegmentation::RequestData(
          << " Curvature=" << this->CurvatureScaling << " EdgeWeight=" << this->EdgeWeight
          << " Iterations=" << this->NumberOfIterations << " MaximumDistance=" << this->MaximumDistance
          << " ContourModel=" << (this->ContourModel == Polar ? "Polar" : "LevelSet");
+  if (this->Mode == ThreeD)
+    params << " CoarseToFine=" << this->CoarseToFine;
   if (this->ContourModel == Polar)
     params << " OutsideThreshold=" << this->OutsideThreshold << " EdgeContrast=" << this->EdgeContrast
            << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth
@@ -395,6 +399,7 @@ void amSnakeSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeedRadius: " << this->SeedRadius << " mm\n";
   os << indent << "IntensityTolerance: " << this->IntensityTolerance << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "CoarseToFine: " << this->CoarseToFine << "\n";
   os << indent << "ContourModel: " << (this->ContourModel == Polar ? "Polar" : "LevelSet") << "\n";
   os << indent << "OutsideThreshold: " << this->OutsideThreshold << "\n";
   os << indent << "EdgeContrast: " << this->EdgeContrast << "\n";

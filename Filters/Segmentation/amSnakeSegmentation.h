@@ -20,7 +20,9 @@
  *    smoothed intensity is in the interval, is held back elsewhere, and is kept smooth by
  *    CurvatureScaling, until NumberOfIterations, an RMS change below MaximumRMSError, or 20
  *    iterations that leave the number of voxels inside unchanged (on a noisy scan the front
- *    settles into a two-state cycle whose RMS change never falls below the bound);
+ *    settles into a two-state cycle whose RMS change never falls below the bound); in 3-D with
+ *    CoarseToFine, the contour first evolves on the image at twice the voxel size, and the full
+ *    resolution continues from there;
  * 4. with RefineToHalfContrast, the intensity of a 2-voxel shell outside the contour (beyond
  *    twice SmoothingSigma) gives the
  *    surroundings' level; the threshold facing it moves half-way (the partial-volume boundary)
@@ -181,6 +183,15 @@ public:
   ///@}
 
   ///@{
+  /// 3-D mode: the first evolution runs on the image at twice the voxel size (means of 2x2x2
+  /// voxels) and the full resolution continues from its contour, which then moves only by a voxel
+  /// or two (default on). A part too thin for the coarse grid still grows at full resolution.
+  vtkSetMacro(CoarseToFine, bool);
+  vtkGetMacro(CoarseToFine, bool);
+  vtkBooleanMacro(CoarseToFine, bool);
+  ///@}
+
+  ///@{
   /// Slice-by-slice with automatic thresholds: each seed slice's interval comes from its own
   /// seeds, each later slice's from the section found in the previous slice (for vessels whose
   /// contrast changes along their length), instead of all seeds pooled; with
@@ -271,6 +282,7 @@ protected:
   double MinimumSliceArea;
   bool AllowAirSeeds;
   bool RefineToHalfContrast;
+  bool CoarseToFine;
   bool AdaptiveSliceStatistics;
   int ContourModel;
   double OutsideThreshold;

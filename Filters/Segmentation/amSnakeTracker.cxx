@@ -137,12 +137,14 @@ bool amSnakeTracker::Segment(
     const std::vector<unsigned char> first = this->InsideMask;
     auto mask3 = NewImage<MaskImage<3>>(this->Size, this->Spacing);
     std::copy(first.begin(), first.end(), mask3->GetBufferPointer());
-    auto dist = SignedDistance<3>(mask3);
-    const float* dv = dist->GetBufferPointer();
-    const float* fv = this->Feature.data();
     // Beyond the blur of the smoothing, two voxels thick.
     const double voxel = std::max(this->Spacing[0], std::max(this->Spacing[1], this->Spacing[2]));
     const double shellIn = std::max(2.0 * voxel, 2.0 * this->P.SmoothingSigma), shellOut = shellIn + 2.0 * voxel;
+    const double finest = std::min(this->Spacing[0], std::min(this->Spacing[1], this->Spacing[2]));
+    auto dist = SignedDistanceNear<3>(
+      mask3, static_cast<int>(std::ceil(shellOut / finest)) + 1, static_cast<float>(2 * shellOut));
+    const float* dv = dist->GetBufferPointer();
+    const float* fv = this->Feature.data();
     double osum = 0;
     long ocount = 0;
     for (size_t i = 0; i < first.size(); ++i)
@@ -184,27 +186,106 @@ bool amSnakeTracker::Run(double lo, double hi, const std::vector<unsigned char>*
   return this->RunSlices(lo, hi);
 }
 
+bool amSnakeTracker::RunCoarse(double lo, double hi, std::vector<unsigned char>& inside)
+{
+  const int* rd = this->Size;
+  const int cs[3] = { (rd[0] + 1) / 2, (rd[1] + 1) / 2, (rd[2] + 1) / 2 };
+  const double csp[3] = { 2 * this->Spacing[0], 2 * this->Spacing[1], 2 * this->Spacing[2] };
+  auto feature = NewImage<FloatImage<3>>(cs, csp);
+  auto phi = NewImage<FloatImage<3>>(cs, csp);
+  float* fv = feature->GetBufferPointer();
+  float* pv = phi->GetBufferPointer();
+  // The seed balls at least 2.5 coarse voxels in radius, as at full resolution.
+  const double radius = std::max(this->InitialRadius, 2.5 * std::max(csp[0], std::max(csp[1], csp[2])));
+  auto coarse = [&cs](int i, int j, int k) { return (static_cast<size_t>(k) * cs[1] + j) * cs[0] + i; };
+  vtkSMPTools::For(0, cs[2], [&](vtkIdType k0, vtkIdType k1) {
+    for (int k = static_cast<int>(k0); k < k1; ++k)
+      for (int j = 0; j < cs[1]; ++j)
+        for (int i = 0; i < cs[0]; ++i)
+        {
+          double sum = 0;
+          int n = 0;
+          for (int c = 2 * k; c < std::min(2 * k + 2, rd[2]); ++c)
+            for (int b = 2 * j; b < std::min(2 * j + 2, rd[1]); ++b)
+              for (int a = 2 * i; a < std::min(2 * i + 2, rd[0]); ++a)
+              {
+                sum += this->Feature[this->At(a, b, c)];
+                ++n;
+              }
+          fv[coarse(i, j, k)] = static_cast<float>(sum / n);
+          double d = 1e30;
+          for (size_t s = 0; s < this->Seeds.size(); ++s)
+            d = std::min(d, this->BallDistance(s, 2 * i + 0.5, 2 * j + 0.5, 2 * k + 0.5));
+          pv[coarse(i, j, k)] = static_cast<float>(d - radius);
+        }
+  });
+  const Parameters& p = this->P;
+  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
+    p.StopOnStall };
+  MaskImage<3>::Pointer mask;
+  try
+  {
+    mask = Evolve<3>(feature, phi, lo, hi, lsp, p.NumberOfIterations, nullptr, &this->Elapsed);
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    this->Error = e.GetDescription();
+    return false;
+  }
+  const unsigned char* m = mask->GetBufferPointer();
+  inside.assign(static_cast<size_t>(rd[0]) * rd[1] * rd[2], 0);
+  for (int k = 0; k < rd[2]; ++k)
+    for (int j = 0; j < rd[1]; ++j)
+      for (int i = 0; i < rd[0]; ++i)
+        inside[this->At(i, j, k)] = m[coarse(i / 2, j / 2, k / 2)];
+  return true;
+}
+
 bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb)
 {
   const int* rd = this->Size;
-  auto phi = NewImage<FloatImage<3>>(rd, this->Spacing);
-  float* pv = phi->GetBufferPointer();
-  vtkSMPTools::For(0, rd[2], [&](vtkIdType k0, vtkIdType k1) {
-    for (vtkIdType k = k0; k < k1; ++k)
-      for (int j = 0; j < rd[1]; ++j)
-        for (int i = 0; i < rd[0]; ++i)
-        {
-          double d = 1e30;
-          for (size_t s = 0; s < this->Seeds.size(); ++s)
-            d = std::min(d, this->BallDistance(s, i, j, static_cast<double>(k)));
-          pv[this->At(i, j, static_cast<int>(k))] = static_cast<float>(d - this->InitialRadius);
-        }
-  });
+  // The first evolution at twice the voxel size: the front crosses the organ in half the
+  // iterations over an eighth of the voxels, and the full resolution then moves it by a voxel or
+  // two. It keeps its full iteration limit there, so that a part too thin for the coarse grid
+  // still grows from the rest. An organ the coarse grid loses entirely starts from its seeds.
+  std::vector<unsigned char> coarse;
+  bool fromCoarse = false;
+  if (!initial && this->P.CoarseToFine && std::min(rd[0], std::min(rd[1], rd[2])) >= 16)
+  {
+    if (!this->RunCoarse(lo, hi, coarse))
+      return false;
+    fromCoarse = std::find(coarse.begin(), coarse.end(), 1) != coarse.end();
+    if (fromCoarse)
+      initial = &coarse;
+    if (this->Progress)
+      this->Progress(pa + 0.3 * pb);
+    pa += 0.3 * pb;
+    pb *= 0.7;
+  }
+  FloatImage<3>::Pointer phi;
   if (initial)
   {
     auto mask = NewImage<MaskImage<3>>(rd, this->Spacing);
     std::copy(initial->begin(), initial->end(), mask->GetBufferPointer());
-    phi = SignedDistance<3>(mask);
+    // The level set reads the distance only next to the contour.
+    const double voxel = std::max(this->Spacing[0], std::max(this->Spacing[1], this->Spacing[2]));
+    phi = SignedDistanceNear<3>(mask, 4, static_cast<float>(5 * voxel));
+  }
+  else
+  {
+    phi = NewImage<FloatImage<3>>(rd, this->Spacing);
+    float* pv = phi->GetBufferPointer();
+    vtkSMPTools::For(0, rd[2], [&](vtkIdType k0, vtkIdType k1) {
+      for (vtkIdType k = k0; k < k1; ++k)
+        for (int j = 0; j < rd[1]; ++j)
+          for (int i = 0; i < rd[0]; ++i)
+          {
+            double d = 1e30;
+            for (size_t s = 0; s < this->Seeds.size(); ++s)
+              d = std::min(d, this->BallDistance(s, i, j, static_cast<double>(k)));
+            pv[this->At(i, j, static_cast<int>(k))] = static_cast<float>(d - this->InitialRadius);
+          }
+    });
   }
   auto feature = NewImage<FloatImage<3>>(rd, this->Spacing);
   std::copy(this->Feature.begin(), this->Feature.end(), feature->GetBufferPointer());
@@ -217,8 +298,8 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
   try
   {
     auto mask = Evolve<3>(
-      feature, phi, lo, hi, lsp, initial ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations, progress,
-      &this->Elapsed);
+      feature, phi, lo, hi, lsp, initial && !fromCoarse ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations,
+      progress, &this->Elapsed);
     std::copy(mask->GetBufferPointer(), mask->GetBufferPointer() + this->InsideMask.size(), this->InsideMask.begin());
   }
   catch (const itk::ExceptionObject& e)

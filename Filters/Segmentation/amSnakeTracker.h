@@ -56,6 +56,9 @@ public:
     double MaximumAreaChange = 2.0;
     double MinimumSliceArea = 4.0; // mm^2
     bool RefineToHalfContrast = true;
+    // 3-D only: the first evolution runs on the region at twice the voxel size, the full
+    // resolution continuing from its contour.
+    bool CoarseToFine = true;
     bool AdaptiveSliceStatistics = false;
     // Polar contours.
     double OutsideThreshold = -30.0, EdgeContrast = 40.0, MaximumRadius = 30.0, MaximumGrowth = 2.0;
@@ -92,6 +95,9 @@ private:
   long long Elapsed = 0;
   bool Run(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb);
   bool RunThreeD(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb);
+  /// The first 3-D evolution on the region at twice the voxel size (2x2x2 means of the smoothed
+  /// intensities), its inside given back on the full grid. False when the level set failed.
+  bool RunCoarse(double lo, double hi, std::vector<unsigned char>& inside);
   bool RunSlices(double lo, double hi);
   bool RunPolar();
   /// Distance (mm) from voxel (i, j, k) of the region to seed s's centre.

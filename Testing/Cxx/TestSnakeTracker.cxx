@@ -145,3 +145,43 @@ TEST(SnakeTracker, StopsWhenTheInsideNoLongerChanges)
   EXPECT_EQ(stopped.Inside(), full.Inside());
   EXPECT_NEAR(static_cast<double>(Count(stopped.Inside())) / ball.Volume(), 1.0, 0.15);
 }
+
+// The first evolution at twice the voxel size: the same organ as at full resolution alone, a rod
+// five voxels across (two and a half on the coarse grid) to its far end included.
+TEST(SnakeTracker, CoarseToFineFindsTheSameOrgan)
+{
+  Ball ball;
+  // A rod of radius 2.5 mm along x from the ball's surface to the region's edge.
+  for (int k = 0; k < 40; ++k)
+    for (int j = 0; j < 40; ++j)
+      for (int i = 20; i < 40; ++i)
+      {
+        const double y = j - 19.5, z = k - 19.5;
+        if (y * y + z * z <= 2.5 * 2.5)
+          ball.Values[(k * 40 + j) * 40 + i] = 200.0f;
+      }
+  std::mt19937 random(3);
+  std::normal_distribution<float> noise(0.0f, 20.0f);
+  for (float& v : ball.Values)
+    v += noise(random);
+  auto segment = [&](bool coarse) {
+    amSnakeTracker::Parameters p;
+    p.CoarseToFine = coarse;
+    amSnakeTracker tracker(p, ball.Spacing);
+    tracker.SetRegion(ball.Lo, ball.Size, ball.Values);
+    tracker.MeasureSeeds({ ball.Centre });
+    EXPECT_TRUE(tracker.Segment(300.0, nullptr, nullptr)) << coarse << tracker.Error;
+    return tracker.Inside();
+  };
+  const std::vector<unsigned char> fine = segment(false), coarse = segment(true);
+  size_t differ = 0, rod = 0;
+  for (size_t i = 0; i < fine.size(); ++i)
+    differ += fine[i] != coarse[i];
+  for (int i = 32; i < 38; ++i) // the rod's far end, beyond the ball's reach
+    rod += coarse[(20 * 40 + 20) * 40 + i];
+  std::printf("%zu voxels inside at full resolution, %zu from the coarse grid, %zu differ, rod end %zu\n", Count(fine),
+    Count(coarse), differ, rod);
+  EXPECT_NEAR(static_cast<double>(Count(coarse)) / ball.Volume(), 1.0, 0.15);
+  EXPECT_LT(differ, Count(fine) / 50);
+  EXPECT_EQ(rod, 6u);
+}
