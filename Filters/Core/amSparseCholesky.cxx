@@ -16,6 +16,9 @@ namespace
 // and gets its setting back afterwards.
 constexpr int Threads = 2;
 
+// Free nodes from which METIS alone orders the matrix.
+constexpr long long LargeMatrix = 20000;
+
 class FixedBlasThreads
 {
 public:
@@ -146,6 +149,10 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
   colStart[m] = fill;
 
   FixedBlasThreads blas;
+  // CHOLMOD's default orders with AMD and then METIS and keeps the better; on a mesh of tens of
+  // thousands of nodes METIS (nested dissection) is the better one, by far, so it alone is tried.
+  c->nmethods = m >= LargeMatrix ? 1 : 0;
+  c->method[0].ordering = m >= LargeMatrix ? CHOLMOD_METIS : CHOLMOD_GIVEN;
   in.L = cholmod_l_analyze(S, c);
   bool ok = in.L && c->status >= CHOLMOD_OK;
   if (ok)

@@ -27,11 +27,12 @@ from .AnatomeshFiltersSurface import (
 )
 from .AnatomeshFiltersVolume import amLabelMapTetrahedralize, amMeshQuality, amTetrahedralize
 from .AnatomeshIOImage import amImageReader, amImageWriter
-from .AnatomeshIOMesh import amGmshWriter, amMeditReader, amMeditWriter
+from .AnatomeshIOMesh import amConcurrentXMLWriter, amGmshWriter, amMeditReader, amMeditWriter
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "amConcurrentXMLWriter",
     "amCurvatureMetric",
     "amFitzHughNagumoSolver",
     "amGmshWriter",

@@ -393,6 +393,9 @@ class Pipeline:
         self.clock = watcher.clock  # each filter's own execution time, and the <Output> files'
         self.clock.seconds.update((s.name, 0.0) for s in self.steps)
         by_name = {s.name: s for s in self.steps}
+        # The <Output> VTK XML files are written on worker threads while the next filters run.
+        files = _queue()
+        collections = []
         for step in self.steps:
             if not step.proxy.is_writer:
                 continue
@@ -412,15 +415,20 @@ class Pipeline:
                 raise self._failure(by_name, step, errors, "no output")
             _make_parent(path, self, line)
             if os.path.splitext(path)[1].lower() == ".pvd":
-                written.extend(write_time_series(algorithm, index, path,
-                                                 lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None,
-                                                 watcher.clock))
+                frames = write_time_series(algorithm, index, path,
+                                           lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None,
+                                           watcher.clock, files, collections)
+                written.extend(frames)
                 self.written_data[path] = algorithm.GetOutputDataObject(index)
                 continue
             with watcher.clock.running(WRITING):
-                write_vtk_xml(algorithm.GetOutputDataObject(index), path)
+                write_vtk_xml(algorithm.GetOutputDataObject(index), path, files)
             written.append(path)
             self.written_data[path] = algorithm.GetOutputDataObject(index)
+        with watcher.clock.running(WRITING):
+            _finish(files)
+            for commit in collections:
+                commit()
         watcher.finish()
         return written
 
@@ -530,10 +538,24 @@ def _write_csv(table, path):
             os.remove(tmp)
 
 
-def write_time_series(algorithm, port, path, error=lambda: None, clock=None):
+def _queue():
+    """A writer of VTK XML files on worker threads (amConcurrentXMLWriter)."""
+    from anatomesh import amConcurrentXMLWriter
+    return amConcurrentXMLWriter()
+
+
+def _finish(files):
+    """Wait for the files queued; a failure (a full disk, say) is an error naming the file."""
+    if files is not None and not files.Finish():
+        raise PipelineError(files.GetErrorMessage())
+
+
+def write_time_series(algorithm, port, path, error=lambda: None, clock=None, files=None, collections=None):
     """Write every time step an algorithm's output port advertises as NAME_NNNN.vtu (or .vtp/.vti)
     beside a ParaView collection NAME.pvd; without time steps, one file. The .pvd is written last,
-    so a failed run never leaves a collection naming missing files. Returns the paths written."""
+    so a failed run never leaves a collection naming missing files. Returns the paths written.
+    With 'files' (an amConcurrentXMLWriter) the frames are queued there, and the .pvd is written
+    by a function appended to 'collections', to call once the queue is finished."""
     from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
     algorithm.UpdateInformation()
     info = algorithm.GetOutputInformation(port)
@@ -556,16 +578,23 @@ def write_time_series(algorithm, port, path, error=lambda: None, clock=None):
             raise PipelineError("%s: cannot write a %s as a time series" % (path, data.GetClassName()))
         name = "%s_%04d%s" % (stem, k, ext)
         with (clock or StageClock()).running(WRITING):
-            write_vtk_xml(data, os.path.join(folder, name))
+            write_vtk_xml(data, os.path.join(folder, name), files)
         written.append(os.path.join(folder, name))
         entries.append('    <DataSet timestep="%r" part="0" file="%s"/>' % (0.0 if t is None else t, name))
     text = ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n'
             + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n")
-    tmp = temporary_path(folder, stem, ".pvd")
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
+
+    def commit():
+        tmp = temporary_path(folder, stem, ".pvd")
+        with open(tmp, "w") as f:
+            f.write(text)
+        os.replace(tmp, path)
+
     written.append(path)
+    if files is None:
+        commit()
+    else:
+        collections.append(commit)
     return written
 
 
@@ -629,8 +658,10 @@ def _alive(pid):
     return True
 
 
-def write_vtk_xml(data, path):
-    """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm), or a table to .csv, atomically."""
+def write_vtk_xml(data, path, files=None):
+    """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm), or a table to .csv, atomically.
+    With 'files' (an amConcurrentXMLWriter) a .vti, .vtp or .vtu is queued there instead: written on
+    a worker thread, done when files.Finish() returns."""
     from vtkmodules.vtkIOXML import (vtkXMLImageDataWriter, vtkXMLPolyDataWriter,
                                      vtkXMLUnstructuredGridWriter, vtkXMLMultiBlockDataWriter)
     writers = {".vti": vtkXMLImageDataWriter, ".vtp": vtkXMLPolyDataWriter,
@@ -647,9 +678,13 @@ def write_vtk_xml(data, path):
         fits = [e for e, kind in sorted(holds.items()) if data.IsA(kind)]
         raise PipelineError("%s: a %s file holds a %s, but this output is a %s%s" % (
             path, ext, holds[ext], data.GetClassName(), " (use %s)" % fits[0] if fits else ""))
-    writer = writers[ext]()
     if not data.IsA("vtkMultiBlockDataSet"):
         data = _plain_field_data(data)
+        if files is not None:
+            if not files.Write(data, path):
+                raise PipelineError(files.GetErrorMessage())
+            return
+    writer = writers[ext]()
     folder, base = os.path.split(os.path.abspath(path))
     tmp = temporary_path(folder, os.path.splitext(base)[0], ext)
     writer.SetFileName(tmp)

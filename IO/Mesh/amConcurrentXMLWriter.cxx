@@ -1,0 +1,213 @@
+#include "amConcurrentXMLWriter.h"
+
+#include "amAtomicFile.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkErrorCode.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLImageDataWriter.h"
+#include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLUnstructuredGridWriter.h"
+
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+vtkStandardNewMacro(amConcurrentXMLWriter);
+
+namespace
+{
+struct Job
+{
+  vtkSmartPointer<vtkDataObject> Data;
+  std::string File;
+};
+
+/// A writer for the data's type, or null.
+vtkSmartPointer<vtkXMLWriter> WriterFor(vtkDataObject* data)
+{
+  if (vtkUnstructuredGrid::SafeDownCast(data))
+    return vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+  if (vtkPolyData::SafeDownCast(data))
+    return vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  if (vtkImageData::SafeDownCast(data))
+    return vtkSmartPointer<vtkXMLImageDataWriter>::New();
+  return nullptr;
+}
+
+/// The writer's error messages, caught by an observer: VTK then does not print them from a
+/// worker thread (where a Python output window may not run).
+void KeepMessage(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  auto* message = static_cast<std::string*>(clientData);
+  if (message->empty() && callData)
+    *message = static_cast<const char*>(callData);
+}
+
+/// Writes one file; an empty string, or why it failed.
+std::string WriteOne(const Job& job, int level)
+{
+  amAtomicFile file(job.File);
+  std::string why;
+  if (!file.CanWrite(why))
+    return why;
+  vtkSmartPointer<vtkXMLWriter> writer = WriterFor(job.Data);
+  std::string message;
+  vtkNew<vtkCallbackCommand> keep;
+  keep->SetCallback(KeepMessage);
+  keep->SetClientData(&message);
+  writer->AddObserver(vtkCommand::ErrorEvent, keep);
+  writer->AddObserver(vtkCommand::WarningEvent, keep);
+  writer->SetInputData(job.Data);
+  writer->SetFileName(file.TemporaryPath().c_str());
+  // Inline base64 ("binary"), not appended: Debian 12's expat (2.5.0+deb12u5, with the backported
+  // reparse deferral) breaks VTK 9.2's reading of appended data beyond a few kB.
+  writer->SetDataModeToBinary();
+  writer->SetCompressorTypeToZLib();
+  writer->SetCompressionLevel(level);
+  const int ok = writer->Write();
+  const unsigned long code = writer->GetErrorCode();
+  if (!ok || code != vtkErrorCode::NoError)
+  {
+    if (code != vtkErrorCode::NoError)
+      return vtkErrorCode::GetStringFromErrorCode(code);
+    const std::size_t colon = message.rfind("): ");
+    return message.empty() ? "the VTK XML writer failed"
+                           : message.substr(colon == std::string::npos ? 0 : colon + 3);
+  }
+  if (!file.Commit(why))
+    return why;
+  return std::string();
+}
+}
+
+struct amConcurrentXMLWriter::Internal
+{
+  std::mutex Lock;
+  std::condition_variable Changed;
+  std::deque<Job> Queue;
+  std::vector<std::thread> Workers;
+  std::size_t Busy = 0; // jobs taken and not yet done
+  bool Stopping = false;
+  int Level = 1;
+  std::string Error;
+
+  void Work()
+  {
+    for (;;)
+    {
+      Job job;
+      {
+        std::unique_lock<std::mutex> lock(this->Lock);
+        this->Changed.wait(lock, [this]() { return !this->Queue.empty() || this->Stopping; });
+        if (this->Queue.empty())
+          return;
+        job = std::move(this->Queue.front());
+        this->Queue.pop_front();
+        ++this->Busy;
+      }
+      const std::string why = WriteOne(job, this->Level);
+      job.Data = nullptr; // released on this thread, before the caller may wait for an empty queue
+      std::lock_guard<std::mutex> lock(this->Lock);
+      if (!why.empty() && this->Error.empty())
+      {
+        this->Error = job.File + ": " + why;
+        this->Queue.clear(); // nothing more is written after a failure
+      }
+      --this->Busy;
+      this->Changed.notify_all();
+    }
+  }
+
+  void Stop()
+  {
+    {
+      std::lock_guard<std::mutex> lock(this->Lock);
+      this->Stopping = true;
+    }
+    this->Changed.notify_all();
+    for (std::thread& t : this->Workers)
+      t.join();
+    this->Workers.clear();
+    this->Stopping = false;
+  }
+};
+
+amConcurrentXMLWriter::amConcurrentXMLWriter()
+  : Impl(new Internal)
+  , NumberOfThreads(2)
+  , CompressionLevel(1)
+{
+}
+
+amConcurrentXMLWriter::~amConcurrentXMLWriter()
+{
+  this->Impl->Stop();
+  delete this->Impl;
+}
+
+bool amConcurrentXMLWriter::Write(vtkDataObject* data, const char* fileName)
+{
+  Internal& in = *this->Impl;
+  if (!data || !fileName || !*fileName || !WriterFor(data))
+  {
+    std::lock_guard<std::mutex> lock(in.Lock);
+    if (in.Error.empty())
+      in.Error = std::string(fileName ? fileName : "(no file name)") + ": no VTK XML format for a " +
+        (data ? data->GetClassName() : "missing data object");
+    return false;
+  }
+  Job job;
+  job.Data.TakeReference(data->NewInstance());
+  job.Data->DeepCopy(data);
+  job.File = fileName;
+  std::unique_lock<std::mutex> lock(in.Lock);
+  if (!in.Error.empty())
+    return false;
+  if (in.Workers.empty())
+  {
+    in.Level = this->CompressionLevel;
+    for (int t = 0; t < this->NumberOfThreads; ++t)
+      in.Workers.emplace_back([&in]() { in.Work(); });
+  }
+  const std::size_t most = 2 * static_cast<std::size_t>(this->NumberOfThreads);
+  in.Changed.wait(lock, [&]() { return in.Queue.size() < most || !in.Error.empty(); });
+  if (!in.Error.empty())
+    return false;
+  in.Queue.push_back(std::move(job));
+  in.Changed.notify_all();
+  return true;
+}
+
+bool amConcurrentXMLWriter::Finish()
+{
+  Internal& in = *this->Impl;
+  {
+    std::unique_lock<std::mutex> lock(in.Lock);
+    in.Changed.wait(lock, [&]() { return in.Queue.empty() && in.Busy == 0; });
+  }
+  in.Stop();
+  std::lock_guard<std::mutex> lock(in.Lock);
+  return in.Error.empty();
+}
+
+const char* amConcurrentXMLWriter::GetErrorMessage()
+{
+  std::lock_guard<std::mutex> lock(this->Impl->Lock);
+  return this->Impl->Error.c_str();
+}
+
+void amConcurrentXMLWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "CompressionLevel: " << this->CompressionLevel << "\n";
+}
