@@ -94,6 +94,27 @@ class PhantomFromPython(unittest.TestCase):
         self.assertEqual(back.GetDimensions(), (160, 120, 105))
         np.testing.assert_array_equal(labels_of(back), labels_of(self.src.GetOutputDataObject(1)))
 
+    def test_time_series_on_worker_threads(self):
+        """A time series queued on amConcurrentXMLWriter: every frame readable, with its own values."""
+        from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+        from vtkmodules.vtkCommonDataModel import vtkImageData
+        files = anatomesh.amConcurrentXMLWriter()
+        self.assertEqual(files.GetNumberOfThreads(), 2)
+        frame = vtkImageData()
+        frame.ShallowCopy(self.src.GetOutputDataObject(0))
+        ct = vtk_to_numpy(frame.GetPointData().GetScalars())
+        paths = [os.path.join(TMP, "py_series_%d.vti" % k) for k in range(4)]
+        for path in paths:
+            self.assertTrue(files.Write(frame, path), files.GetErrorMessage())
+        self.assertTrue(files.Finish(), files.GetErrorMessage())
+        for path in paths:
+            reader = vtkXMLImageDataReader()
+            reader.SetFileName(path)
+            reader.Update()
+            np.testing.assert_array_equal(vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars()), ct)
+        self.assertFalse(files.Write(frame, os.path.join(TMP, "no_such_folder", "frame.vti")) and files.Finish())
+        self.assertIn("no_such_folder", files.GetErrorMessage())
+
 
 if __name__ == "__main__":
     unittest.main()
