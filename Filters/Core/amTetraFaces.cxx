@@ -1,5 +1,7 @@
 #include "amTetraFaces.h"
 
+#include "amThreading.h"
+
 #include <algorithm>
 
 namespace
@@ -12,9 +14,17 @@ struct Entry
   std::array<vtkIdType, 3> Sorted;
   vtkIdType Tetra;
   int Side;
+  // Element by element (std::array's operators compare through memcmp, most of the sort's time).
   bool operator<(const Entry& o) const
   {
-    return this->Sorted != o.Sorted ? this->Sorted < o.Sorted : this->Tetra < o.Tetra;
+    for (int k = 0; k < 3; ++k)
+      if (this->Sorted[k] != o.Sorted[k])
+        return this->Sorted[k] < o.Sorted[k];
+    return this->Tetra < o.Tetra;
+  }
+  bool SameFace(const Entry& o) const
+  {
+    return this->Sorted[0] == o.Sorted[0] && this->Sorted[1] == o.Sorted[1] && this->Sorted[2] == o.Sorted[2];
   }
 };
 
@@ -43,14 +53,16 @@ std::vector<amTetraFaces::Face> amTetraFaces::Find(
       std::sort(e.Sorted.begin(), e.Sorted.end());
       entries.push_back(e);
     }
-  std::sort(entries.begin(), entries.end());
+  // No two entries compare equal (a tetrahedron's faces differ), so the threads' sort gives the
+  // one order.
+  amThreading::Sort(entries.begin(), entries.end());
 
   auto labelOf = [&](vtkIdType t) { return labels ? labels[t] : 0; };
   std::vector<Face> faces;
   for (std::size_t k = 0; k < entries.size();)
   {
     std::size_t e = k + 1;
-    while (e < entries.size() && entries[e].Sorted == entries[k].Sorted)
+    while (e < entries.size() && entries[e].SameFace(entries[k]))
       ++e;
     const Entry* first = &entries[k];
     const Entry* second = e - k == 2 ? &entries[k + 1] : nullptr; // > 2: non-manifold, taken as boundary

@@ -1,5 +1,7 @@
 #include "amGmshWriter.h"
 
+#include "amTextOutput.h"
+
 #include "amAtomicFile.h"
 #include "amTetraFaces.h"
 
@@ -173,8 +175,8 @@ int amGmshWriter::WriteData(vtkDataObject* data)
     return 0;
   }
   {
-    std::ofstream out(file.TemporaryPath());
-    out.precision(17);
+    std::ofstream stream(file.TemporaryPath());
+    amTextOutput out(stream);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
     out << "$PhysicalNames\n" << byRegion.size() + surfaces.size() << "\n";
     // The organ's name where the mesh carries its label map's "LabelNames" (indexed by label).
@@ -253,7 +255,7 @@ int amGmshWriter::WriteData(vtkDataObject* data)
         out << ++tag << " " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
     }
     out << "$EndElements\n";
-    if (!out.flush())
+    if (!out.Flush())
     {
       vtkErrorMacro("Cannot write '" << target << "': output error (disk full?).");
       return 0;

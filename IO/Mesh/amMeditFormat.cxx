@@ -1,5 +1,7 @@
 #include "amMeditFormat.h"
 
+#include "amTextOutput.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -332,9 +334,9 @@ bool amMeditFormat::ReadSolution(std::istream& in, Mesh& mesh, std::string& erro
   return true;
 }
 
-bool amMeditFormat::WriteMesh(std::ostream& out, const Mesh& mesh)
+bool amMeditFormat::WriteMesh(std::ostream& stream, const Mesh& mesh)
 {
-  out << std::setprecision(std::numeric_limits<double>::max_digits10);
+  amTextOutput out(stream);
   out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.PointRefs.size() << "\n";
   for (size_t i = 0; i < mesh.PointRefs.size(); ++i)
     out << mesh.Points[3 * i] << " " << mesh.Points[3 * i + 1] << " " << mesh.Points[3 * i + 2] << " "
@@ -350,12 +352,12 @@ bool amMeditFormat::WriteMesh(std::ostream& out, const Mesh& mesh)
     }
   }
   out << "\nEnd\n";
-  return static_cast<bool>(out);
+  return out.Flush();
 }
 
-bool amMeditFormat::WriteSolution(std::ostream& out, const Mesh& mesh)
+bool amMeditFormat::WriteSolution(std::ostream& stream, const Mesh& mesh)
 {
-  out << std::setprecision(std::numeric_limits<double>::max_digits10);
+  amTextOutput out(stream);
   out << "MeshVersionFormatted 2\n\nDimension 3\n\nSolAtVertices\n"
       << mesh.PointRefs.size() << "\n"
       << mesh.Fields.size();
@@ -377,5 +379,5 @@ bool amMeditFormat::WriteSolution(std::ostream& out, const Mesh& mesh)
     out << "\n";
   }
   out << "\nEnd\n";
-  return static_cast<bool>(out);
+  return out.Flush();
 }
