@@ -238,7 +238,7 @@ TEST_P(RealLabelMaps, EveryLabelARegionThroughTetGen)
 }
 
 INSTANTIATE_TEST_SUITE_P(SharedData, RealLabelMaps,
-  ::testing::Values(RealMap{ amTest::FrogLabels, 2.0, 2.0, 1, 0 },
+  ::testing::Values(RealMap{ amTest::FrogLabels, 2.0, 2.0, 0, 0 },
     RealMap{ "totalseg_abdomen_ct_labels/example_seg.nii.gz", 1.0, 3.0, 0, 0 },
     RealMap{ "niivue_torso_labels/torsoLabel.nii.gz", 2.0, 1.56, 0, 0 }),
   RealMapName);

@@ -91,9 +91,10 @@ double Moved(const Mesh& m, const Tet& x)
 /// The rounds of one attempt with the given budget (mm): slivers' surface vertices slide (three
 /// quarters of it), slivers still bad change region (once each, within what the budget leaves
 /// where their vertices slid), a surface edge of those left is split, then the flips and moves
-/// run again.
-void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budget, amTetraMeshOptimizer::Report& report,
-  const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
+/// run again. 'relabelFirst': slivers change region before any slide too (a fin's element,
+/// removed while the whole budget is left there, before slides around it spend it).
+void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budget, bool relabelFirst,
+  amTetraMeshOptimizer::Report& report, const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
 {
   std::unordered_map<int, long> regionCount;
   for (size_t t = 0; t < m.T.size(); ++t)
@@ -106,6 +107,18 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
   {
     long changes = 0;
     const size_t limit = m.T.size();
+    auto relabel = [&]() {
+      for (size_t t = 0; t < limit; ++t)
+        if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options) && !relabelled.count(static_cast<int>(t)) &&
+          Relabel(m, static_cast<int>(t), budget - Moved(m, m.T[t]), regionCount) >= 0)
+        {
+          relabelled.insert(static_cast<int>(t));
+          ++report.Relabels;
+          ++changes;
+        }
+    };
+    if (relabelFirst)
+      relabel();
     for (size_t t = 0; t < limit; ++t)
       if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options))
         for (int w : Tet(m.T[t]))
@@ -114,14 +127,7 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
             ++report.SurfaceMoves;
             ++changes;
           }
-    for (size_t t = 0; t < limit; ++t)
-      if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options) && !relabelled.count(static_cast<int>(t)) &&
-        Relabel(m, static_cast<int>(t), budget - Moved(m, m.T[t]), regionCount) >= 0)
-      {
-        relabelled.insert(static_cast<int>(t));
-        ++report.Relabels;
-        ++changes;
-      }
+    relabel();
     for (size_t t = 0; t < limit; ++t)
       if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options))
       {
@@ -150,8 +156,9 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   // several act on one place. The deviation is measured, and the attempt is made again from the
   // same mesh with another budget: smaller after one that went past MaximumSurfaceDeviation,
   // between the two after one within it that left slivers (which slivers the rounds free
-  // depends on the budget in no simple way). The best within the bound is kept (fewest slivers,
-  // the larger budget of equals); none within it leaves the mesh as it was.
+  // depends on the budget in no simple way). Where four budgets leave slivers, four more are
+  // tried with the regions changed first (relabelFirst). The best within the bound is kept
+  // (fewest slivers, the first of equals); none within it leaves the mesh as it was.
   const std::vector<double> points = m.P;
   const Mesh saved = m;
   const amTetraMeshOptimizer::Report savedReport = report;
@@ -161,9 +168,15 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   long bestSlivers = -1;
   const double bound = options.MaximumSurfaceDeviation;
   double budget = bound, within = 0, past = std::numeric_limits<double>::infinity();
-  for (int attempt = 0; attempt < 4; ++attempt)
+  for (int attempt = 0; attempt < 8; ++attempt)
   {
-    Attempt(m, options, budget, report, improve, fixEdges);
+    if (attempt == 4)
+    {
+      budget = bound; // the search again, with the other order
+      within = 0;
+      past = std::numeric_limits<double>::infinity();
+    }
+    Attempt(m, options, budget, attempt >= 4, report, improve, fixEdges);
     const double deviation = SurfaceDeviation(m, surfaceBefore);
     const long slivers = CountSlivers(m, options);
     if (deviation <= bound)
@@ -182,7 +195,7 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
     }
     else
       past = std::min(past, budget);
-    if (attempt == 3)
+    if (attempt == 7)
       break;
     if (within == 0)
       budget *= 0.9 * bound / deviation;
