@@ -131,8 +131,9 @@ public:
   /// the region across its surface face, or a surface edge is split at its midpoint; the
   /// two-sided Hausdorff distance between the surface before and after is measured and kept
   /// within this bound (SurfaceDeviation). Which slivers those rounds free depends on how far
-  /// each operation may move the surface: up to four such budgets within the bound are tried
-  /// and the result with the fewest slivers kept. The triangles of output port 1 are then the mesh's
+  /// each operation may move the surface: up to four such budgets within the bound are tried,
+  /// four more with the regions changed before any slide where those leave slivers, and the
+  /// result with the fewest slivers kept. The triangles of output port 1 are then the mesh's
   /// faces anew: those that remain keep their cell data, new ones have SourceTriangle -1. The
   /// mesh's surface is thus within the remeshing's Hausdorff distance plus SurfaceDeviation of
   /// the label surface.
