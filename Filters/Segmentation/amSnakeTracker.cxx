@@ -213,10 +213,7 @@ bool amSnakeTracker::RunCoarse(double lo, double hi, std::vector<unsigned char>&
                 ++n;
               }
           fv[coarse(i, j, k)] = static_cast<float>(sum / n);
-          double d = 1e30;
-          for (size_t s = 0; s < this->Seeds.size(); ++s)
-            d = std::min(d, this->BallDistance(s, 2 * i + 0.5, 2 * j + 0.5, 2 * k + 0.5));
-          pv[coarse(i, j, k)] = static_cast<float>(d - radius);
+          pv[coarse(i, j, k)] = static_cast<float>(this->NearestSeed(2 * i + 0.5, 2 * j + 0.5, 2 * k + 0.5) - radius);
         }
   });
   const Parameters& p = this->P;
@@ -279,12 +276,8 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
       for (vtkIdType k = k0; k < k1; ++k)
         for (int j = 0; j < rd[1]; ++j)
           for (int i = 0; i < rd[0]; ++i)
-          {
-            double d = 1e30;
-            for (size_t s = 0; s < this->Seeds.size(); ++s)
-              d = std::min(d, this->BallDistance(s, i, j, static_cast<double>(k)));
-            pv[this->At(i, j, static_cast<int>(k))] = static_cast<float>(d - this->InitialRadius);
-          }
+            pv[this->At(i, j, static_cast<int>(k))] =
+              static_cast<float>(this->NearestSeed(i, j, static_cast<double>(k)) - this->InitialRadius);
     });
   }
   auto feature = NewImage<FloatImage<3>>(rd, this->Spacing);

@@ -19,6 +19,7 @@
 
 #include "AnatomeshFiltersSegmentationModule.h" // export macro
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -107,6 +108,14 @@ private:
                  dy = (j + this->Lo[1] - this->Seeds[s][1]) * this->Spacing[1],
                  dz = (k + this->Lo[2] - this->Seeds[s][2]) * this->Spacing[2];
     return std::sqrt(dx * dx + dy * dy + dz * dz);
+  }
+  /// Distance (mm) from voxel (i, j, k) of the region to the nearest seed's centre.
+  double NearestSeed(double i, double j, double k) const
+  {
+    double d = 1e30;
+    for (size_t s = 0; s < this->Seeds.size(); ++s)
+      d = std::min(d, this->BallDistance(s, i, j, k));
+    return d;
   }
   /// Voxel (iu, iv) of slice is, in-slice axes u, v as RunSlices and RunPolar take them.
   size_t AtSlice(int iu, int iv, int is) const

@@ -31,6 +31,13 @@ struct Job
   std::string File;
 };
 
+/// Whether the data has a VTK XML format here.
+bool Writable(vtkDataObject* data)
+{
+  return vtkUnstructuredGrid::SafeDownCast(data) || vtkPolyData::SafeDownCast(data) ||
+    vtkImageData::SafeDownCast(data);
+}
+
 /// A writer for the data's type, or null.
 vtkSmartPointer<vtkXMLWriter> WriterFor(vtkDataObject* data)
 {
@@ -157,7 +164,7 @@ amConcurrentXMLWriter::~amConcurrentXMLWriter()
 bool amConcurrentXMLWriter::Write(vtkDataObject* data, const char* fileName)
 {
   Internal& in = *this->Impl;
-  if (!data || !fileName || !*fileName || !WriterFor(data))
+  if (!data || !fileName || !*fileName || !Writable(data))
   {
     std::lock_guard<std::mutex> lock(in.Lock);
     if (in.Error.empty())

@@ -167,16 +167,17 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   amTetraMeshOptimizer::Report bestReport = savedReport;
   long bestSlivers = -1;
   const double bound = options.MaximumSurfaceDeviation;
+  constexpr int Budgets = 4; // per order of the operations
   double budget = bound, within = 0, past = std::numeric_limits<double>::infinity();
-  for (int attempt = 0; attempt < 8; ++attempt)
+  for (int attempt = 0; attempt < 2 * Budgets; ++attempt)
   {
-    if (attempt == 4)
+    if (attempt == Budgets)
     {
       budget = bound; // the search again, with the other order
       within = 0;
       past = std::numeric_limits<double>::infinity();
     }
-    Attempt(m, options, budget, attempt >= 4, report, improve, fixEdges);
+    Attempt(m, options, budget, attempt >= Budgets, report, improve, fixEdges);
     const double deviation = SurfaceDeviation(m, surfaceBefore);
     const long slivers = CountSlivers(m, options);
     if (deviation <= bound)
@@ -195,7 +196,7 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
     }
     else
       past = std::min(past, budget);
-    if (attempt == 7)
+    if (attempt == 2 * Budgets - 1)
       break;
     if (within == 0)
       budget *= 0.9 * bound / deviation;

@@ -394,7 +394,8 @@ class Pipeline:
         self.clock.seconds.update((s.name, 0.0) for s in self.steps)
         by_name = {s.name: s for s in self.steps}
         # The <Output> VTK XML files are written on worker threads while the next filters run.
-        files = _queue()
+        from anatomesh import amConcurrentXMLWriter
+        files = amConcurrentXMLWriter()
         collections = []
         for step in self.steps:
             if not step.proxy.is_writer:
@@ -415,10 +416,9 @@ class Pipeline:
                 raise self._failure(by_name, step, errors, "no output")
             _make_parent(path, self, line)
             if os.path.splitext(path)[1].lower() == ".pvd":
-                frames = write_time_series(algorithm, index, path,
-                                           lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None,
-                                           watcher.clock, files, collections)
-                written.extend(frames)
+                written.extend(write_time_series(algorithm, index, path,
+                                                 lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None,
+                                                 watcher.clock, files, collections))
                 self.written_data[path] = algorithm.GetOutputDataObject(index)
                 continue
             with watcher.clock.running(WRITING):
@@ -538,15 +538,9 @@ def _write_csv(table, path):
             os.remove(tmp)
 
 
-def _queue():
-    """A writer of VTK XML files on worker threads (amConcurrentXMLWriter)."""
-    from anatomesh import amConcurrentXMLWriter
-    return amConcurrentXMLWriter()
-
-
 def _finish(files):
     """Wait for the files queued; a failure (a full disk, say) is an error naming the file."""
-    if files is not None and not files.Finish():
+    if not files.Finish():
         raise PipelineError(files.GetErrorMessage())
 
 
@@ -660,40 +654,39 @@ def _alive(pid):
 
 def write_vtk_xml(data, path, files=None):
     """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm), or a table to .csv, atomically.
-    With 'files' (an amConcurrentXMLWriter) a .vti, .vtp or .vtu is queued there instead: written on
-    a worker thread, done when files.Finish() returns."""
-    from vtkmodules.vtkIOXML import (vtkXMLImageDataWriter, vtkXMLPolyDataWriter,
-                                     vtkXMLUnstructuredGridWriter, vtkXMLMultiBlockDataWriter)
-    writers = {".vti": vtkXMLImageDataWriter, ".vtp": vtkXMLPolyDataWriter,
-               ".vtu": vtkXMLUnstructuredGridWriter, ".vtm": vtkXMLMultiBlockDataWriter}
+    A .vti, .vtp or .vtu goes through amConcurrentXMLWriter (its format settings are the project's
+    one copy): queued on 'files' when given (written on a worker thread, done when files.Finish()
+    returns), else written before this returns."""
+    holds = {".vti": "vtkImageData", ".vtp": "vtkPolyData", ".vtu": "vtkUnstructuredGrid",
+             ".vtm": "vtkMultiBlockDataSet"}
     ext = os.path.splitext(path)[1].lower()
     if ext == ".csv":
         _write_csv(data, path)
         return
-    if ext not in writers:
-        raise PipelineError("%s: unknown output extension %r (use %s)" % (path, ext, ", ".join(sorted(writers))))
-    holds = {".vti": "vtkImageData", ".vtp": "vtkPolyData", ".vtu": "vtkUnstructuredGrid",
-             ".vtm": "vtkMultiBlockDataSet"}
+    if ext not in holds:
+        raise PipelineError("%s: unknown output extension %r (use %s)" % (path, ext, ", ".join(sorted(holds))))
     if not data.IsA(holds[ext]):
         fits = [e for e, kind in sorted(holds.items()) if data.IsA(kind)]
         raise PipelineError("%s: a %s file holds a %s, but this output is a %s%s" % (
             path, ext, holds[ext], data.GetClassName(), " (use %s)" % fits[0] if fits else ""))
-    if not data.IsA("vtkMultiBlockDataSet"):
-        data = _plain_field_data(data)
-        if files is not None:
-            if not files.Write(data, path):
-                raise PipelineError(files.GetErrorMessage())
-            return
-    writer = writers[ext]()
+    if ext != ".vtm":
+        from anatomesh import amConcurrentXMLWriter
+        queue = files if files is not None else amConcurrentXMLWriter()
+        if not queue.Write(_plain_field_data(data), path):
+            raise PipelineError(queue.GetErrorMessage())
+        if files is None:
+            _finish(queue)
+        return
+    from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
+    writer = vtkXMLMultiBlockDataWriter()
     folder, base = os.path.split(os.path.abspath(path))
     tmp = temporary_path(folder, os.path.splitext(base)[0], ext)
     writer.SetFileName(tmp)
     writer.SetInputData(data)
-    # Inline base64 ("binary"), not appended: Debian 12's expat (2.5.0+deb12u5, with the backported
-    # reparse deferral) breaks VTK 9.2's reading of appended data beyond a few kB.
+    # As amConcurrentXMLWriter writes: inline base64 (Debian 12's expat breaks VTK 9.2's reading of
+    # appended data), zlib's fastest level.
     writer.SetDataModeToBinary()
     writer.SetCompressorTypeToZLib()
-    # zlib's fastest level: the time series write hundreds of frames, and every zlib reader reads it.
     writer.SetCompressionLevel(1)
     try:
         if not writer.Write() or writer.GetErrorCode() or not os.path.exists(tmp):
