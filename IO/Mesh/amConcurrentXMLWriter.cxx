@@ -2,9 +2,11 @@
 
 #include "amAtomicFile.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkErrorCode.h"
+#include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
@@ -28,6 +30,7 @@ namespace
 struct Job
 {
   vtkSmartPointer<vtkDataObject> Data;
+  vtkSmartPointer<vtkAlgorithm> Writer; // or a writer to execute, its input a copy of its own
   std::string File;
 };
 
@@ -59,9 +62,48 @@ void KeepMessage(vtkObject*, unsigned long, void* clientData, void* callData)
     *message = static_cast<const char*>(callData);
 }
 
-/// Writes one file; an empty string, or why it failed.
-std::string WriteOne(const Job& job, int level)
+/// Each warning, caught the same way.
+void KeepWarning(vtkObject*, unsigned long, void* clientData, void* callData)
 {
+  if (callData)
+    static_cast<std::vector<std::string>*>(clientData)->emplace_back(static_cast<const char*>(callData));
+}
+
+/// The text after VTK's "class (0x...): " prefix.
+std::string Body(const std::string& message)
+{
+  const std::size_t colon = message.rfind("): ");
+  return message.substr(colon == std::string::npos ? 0 : colon + 3);
+}
+
+/// Executes a queued writer; an empty string, or why it failed. Its warnings are appended.
+std::string RunWriter(const Job& job, std::vector<std::string>& warnings)
+{
+  std::string message;
+  vtkNew<vtkCallbackCommand> keep, warn;
+  keep->SetCallback(KeepMessage);
+  keep->SetClientData(&message);
+  warn->SetCallback(KeepWarning);
+  warn->SetClientData(&warnings);
+  vtkAlgorithm* writer = job.Writer;
+  const unsigned long errorTag = writer->AddObserver(vtkCommand::ErrorEvent, keep);
+  const unsigned long warningTag = writer->AddObserver(vtkCommand::WarningEvent, warn);
+  const unsigned long executiveTag = writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, keep);
+  writer->Modified();
+  const int ok = writer->GetExecutive()->Update();
+  writer->GetExecutive()->RemoveObserver(executiveTag);
+  writer->RemoveObserver(warningTag);
+  writer->RemoveObserver(errorTag);
+  if (!message.empty())
+    return Body(message);
+  return ok ? std::string() : std::string("the writer reported no success");
+}
+
+/// Writes one file; an empty string, or why it failed.
+std::string WriteOne(const Job& job, int level, std::vector<std::string>& warnings)
+{
+  if (job.Writer)
+    return RunWriter(job, warnings);
   amAtomicFile file(job.File);
   std::string why;
   if (!file.CanWrite(why))
@@ -86,9 +128,7 @@ std::string WriteOne(const Job& job, int level)
   {
     if (code != vtkErrorCode::NoError)
       return vtkErrorCode::GetStringFromErrorCode(code);
-    const std::size_t colon = message.rfind("): ");
-    return message.empty() ? "the VTK XML writer failed"
-                           : message.substr(colon == std::string::npos ? 0 : colon + 3);
+    return message.empty() ? "the VTK XML writer failed" : Body(message);
   }
   if (!file.Commit(why))
     return why;
@@ -106,6 +146,7 @@ struct amConcurrentXMLWriter::Internal
   bool Stopping = false;
   int Level = 1;
   std::string Error;
+  std::vector<std::string> Warnings;
 
   void Work()
   {
@@ -121,9 +162,13 @@ struct amConcurrentXMLWriter::Internal
         this->Queue.pop_front();
         ++this->Busy;
       }
-      const std::string why = WriteOne(job, this->Level);
+      std::vector<std::string> warnings;
+      const std::string why = WriteOne(job, this->Level, warnings);
       job.Data = nullptr; // released on this thread, before the caller may wait for an empty queue
+      job.Writer = nullptr;
       std::lock_guard<std::mutex> lock(this->Lock);
+      for (const std::string& w : warnings)
+        this->Warnings.push_back(job.File + ": " + w);
       if (!why.empty() && this->Error.empty())
       {
         this->Error = job.File + ": " + why;
@@ -179,12 +224,7 @@ bool amConcurrentXMLWriter::Write(vtkDataObject* data, const char* fileName)
   std::unique_lock<std::mutex> lock(in.Lock);
   if (!in.Error.empty())
     return false;
-  if (in.Workers.empty())
-  {
-    in.Level = this->CompressionLevel;
-    for (int t = 0; t < this->NumberOfThreads; ++t)
-      in.Workers.emplace_back([&in]() { in.Work(); });
-  }
+  this->StartWorkers();
   const std::size_t most = 2 * static_cast<std::size_t>(this->NumberOfThreads);
   in.Changed.wait(lock, [&]() { return in.Queue.size() < most || !in.Error.empty(); });
   if (!in.Error.empty())
@@ -192,6 +232,58 @@ bool amConcurrentXMLWriter::Write(vtkDataObject* data, const char* fileName)
   in.Queue.push_back(std::move(job));
   in.Changed.notify_all();
   return true;
+}
+
+void amConcurrentXMLWriter::StartWorkers()
+{
+  Internal& in = *this->Impl;
+  if (!in.Workers.empty())
+    return;
+  in.Level = this->CompressionLevel;
+  for (int t = 0; t < this->NumberOfThreads; ++t)
+    in.Workers.emplace_back([&in]() { in.Work(); });
+}
+
+bool amConcurrentXMLWriter::QueueWriter(vtkAlgorithm* writer, const char* fileName)
+{
+  Internal& in = *this->Impl;
+  const std::string file = fileName && *fileName ? fileName : "(no file name)";
+  vtkDataObject* data = writer && writer->GetNumberOfInputPorts() == 1 && writer->GetNumberOfInputConnections(0) == 1
+    ? writer->GetInputDataObject(0, 0)
+    : nullptr;
+  if (!data)
+  {
+    std::lock_guard<std::mutex> lock(in.Lock);
+    if (in.Error.empty())
+      in.Error = file + ": " + (writer ? "the writer has no input data of one connection" : "no writer");
+    return false;
+  }
+  vtkSmartPointer<vtkDataObject> copy;
+  copy.TakeReference(data->NewInstance());
+  copy->DeepCopy(data);
+  Job job;
+  job.Writer = writer;
+  job.File = file;
+  std::unique_lock<std::mutex> lock(in.Lock);
+  if (!in.Error.empty())
+    return false;
+  writer->SetInputDataObject(0, copy);
+  this->StartWorkers();
+  in.Queue.push_back(std::move(job));
+  in.Changed.notify_all();
+  return true;
+}
+
+int amConcurrentXMLWriter::GetNumberOfWarnings()
+{
+  std::lock_guard<std::mutex> lock(this->Impl->Lock);
+  return static_cast<int>(this->Impl->Warnings.size());
+}
+
+const char* amConcurrentXMLWriter::GetWarning(int i)
+{
+  std::lock_guard<std::mutex> lock(this->Impl->Lock);
+  return i >= 0 && i < static_cast<int>(this->Impl->Warnings.size()) ? this->Impl->Warnings[i].c_str() : "";
 }
 
 bool amConcurrentXMLWriter::Finish()

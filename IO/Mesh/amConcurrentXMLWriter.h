@@ -1,6 +1,7 @@
 /**
  * @class   amConcurrentXMLWriter
- * @brief   Writes VTK XML files (.vtu, .vtp, .vti) on worker threads while the caller goes on.
+ * @brief   Writes VTK XML files (.vtu, .vtp, .vti), and runs queued writers, on worker threads
+ *          while the caller goes on.
  *
  * Write() queues a deep copy of the data and returns at once; the workers compress and write the
  * queued files, each through a temporary file beside its target renamed when complete (no reader
@@ -21,6 +22,7 @@
 #include "AnatomeshIOMeshModule.h" // export macro
 #include "vtkObject.h"
 
+class vtkAlgorithm;
 class vtkDataObject;
 
 class ANATOMESHIOMESH_EXPORT amConcurrentXMLWriter : public vtkObject
@@ -48,6 +50,21 @@ public:
   /// those types or a file already failed.
   bool Write(vtkDataObject* data, const char* fileName);
 
+  /// Queues a writer that writes its input when it executes (amImageWriter, amMeditWriter,
+  /// amGmshWriter), to execute on a worker thread: its one input is replaced by a deep copy of the
+  /// data it has now (update the input first), so the caller may go on with the pipeline. The
+  /// writer must have no observers that need the calling thread (Python callbacks): remove them
+  /// first. Its first error fails the queue as a file's would (GetErrorMessage() then names
+  /// 'fileName'); its warnings are kept (GetWarning()). Queues above the 2 x NumberOfThreads of
+  /// Write() without waiting: a writer is queued once, not frame after frame. False, queuing
+  /// nothing, when it has no input data or a file already failed.
+  bool QueueWriter(vtkAlgorithm* writer, const char* fileName);
+
+  /// The warnings of the queued writers so far: "<file>: <message>" (VTK's text, with its file,
+  /// line and class).
+  int GetNumberOfWarnings();
+  const char* GetWarning(int i);
+
   /// Waits until every queued file is written. False when one failed (see GetErrorMessage()).
   bool Finish();
 
@@ -61,6 +78,8 @@ protected:
 private:
   amConcurrentXMLWriter(const amConcurrentXMLWriter&) = delete;
   void operator=(const amConcurrentXMLWriter&) = delete;
+
+  void StartWorkers(); // with the queue's lock held
 
   struct Internal;
   Internal* Impl;

@@ -1,21 +1,29 @@
 // amConcurrentXMLWriter: a series of frames written on worker threads, byte for byte what one
 // vtkXML*Writer writes, whatever the thread count; the data copied when queued; a folder that does
-// not exist and a type with no format are errors naming the file, with no file left behind.
+// not exist and a type with no format are errors naming the file, with no file left behind; a
+// queued writer writes the bytes it writes alone, its warnings and errors kept with its file.
 #include "amConcurrentXMLWriter.h"
+#include "amGmshWriter.h"
+#include "amMeditWriter.h"
 #include "amTestUtilities.h"
 
+#include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
+#include "vtkPoints.h"
 #include "vtkTable.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -142,4 +150,73 @@ TEST(ConcurrentXMLWriter, FailuresNameTheFileAndLeaveNone)
     << tables->GetErrorMessage();
   EXPECT_FALSE(tables->Finish());
   EXPECT_FALSE(Exists(csv));
+}
+
+namespace
+{
+/// Two tetrahedra sharing a face, regions 1 and 2.
+vtkSmartPointer<vtkUnstructuredGrid> TwoTetrahedra()
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  for (const auto& p : { std::array<double, 3>{ 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 1 } })
+    points->InsertNextPoint(p.data());
+  grid->SetPoints(points);
+  const vtkIdType a[4] = { 0, 1, 2, 3 }, b[4] = { 1, 2, 3, 4 };
+  grid->InsertNextCell(VTK_TETRA, 4, a);
+  grid->InsertNextCell(VTK_TETRA, 4, b);
+  vtkNew<vtkIntArray> region;
+  region->SetName("Region");
+  region->InsertNextValue(1);
+  region->InsertNextValue(2);
+  grid->GetCellData()->AddArray(region);
+  return grid;
+}
+}
+
+TEST(ConcurrentXMLWriter, QueuedWritersWriteWhatTheyWouldHaveWritten)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = TwoTetrahedra();
+  const std::string direct = amTest::TempPath("direct.mesh"), queued = amTest::TempPath("queued.mesh");
+  vtkNew<amMeditWriter> one;
+  one->SetInputData(grid);
+  one->SetFileName(direct.c_str());
+  ASSERT_EQ(one->Write(), 1);
+
+  vtkNew<amConcurrentXMLWriter> files;
+  vtkNew<amMeditWriter> writer;
+  writer->SetInputData(grid);
+  writer->SetFileName(queued.c_str());
+  ASSERT_TRUE(files->QueueWriter(writer, queued.c_str()));
+  // The data was copied when queued: a change now is not written.
+  grid->GetPoints()->SetPoint(4, 2, 2, 2);
+  ASSERT_TRUE(files->Finish()) << files->GetErrorMessage();
+  EXPECT_EQ(Read(queued), Read(direct));
+  EXPECT_EQ(files->GetNumberOfWarnings(), 0);
+
+  // A writer's warning is kept with its file; its error fails the queue, naming the file.
+  vtkNew<amConcurrentXMLWriter> more;
+  grid->GetCellData()->GetArray("Region")->SetComponent(1, 0, 1234);
+  const std::string warned = amTest::TempPath("warned.msh"), missing = amTest::TempPath("no_such_folder/x.msh");
+  vtkNew<amGmshWriter> gmsh, broken;
+  gmsh->SetInputData(grid);
+  gmsh->SetFileName(warned.c_str());
+  broken->SetInputData(grid);
+  broken->SetFileName(missing.c_str());
+  ASSERT_TRUE(more->QueueWriter(gmsh, warned.c_str()));
+  ASSERT_TRUE(more->Finish());
+  ASSERT_EQ(more->GetNumberOfWarnings(), 1);
+  EXPECT_EQ(std::string(more->GetWarning(0)).rfind(warned + ": ", 0), 0u) << more->GetWarning(0);
+  EXPECT_STREQ(more->GetWarning(1), "");
+  EXPECT_TRUE(Exists(warned));
+  ASSERT_TRUE(more->QueueWriter(broken, missing.c_str()));
+  EXPECT_FALSE(more->Finish());
+  EXPECT_EQ(std::string(more->GetErrorMessage()).rfind(missing + ": ", 0), 0u) << more->GetErrorMessage();
+  EXPECT_FALSE(Exists(missing));
+
+  // A writer without input is refused.
+  vtkNew<amConcurrentXMLWriter> none;
+  vtkNew<amMeditWriter> empty;
+  EXPECT_FALSE(none->QueueWriter(empty, "empty.mesh"));
+  EXPECT_NE(std::string(none->GetErrorMessage()).find("no input"), std::string::npos) << none->GetErrorMessage();
 }

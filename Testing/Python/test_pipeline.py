@@ -55,7 +55,11 @@ class ThoraxJob(unittest.TestCase):
                  "save_surface_mesh", "tets", "quality", "save_volume_mesh", "save_gmsh", "heart", "torso",
                  "save_ct", "save_truth", "save_labels", "(outputs)", "(other)"]
         self.assertEqual([l.split()[0] for l in table[1:len(names) + 1]], names)
-        self.assertRegex(stdout, r"heart +FitzHughNagumoSolver +[0-9.]+ s +[0-9.]+ % +\(\d+ runs\)")
+        self.assertRegex(stdout, r"heart +FitzHughNagumoSolver +[0-9.]+ s +[0-9.]+ % +[0-9.]+ +\(\d+ runs\)")
+        # Cores kept busy: CPU seconds per wall second, more than none and at most the machine's
+        # cores (plus the clocks' granularity).
+        tets = next(l for l in table if l.split()[0] == "tets").split()
+        self.assertTrue(0.0 < float(tets[6]) <= os.cpu_count() + 0.1, tets)
         total = float(table[len(names) + 1].split()[1])
         done = float(re.search(r"Done in ([0-9.]+) s", stdout).group(1))
         self.assertLessEqual(total, done + 0.05)

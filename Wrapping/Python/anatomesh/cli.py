@@ -140,14 +140,16 @@ def _timing(pipeline, stages, out):
     feeding a time series runs once per frame)."""
     total = sum(stages.values())
     types = {s.name: s.proxy.name for s in pipeline.steps}
-    runs = pipeline.clock.runs
-    out.write("Seconds per filter (its own execution):\n")
+    runs, cpu = pipeline.clock.runs, pipeline.clock.cpu
+    out.write("Seconds per filter (its own execution; cores: CPU seconds of all threads per second):\n")
     for name, seconds in stages.items():
         times = runs.get(name, 0)
-        out.write("  %-24s %-24s %8.1f s %5.1f %%%s\n" % (
-            name, types.get(name, ""), seconds, 100.0 * seconds / total if total else 0.0,
+        cores = "%5.2f" % (cpu[name] / seconds) if name in cpu and seconds >= 0.05 else ""
+        out.write("  %-24s %-24s %8.1f s %5.1f %%  %5s%s\n" % (
+            name, types.get(name, ""), seconds, 100.0 * seconds / total if total else 0.0, cores,
             "  (%d runs)" % times if times > 1 else ""))
-    out.write("  %-24s %-24s %8.1f s\n" % ("total", "", total))
+    all_cpu = sum(cpu.values())
+    out.write("  %-24s %-24s %8.1f s          %5.2f\n" % ("total", "", total, all_cpu / total if total else 0.0))
 
 
 def _version():

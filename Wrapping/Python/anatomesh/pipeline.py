@@ -393,19 +393,32 @@ class Pipeline:
         self.clock = watcher.clock  # each filter's own execution time, and the <Output> files'
         self.clock.seconds.update((s.name, 0.0) for s in self.steps)
         by_name = {s.name: s for s in self.steps}
-        # The <Output> VTK XML files are written on worker threads while the next filters run.
+        # The writers and the <Output> VTK XML files run on worker threads while the next filters
+        # run: a writer's input is updated here, then the writer takes a copy of it to a worker.
         from anatomesh import amConcurrentXMLWriter
         files = amConcurrentXMLWriter()
         collections = []
+        writers = {}  # file name: the writer step
         for step in self.steps:
             if not step.proxy.is_writer:
                 continue
-            _make_parent(step.algorithm.GetFileName(), self, step.line)
-            ok = step.algorithm.Write()
-            if errors or not ok:
-                raise self._failure(by_name, step, errors, "the writer reported no success")
-            written.append(step.algorithm.GetFileName())
-            self.written_data[written[-1]] = step.algorithm.GetInputDataObject(0, 0)
+            algorithm = step.algorithm
+            path = algorithm.GetFileName()
+            _make_parent(path, self, step.line)
+            connection = algorithm.GetInputConnection(0, 0)
+            upstream = connection.GetProducer()
+            upstream.Update(connection.GetIndex())
+            data = upstream.GetOutputDataObject(connection.GetIndex())
+            if errors or data is None:
+                raise self._failure(by_name, step, errors, "no input")
+            # No Python observer may run on the worker: the writer's time is the queue's.
+            algorithm.RemoveAllObservers()
+            algorithm.GetExecutive().RemoveAllObservers()
+            if not files.QueueWriter(algorithm, path):
+                raise self._writer_failure(writers, files)
+            writers[path] = step
+            written.append(path)
+            self.written_data[path] = data
         for upstream, port, path, line in self.outputs:
             step = by_name[upstream]
             index = self._port_index(step, port, line)
@@ -426,11 +439,26 @@ class Pipeline:
             written.append(path)
             self.written_data[path] = algorithm.GetOutputDataObject(index)
         with watcher.clock.running(WRITING):
-            _finish(files)
+            finished = files.Finish()
+            for i in range(files.GetNumberOfWarnings()):
+                path, _, text = files.GetWarning(i).partition(": ")
+                step = writers.get(path)
+                sys.stderr.write("anatomesh: warning: %s: %s\n" % (step.name if step else path, _message_body(text)))
+            if not finished:
+                raise self._writer_failure(writers, files)
             for commit in collections:
                 commit()
         watcher.finish()
         return written
+
+    def _writer_failure(self, writers, files):
+        """The queue's first failure: named after its writer step when a writer failed."""
+        message = files.GetErrorMessage()
+        path, _, why = message.partition(": ")
+        step = writers.get(path)
+        if step is None:
+            return PipelineError(message)
+        return self._error(step.line, "filter %r (%s) failed: %s" % (step.name, step.proxy.name, why))
 
 
 WRITING = "(outputs)"
@@ -448,20 +476,14 @@ class _Watcher:
         algorithm.AddObserver("EndEvent", lambda obj, event: self.clock.stop(name))
         def error_cb(obj, event, data=None):
             message = str(data) if data is not None else "error"
-            # VTK's text: "ERROR: In file, line N\nclass (0x..): message"
-            text = message.strip().splitlines()
-            body = text[-1] if text else message
-            body = re.sub(r"^\w+ \(0x[0-9a-f]+\): ", "", body)
-            self.errors.append((name, body.strip()))
+            self.errors.append((name, _message_body(message) or message))
 
         error_cb.CallDataType = "string0"
         algorithm.AddObserver("ErrorEvent", error_cb)
 
         def warning_cb(obj, event, data=None):
             # One plain line naming the filter (VTK would print its file, line and object address).
-            text = (str(data) if data is not None else "").strip().splitlines()
-            body = re.sub(r"^\w+ \(0x[0-9a-f]+\): ", "", text[-1] if text else "")
-            sys.stderr.write("anatomesh: warning: %s: %s\n" % (name, body.strip()))
+            sys.stderr.write("anatomesh: warning: %s: %s\n" % (name, _message_body(str(data) if data is not None else "")))
 
         warning_cb.CallDataType = "string0"
         algorithm.AddObserver("WarningEvent", warning_cb)
@@ -478,27 +500,43 @@ class _Watcher:
             self.progress(None, 1.0)
 
 
+def _message_body(message):
+    """VTK's text "ERROR: In file, line N\\nclass (0x..): message" as its message alone."""
+    text = message.strip().splitlines()
+    return re.sub(r"^\w+ \(0x[0-9a-f]+\): ", "", text[-1] if text else "").strip()
+
+
 class StageClock:
     """Wall seconds per stage, each stage's own: a stage that starts while another runs (an upstream
-    filter updated from inside a filter) pauses the other's clock until it ends."""
+    filter updated from inside a filter) pauses the other's clock until it ends. The process's CPU
+    seconds (all its threads) are counted the same way, so cpu / seconds tells how many cores a stage
+    kept busy (the output files' worker threads add to whichever stage runs while they write)."""
 
     def __init__(self):
-        self.seconds, self.runs, self.stack = {}, {}, []
+        self.seconds, self.cpu, self.runs, self.stack = {}, {}, {}, []
+
+    @staticmethod
+    def _now():
+        return time.perf_counter(), time.process_time()
+
+    def _add(self, name, now, since):
+        self.seconds[name] = self.seconds.get(name, 0.0) + now[0] - since[0]
+        self.cpu[name] = self.cpu.get(name, 0.0) + now[1] - since[1]
 
     def start(self, name):
-        now = time.perf_counter()
+        now = self._now()
         self.runs[name] = self.runs.get(name, 0) + 1
         if self.stack:
             outer, since = self.stack[-1]
-            self.seconds[outer] = self.seconds.get(outer, 0.0) + now - since
+            self._add(outer, now, since)
         self.stack.append((name, now))
 
     def stop(self, name):
-        now = time.perf_counter()
+        now = self._now()
         if not self.stack or self.stack[-1][0] != name:
             return  # an end without its start (an observer added mid-run): nothing to count
         _, since = self.stack.pop()
-        self.seconds[name] = self.seconds.get(name, 0.0) + now - since
+        self._add(name, now, since)
         if self.stack:
             self.stack[-1] = (self.stack[-1][0], now)
 
