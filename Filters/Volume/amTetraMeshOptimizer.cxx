@@ -196,17 +196,9 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     // (in the sliver rounds, only where something changed since the last pass).
     const size_t nv = m.Inc.size();
     const std::vector<char> changed = m.Dirty;
-    for (size_t v = 0; v < nv; ++v)
-    {
-      if (m.FixedVertex[v] || !m.Dirty[v])
-        continue;
-      m.Dirty[v] = 0;
-      if (Smooth(m, static_cast<int>(v)))
-      {
-        ++report.Moves;
-        ++changes;
-      }
-    }
+    const long smoothed = SmoothAll(m, nv);
+    report.Moves += smoothed;
+    changes += smoothed;
     std::vector<char> climb(nv, 0);
     for (size_t t = 0; t < m.T.size(); ++t)
       if (m.Alive[t] && m.Q[t] < poor)

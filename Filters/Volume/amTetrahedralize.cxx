@@ -10,6 +10,7 @@
 #include "amTetraMeshOptimizer.h"
 #include "amTetraRegions.h"
 #include "amTetraSurfaceCheck.h"
+#include "amThreading.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -64,6 +65,7 @@ amTetrahedralize::amTetrahedralize()
 {
   this->SetSizeArrayName("Size");
   this->SetNumberOfOutputPorts(2);
+  amThreading::Initialize();
 }
 
 amTetrahedralize::~amTetrahedralize()

@@ -3,10 +3,13 @@
 #include "amTetraGeometry.h"
 #include "amTetraImproveMesh.h"
 
+#include "vtkSMPTools.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -92,4 +95,81 @@ TEST(TetraImprove, SplitFaceUndoneBelowItsGoalAndNeverOnAFixedFace)
   EXPECT_EQ(cap.Alive(), 2);
   // A face on one element only (the mesh's boundary) has nothing to split into.
   EXPECT_FALSE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 3), 0.2));
+}
+
+// SmoothAll makes its blocks' choices on two threads at once, and takes them in order: the mesh
+// it leaves is, bit for bit, the serial loop's (a lattice of cubes in six tetrahedra each, its
+// inner vertices jittered, three blocks of vertices).
+TEST(TetraImprove, SmoothAllIsTheSerialLoopBitForBit)
+{
+  const int n = 22; // vertices per side
+  std::vector<double> points;
+  std::uint64_t state = 12345;
+  auto jitter = [&state]() {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 0.6;
+  };
+  auto id = [n](int i, int j, int k) { return (k * n + j) * n + i; };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const bool inner = i > 0 && j > 0 && k > 0 && i < n - 1 && j < n - 1 && k < n - 1;
+        points.push_back(i + (inner ? jitter() : 0));
+        points.push_back(j + (inner ? jitter() : 0));
+        points.push_back(k + (inner ? jitter() : 0));
+      }
+  auto build = [&](std::vector<double>& p, amTetraImprove::Mesh& m) {
+    const size_t nv = p.size() / 3;
+    m.Inc.resize(nv);
+    m.FixedVertex.assign(nv, 0);
+    m.Dirty.assign(nv, 1);
+    static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+    for (int k = 0; k + 1 < n; ++k)
+      for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i)
+          for (const auto& a : axes)
+          {
+            int c[3] = { i, j, k };
+            Tet t;
+            t[0] = id(c[0], c[1], c[2]);
+            for (int s = 0; s < 3; ++s)
+            {
+              ++c[a[s]];
+              t[s + 1] = id(c[0], c[1], c[2]);
+            }
+            if (amTetraGeometry::SignedVolume(&p[3 * t[0]], &p[3 * t[1]], &p[3 * t[2]], &p[3 * t[3]]) < 0)
+              std::swap(t[2], t[3]);
+            m.Add(t, 1);
+          }
+    for (int v = 0; v < static_cast<int>(nv); ++v)
+    {
+      const int i = v % n, j = (v / n) % n, k = v / (n * n);
+      m.FixedVertex[v] = i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1;
+    }
+  };
+  std::vector<double> serialPoints = points, blockPoints = points;
+  amTetraImprove::Mesh serial(serialPoints), blocks(blockPoints);
+  build(serialPoints, serial);
+  build(blockPoints, blocks);
+  ASSERT_GT(serial.Inc.size(), 2 * 4096u);
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    long serialMoves = 0;
+    for (size_t v = 0; v < serial.Inc.size(); ++v)
+    {
+      if (serial.FixedVertex[v] || !serial.Dirty[v])
+        continue;
+      serial.Dirty[v] = 0;
+      serialMoves += amTetraImprove::Smooth(serial, static_cast<int>(v));
+    }
+    const long blockMoves = amTetraImprove::SmoothAll(blocks, blocks.Inc.size());
+    EXPECT_GT(serialMoves, 1000);
+    EXPECT_EQ(blockMoves, serialMoves);
+    EXPECT_TRUE(serialPoints == blockPoints) << "pass " << pass;
+    EXPECT_TRUE(serial.Q == blocks.Q);
+    EXPECT_TRUE(serial.Dirty == blocks.Dirty);
+  }
 }

@@ -178,6 +178,14 @@ void MoveVertex(Mesh& m, int v, const double* x);
 /// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's
 /// worst element at least as good and lowers its mean Q.
 bool Smooth(Mesh& m, int v);
+/// Smooth's choice without the move: the position (in 'to') and whether there is one. It reads
+/// only v's star (the positions of its vertices and the objectives of its elements).
+bool SmoothTarget(const Mesh& m, int v, double* to);
+/// Smooth over the vertices 0 .. n-1 in order, for each free one whose Dirty flag is set when its
+/// turn comes (the flag cleared), exactly as that serial loop would: blocks of vertices have their
+/// choices made on the threads at once, then taken in order, and a vertex whose star a move
+/// in its block changed before its turn is smoothed again then. Returns the moves.
+long SmoothAll(Mesh& m, size_t n);
 /// Local search: moves v along the numerical gradient of its star's worst quality; with a finite
 /// 'radius', only where the fixed faces around v stay within that distance of where they were
 /// (StarDeviation): a surface vertex slides along a flat surface freely, off it only so far.

@@ -55,9 +55,7 @@ void MoveVertex(Mesh& m, int v, const double* x)
   }
 }
 
-/// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's
-/// worst element at least as good and lowers its mean Q.
-bool Smooth(Mesh& m, int v)
+bool SmoothTarget(const Mesh& m, int v, double* bestPos)
 {
   const auto& inc = m.Inc[v];
   if (inc.empty())
@@ -90,7 +88,7 @@ bool Smooth(Mesh& m, int v)
     targets[0][d] = centroid[d] / mass;
     targets[1][d] = neighbours[d] / count;
   }
-  double bestSum = sum0 * (1 - 1e-9), bestPos[3];
+  double bestSum = sum0 * (1 - 1e-9);
   bool found = false;
   for (const auto& target : targets)
     for (double f : { 1.0, 0.5, 0.25 })
@@ -107,9 +105,16 @@ bool Smooth(Mesh& m, int v)
         found = true;
       }
     }
-  if (found)
-    MoveVertex(m, v, bestPos);
   return found;
+}
+
+bool Smooth(Mesh& m, int v)
+{
+  double y[3];
+  if (!SmoothTarget(m, v, y))
+    return false;
+  MoveVertex(m, v, y);
+  return true;
 }
 
 /// Local search: moves v along the numerical gradient of its star's worst quality (with a finite
