@@ -130,7 +130,6 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
   const double bad = 1.0 / options.FlipQuality, poor = 1.0 / options.SearchQuality,
                split = 1.0 / options.SplitQuality;
   const int maxRing = std::min(options.MaxRing, 15);
-  std::vector<int> ringTets, ring;
   const int rounds = options.MaximumSurfaceDeviation > 0 ? std::max(0, options.SliverRounds) : 0;
   auto improve = [&](int round) {
   const int passes = round == 0 ? options.Passes : std::min(options.Passes, 2);
@@ -138,60 +137,7 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
   {
     long changes = 0;
     // Topology: the bad tetrahedra's edges, then faces.
-    const size_t limit = m.T.size();
-    for (size_t t = 0; t < limit; ++t)
-    {
-      if (!m.Alive[t] || m.Tried[t] || m.Q[t] >= bad)
-        continue;
-      bool done = false;
-      static const int edges[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
-      for (int e = 0; e < 6 && !done; ++e)
-        done = RemoveEdge(m, m.T[t][edges[e][0]], m.T[t][edges[e][1]], maxRing, ringTets, ring);
-      if (done)
-      {
-        ++report.EdgeRemovals;
-        ++changes;
-        continue;
-      }
-      for (int i = 0; i < 4 && !done; ++i)
-        done = Flip23(m, static_cast<int>(t), i);
-      if (done)
-      {
-        ++report.Flips23;
-        ++changes;
-        continue;
-      }
-      // The last resort for the worst elements: split a free edge (the longest first).
-      if (m.Q[t] < split)
-      {
-        std::array<std::pair<double, int>, 6> order;
-        for (int e = 0; e < 6; ++e)
-        {
-          const Vec d = amTetraGeometry::Sub(m.X(m.T[t][edges[e][0]]), m.X(m.T[t][edges[e][1]]));
-          order[e] = { -amTetraGeometry::Dot(d, d), e };
-        }
-        std::sort(order.begin(), order.end());
-        const Tet x = m.T[t];
-        for (int k = 0; k < 6 && !done; ++k)
-          done = SplitEdge(m, x[edges[order[k].second][0]], x[edges[order[k].second][1]], split, ringTets, ring);
-        if (done)
-        {
-          ++report.EdgeSplits;
-          ++changes;
-          continue;
-        }
-        // A sliver with three faces on the surface has no free edge: its free face is split.
-        for (int i = 0; i < 4 && !done; ++i)
-          done = SplitFace(m, Sorted(x[(i + 1) % 4], x[(i + 2) % 4], x[(i + 3) % 4]), split);
-        if (done)
-        {
-          ++report.FaceSplits;
-          ++changes;
-          continue;
-        }
-      }
-      m.Tried[t] = 1;
-    }
+    changes += TopologyPass(m, bad, split, maxRing, report);
     // Geometry: smoothing of every free vertex, then a local search around the bad elements
     // (in the sliver rounds, only where something changed since the last pass).
     const size_t nv = m.Inc.size();

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -97,61 +98,63 @@ TEST(TetraImprove, SplitFaceUndoneBelowItsGoalAndNeverOnAFixedFace)
   EXPECT_FALSE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 3), 0.2));
 }
 
-// SmoothAll makes its blocks' choices on two threads at once, and takes them in order: the mesh
-// it leaves is, bit for bit, the serial loop's (a lattice of cubes in six tetrahedra each, its
-// inner vertices jittered, three blocks of vertices).
-TEST(TetraImprove, SmoothAllIsTheSerialLoopBitForBit)
+namespace
 {
-  const int n = 22; // vertices per side
-  std::vector<double> points;
+/// A lattice of n^3 vertices, each cube in six tetrahedra (region 1), the inner vertices
+/// jittered by up to 'jitter' (a fixed sequence), the outer ones fixed.
+void Lattice(int n, double jitter, std::vector<double>& p, amTetraImprove::Mesh& m)
+{
   std::uint64_t state = 12345;
-  auto jitter = [&state]() {
+  auto random = [&state]() {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 0.6;
+    return static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
   };
   auto id = [n](int i, int j, int k) { return (k * n + j) * n + i; };
+  auto outer = [n](int i, int j, int k) { return i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1; };
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
       {
-        const bool inner = i > 0 && j > 0 && k > 0 && i < n - 1 && j < n - 1 && k < n - 1;
-        points.push_back(i + (inner ? jitter() : 0));
-        points.push_back(j + (inner ? jitter() : 0));
-        points.push_back(k + (inner ? jitter() : 0));
+        const double d = outer(i, j, k) ? 0 : 2 * jitter;
+        p.push_back(i + d * random());
+        p.push_back(j + d * random());
+        p.push_back(k + d * random());
       }
-  auto build = [&](std::vector<double>& p, amTetraImprove::Mesh& m) {
-    const size_t nv = p.size() / 3;
-    m.Inc.resize(nv);
-    m.FixedVertex.assign(nv, 0);
-    m.Dirty.assign(nv, 1);
-    static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
-    for (int k = 0; k + 1 < n; ++k)
-      for (int j = 0; j + 1 < n; ++j)
-        for (int i = 0; i + 1 < n; ++i)
-          for (const auto& a : axes)
+  const size_t nv = p.size() / 3;
+  m.Inc.resize(nv);
+  m.FixedVertex.assign(nv, 0);
+  m.Dirty.assign(nv, 1);
+  static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  for (int k = 0; k + 1 < n; ++k)
+    for (int j = 0; j + 1 < n; ++j)
+      for (int i = 0; i + 1 < n; ++i)
+        for (const auto& a : axes)
+        {
+          int c[3] = { i, j, k };
+          Tet t;
+          t[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s)
           {
-            int c[3] = { i, j, k };
-            Tet t;
-            t[0] = id(c[0], c[1], c[2]);
-            for (int s = 0; s < 3; ++s)
-            {
-              ++c[a[s]];
-              t[s + 1] = id(c[0], c[1], c[2]);
-            }
-            if (amTetraGeometry::SignedVolume(&p[3 * t[0]], &p[3 * t[1]], &p[3 * t[2]], &p[3 * t[3]]) < 0)
-              std::swap(t[2], t[3]);
-            m.Add(t, 1);
+            ++c[a[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
           }
-    for (int v = 0; v < static_cast<int>(nv); ++v)
-    {
-      const int i = v % n, j = (v / n) % n, k = v / (n * n);
-      m.FixedVertex[v] = i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1;
-    }
-  };
-  std::vector<double> serialPoints = points, blockPoints = points;
+          if (amTetraGeometry::SignedVolume(&p[3 * t[0]], &p[3 * t[1]], &p[3 * t[2]], &p[3 * t[3]]) < 0)
+            std::swap(t[2], t[3]);
+          m.Add(t, 1);
+        }
+  for (int v = 0; v < static_cast<int>(nv); ++v)
+    m.FixedVertex[v] = outer(v % n, (v / n) % n, v / (n * n));
+}
+}
+
+// SmoothAll makes its blocks' choices on two threads at once, and takes them in order: the mesh
+// it leaves is, bit for bit, the serial loop's (three blocks of vertices).
+TEST(TetraImprove, SmoothAllIsTheSerialLoopBitForBit)
+{
+  std::vector<double> serialPoints, blockPoints;
   amTetraImprove::Mesh serial(serialPoints), blocks(blockPoints);
-  build(serialPoints, serial);
-  build(blockPoints, blocks);
+  Lattice(22, 0.3, serialPoints, serial);
+  Lattice(22, 0.3, blockPoints, blocks);
   ASSERT_GT(serial.Inc.size(), 2 * 4096u);
   vtkSMPTools::SetBackend("STDThread");
   vtkSMPTools::Initialize(2);
@@ -171,5 +174,47 @@ TEST(TetraImprove, SmoothAllIsTheSerialLoopBitForBit)
     EXPECT_TRUE(serialPoints == blockPoints) << "pass " << pass;
     EXPECT_TRUE(serial.Q == blocks.Q);
     EXPECT_TRUE(serial.Dirty == blocks.Dirty);
+  }
+}
+
+// TopologyPass plans its blocks' flips on two threads at once and makes them in order: the same
+// tetrahedra, in the same order, as the serial loop of Mend (a lattice jittered so far that
+// thousands of elements are bad; many blocks, with changes that touch each other within one).
+TEST(TetraImprove, TopologyPassIsTheSerialLoopBitForBit)
+{
+  std::vector<double> serialPoints, blockPoints;
+  amTetraImprove::Mesh serial(serialPoints), blocks(blockPoints);
+  Lattice(16, 0.45, serialPoints, serial);
+  Lattice(16, 0.45, blockPoints, blocks);
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  const double bad = 1 / 1.6, split = 1 / 5.0;
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    amTetraMeshOptimizer::Report serialReport, blockReport;
+    std::vector<int> ringTets, ring;
+    long serialChanges = 0;
+    const size_t limit = serial.T.size();
+    for (size_t t = 0; t < limit; ++t)
+      if (serial.Alive[t] && !serial.Tried[t] && serial.Q[t] < bad)
+        serialChanges += amTetraImprove::Mend(serial, static_cast<int>(t), split, 7, serialReport, ringTets, ring);
+    const long blockChanges = amTetraImprove::TopologyPass(blocks, bad, split, 7, blockReport);
+    if (pass == 0)
+    {
+      EXPECT_GT(serial.T.size(), 4 * 4096u);
+      EXPECT_GT(serialReport.EdgeRemovals, 500);
+      EXPECT_GT(serialReport.Flips23, 5);
+    }
+    EXPECT_EQ(blockChanges, serialChanges);
+    EXPECT_EQ(blockReport.EdgeRemovals, serialReport.EdgeRemovals);
+    EXPECT_EQ(blockReport.Flips23, serialReport.Flips23);
+    EXPECT_EQ(blockReport.EdgeSplits, serialReport.EdgeSplits);
+    EXPECT_EQ(blockReport.FaceSplits, serialReport.FaceSplits);
+    EXPECT_TRUE(serial.T == blocks.T) << "pass " << pass;
+    EXPECT_TRUE(serial.Alive == blocks.Alive);
+    EXPECT_TRUE(serial.Tried == blocks.Tried);
+    EXPECT_TRUE(serialPoints == blockPoints);
+    std::printf("pass %d: %ld edge removals, %ld 2-3 flips, %ld edge splits, %ld face splits\n", pass,
+      serialReport.EdgeRemovals, serialReport.Flips23, serialReport.EdgeSplits, serialReport.FaceSplits);
   }
 }

@@ -5,8 +5,25 @@
 
 namespace amTetraImprove
 {
-/// Edge removal: replaces the tetrahedra around (u, v) by the best triangulation of their ring.
+void Replace(Mesh& m, const std::vector<int>& killed, const std::vector<Tet>& made, int region)
+{
+  for (int t : killed)
+    m.Kill(t);
+  for (const Tet& t : made)
+    m.Add(t, region);
+}
+
 bool RemoveEdge(Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std::vector<int>& ring)
+{
+  thread_local std::vector<Tet> made;
+  if (!PlanEdgeRemoval(m, u, v, maxRing, tets, ring, made))
+    return false;
+  Replace(m, tets, made, m.R[tets[0]]);
+  return true;
+}
+
+bool PlanEdgeRemoval(
+  const Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std::vector<int>& ring, std::vector<Tet>& made)
 {
   if (m.FixedEdges.count(EdgeKey(u, v)) || !m.Ring(u, v, tets, ring, static_cast<size_t>(std::max(maxRing, 0))))
     return false;
@@ -46,9 +63,9 @@ bool RemoveEdge(Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std:
     }
   if (!(best[0][n - 1] > old + 1e-12) || via[0][n - 1] < 0)
     return false;
-  const int region = m.R[tets[0]];
-  std::vector<std::array<int, 2>> todo{ { 0, n - 1 } };
-  std::vector<Tet> made;
+  thread_local std::vector<std::array<int, 2>> todo;
+  todo.assign(1, { 0, n - 1 });
+  made.clear();
   while (!todo.empty())
   {
     const auto s = todo.back();
@@ -61,21 +78,26 @@ bool RemoveEdge(Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std:
     todo.push_back({ s[0], k });
     todo.push_back({ k, s[1] });
   }
-  for (int t : tets)
-    m.Kill(t);
-  for (const Tet& t : made)
-    m.Add(t, region);
   return true;
 }
 
-/// 2-3 flip of the face of tetrahedron t opposite its vertex i.
 bool Flip23(Mesh& m, int t, int i)
+{
+  int other;
+  thread_local std::vector<Tet> made;
+  if (!PlanFlip23(m, t, i, other, made))
+    return false;
+  Replace(m, { t, other }, made, m.R[t]);
+  return true;
+}
+
+bool PlanFlip23(const Mesh& m, int t, int i, int& other, std::vector<Tet>& made)
 {
   const Tet& x = m.T[t];
   const int d = x[i], a = x[(i + 1) % 4], b = x[(i + 2) % 4], c = x[(i + 3) % 4];
   if (m.FixedFaces.count(Sorted(a, b, c)))
     return false;
-  const int other = m.Across(t, i);
+  other = m.Across(t, i);
   if (other < 0 || m.R[other] != m.R[t])
     return false;
   int e = -1;
@@ -93,11 +115,9 @@ bool Flip23(Mesh& m, int t, int i)
     q = std::min(q, m.Quality(d, e, ring[k], ring[(k + 1) % 3]));
   if (!(q > old + 1e-12))
     return false;
-  const int region = m.R[t];
-  m.Kill(t);
-  m.Kill(other);
+  made.clear();
   for (int k = 0; k < 3; ++k)
-    m.Add({ d, e, ring[k], ring[(k + 1) % 3] }, region);
+    made.push_back({ d, e, ring[k], ring[(k + 1) % 3] });
   return true;
 }
 }

@@ -164,8 +164,25 @@ public:
 
 /// Edge removal: replaces the tetrahedra around (u, v) by the best triangulation of their ring.
 bool RemoveEdge(Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std::vector<int>& ring);
+/// RemoveEdge's choice without the change: the tetrahedra to remove ('tets') and those to make.
+bool PlanEdgeRemoval(
+  const Mesh& m, int u, int v, int maxRing, std::vector<int>& tets, std::vector<int>& ring, std::vector<Tet>& made);
 /// 2-3 flip of the face of tetrahedron t opposite its vertex i.
 bool Flip23(Mesh& m, int t, int i);
+/// Flip23's choice without the change: the tetrahedron across the face and the three to make.
+bool PlanFlip23(const Mesh& m, int t, int i, int& other, std::vector<Tet>& made);
+/// Kills 'killed' and adds 'made' (of 'region'), in that order: a planned change made.
+void Replace(Mesh& m, const std::vector<int>& killed, const std::vector<Tet>& made, int region);
+/// The topology pass's work on tetrahedron t: the first of its edge removals (rings of up to
+/// maxRing), 2-3 flips and, under 'split', edge and face splits that mends it, counted in the
+/// report; else t is marked tried. True when the mesh changed.
+bool Mend(Mesh& m, int t, double split, int maxRing, amTetraMeshOptimizer::Report& report, std::vector<int>& ringTets,
+  std::vector<int>& ring);
+/// The topology pass over the tetrahedra 0 .. m.T.size()-1 as they are when it starts: for each
+/// alive one not yet tried and worse than 'bad', Mend. Exactly that serial loop: blocks of tetrahedra have their flips planned on the threads
+/// at once, then made in order, and one whose neighbourhood a change in its block touched first
+/// is done again at its turn. Adds what it did to the report; returns the changes.
+long TopologyPass(Mesh& m, double bad, double split, int maxRing, amTetraMeshOptimizer::Report& report);
 /// The star of v as it is: its worst objective and the sum of the inverse objectives.
 void CurrentStar(const Mesh& m, int v, double& worst, double& sum);
 /// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
