@@ -3,6 +3,7 @@
 #include "amMeshQuality.h"
 #include "amTetraInterfaceUpdate.h"
 #include "amTetraImproveMesh.h"
+#include "amThreading.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -13,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -74,20 +76,35 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
   m.FixedVertex.assign(points.size() / 3, 0);
   m.Dirty.assign(points.size() / 3, 1);
   m.T.reserve(tets.size() * 2);
+  // The objectives on the threads, the rest in order.
+  std::vector<double> q(tets.size());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(tets.size()), [&](vtkIdType t0, vtkIdType t1) {
+    for (vtkIdType t = t0; t < t1; ++t)
+      q[t] = m.Quality(tets[t][0], tets[t][1], tets[t][2], tets[t][3]);
+  });
   for (size_t t = 0; t < tets.size(); ++t)
-    m.Add(tets[t], regions[t]);
+    m.Add(tets[t], regions[t], q[t]);
   auto statistics = [&](double& worst, double& mean) {
+    // Each element's Q on the threads; the worst and the sum in order (the same sum whatever the
+    // thread count).
+    q.assign(m.T.size(), -1.0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(m.T.size()), [&](vtkIdType t0, vtkIdType t1) {
+      for (vtkIdType t = t0; t < t1; ++t)
+        if (m.Alive[t])
+        {
+          double minDihedral, maxDihedral, radiusRatio, volume;
+          amMeshQuality::TetraQuality(m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]), q[t],
+            minDihedral, maxDihedral, radiusRatio, volume);
+        }
+    });
     worst = 0;
     double sum = 0;
     size_t n = 0;
     for (size_t t = 0; t < m.T.size(); ++t)
       if (m.Alive[t])
       {
-        double q, minDihedral, maxDihedral, radiusRatio, volume;
-        amMeshQuality::TetraQuality(m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]), q,
-          minDihedral, maxDihedral, radiusRatio, volume);
-        worst = std::max(worst, q);
-        sum += q;
+        worst = std::max(worst, q[t]);
+        sum += q[t];
         ++n;
       }
     mean = n ? sum / static_cast<double>(n) : 0;
@@ -105,7 +122,7 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     for (const Tet& t : tets)
       for (int i = 0; i < 4; ++i)
         faces.push_back(Sorted(t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]));
-    std::sort(faces.begin(), faces.end());
+    amThreading::Sort(faces.begin(), faces.end());
     for (size_t i = 0; i < faces.size();)
     {
       size_t j = i + 1;
@@ -289,12 +306,19 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
   adjacent->Fill(-1);
   std::unordered_map<Tri, int, TriHash> faceOf;
   faceOf.reserve(static_cast<size_t>(ns) * 2);
+  std::vector<char> onSurface(points.size() / 3, 0); // a face with another vertex is none of them
   for (vtkIdType s = 0; s < ns; ++s)
+  {
     faceOf[Sorted(fixed[s][0], fixed[s][1], fixed[s][2])] = static_cast<int>(s);
+    for (int v : fixed[s])
+      onSurface[v] = 1;
+  }
   for (vtkIdType c = 0; c < nt; ++c)
     for (int i = 0; i < 4; ++i)
     {
       const Tet& t = tets[c];
+      if (!onSurface[t[(i + 1) % 4]] || !onSurface[t[(i + 2) % 4]] || !onSurface[t[(i + 3) % 4]])
+        continue;
       const auto it = faceOf.find(Sorted(t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]));
       if (it == faceOf.end())
         continue;

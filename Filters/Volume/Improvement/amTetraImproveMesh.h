@@ -108,13 +108,15 @@ public:
       this->Origin.insert(this->Origin.end(), 3, std::numeric_limits<double>::quiet_NaN());
     return static_cast<int>(this->Inc.size()) - 1;
   }
-  int Add(const Tet& t, int region)
+  int Add(const Tet& t, int region) { return this->Add(t, region, this->Quality(t[0], t[1], t[2], t[3])); }
+  /// Add with the tetrahedron's objective q computed already.
+  int Add(const Tet& t, int region, double q)
   {
     const int id = static_cast<int>(this->T.size());
     this->T.push_back(t);
     this->R.push_back(region);
     this->Alive.push_back(1);
-    this->Q.push_back(this->Quality(t[0], t[1], t[2], t[3]));
+    this->Q.push_back(q);
     this->Tried.push_back(0);
     for (int v : t)
     {
