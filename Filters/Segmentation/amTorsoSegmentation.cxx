@@ -5,6 +5,7 @@
 #include "amIntensityClassifier.h"
 #include "amProvenance.h"
 #include "amThoraxPhantomModel.h"
+#include "amThreading.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -16,9 +17,11 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -36,6 +39,7 @@ amTorsoSegmentation::amTorsoSegmentation()
 {
   this->InputWindow[0] = this->InputWindow[1] = 0.0;
   this->SetNumberOfInputPorts(2);
+  amThreading::Initialize();
 }
 
 amTorsoSegmentation::~amTorsoSegmentation() = default;
@@ -144,18 +148,33 @@ int amTorsoSegmentation::RequestData(
   vtkNew<vtkFloatArray> hu;
   hu->SetName("HU");
   hu->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double v = scalars->GetComponent(i, 0);
-    if (!std::isfinite(v))
+  // On the threads; the first non-finite voxel (the smallest index) is the one named.
+  std::atomic<vtkIdType> firstBad(n);
+  const double width = this->InputWindow[0];
+  vtkSMPTools::For(0, n, [&](vtkIdType i0, vtkIdType i1) {
+    for (vtkIdType i = i0; i < i1; ++i)
     {
-      vtkErrorMacro("The CT has a non-finite value (" << v << ") at voxel " << i << ": cannot segment it.");
-      return 0;
+      const double v = scalars->GetComponent(i, 0);
+      if (!std::isfinite(v))
+      {
+        vtkIdType seen = firstBad.load();
+        while (i < seen && !firstBad.compare_exchange_weak(seen, i))
+        {
+        }
+        return;
+      }
+      double h = v;
+      if (windowed)
+        h = v <= 0.0 ? -1000.0 : v >= 255.0 ? 1000.0 : lowest + v * width / 255.0;
+      hu->SetValue(i, static_cast<float>(h));
     }
-    double h = v;
-    if (windowed)
-      h = v <= 0.0 ? -1000.0 : v >= 255.0 ? 1000.0 : lowest + v * this->InputWindow[0] / 255.0;
-    hu->SetValue(i, static_cast<float>(h));
+  });
+  if (firstBad.load() < n)
+  {
+    const vtkIdType i = firstBad.load();
+    vtkErrorMacro("The CT has a non-finite value (" << scalars->GetComponent(i, 0) << ") at voxel " << i
+                                                      << ": cannot segment it.");
+    return 0;
   }
   vtkNew<vtkImageData> huImage;
   huImage->CopyStructure(input);

@@ -66,44 +66,58 @@ std::size_t amVoxel::FillHoles(const amVoxelGrid& g, amVoxelMask& mask)
 std::size_t amVoxel::DropSmallComponents(
   const amVoxelGrid& g, std::vector<std::uint8_t>& labels, std::size_t minimumVoxels, const std::vector<bool>& single)
 {
-  std::vector<std::size_t> count(256, 0);
-  for (const auto l : labels)
-    ++count[l];
-  std::vector<std::uint8_t> marked = labels;
-  std::size_t dropped = 0;
-  amVoxelMask mask(labels.size());
-  std::vector<int> id;
+  // One labelling of the components of every label at once (6-connected, same label): each
+  // label's components keep the order of their first voxels, as a labelling of that label alone
+  // numbers them, so the largest (the first of equal size) is the same.
+  const std::size_t n = g.Size();
+  std::vector<int> id(n, -1);
   std::vector<std::size_t> sizes;
-  for (int l = 1; l < 255; ++l)
+  std::vector<std::uint8_t> labelOf;
+  std::vector<std::size_t> queue;
+  for (std::size_t v = 0; v < n; ++v)
   {
-    if (!count[l])
+    const std::uint8_t l = labels[v];
+    if (l == 0 || l == amVoxel::Pending || id[v] >= 0)
       continue;
-    for (std::size_t v = 0; v < labels.size(); ++v)
-      mask[v] = labels[v] == l;
-    const int n = amVoxel::Components(g, mask, id, sizes);
-    const auto largest = static_cast<int>(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
-    const bool one = l < static_cast<int>(single.size()) && single[l];
-    std::vector<char> drop(n, 0);
-    bool any = false;
-    for (int c = 0; c < n; ++c)
-    {
-      drop[c] = (sizes[c] < minimumVoxels && c != largest) || (one && c != largest);
-      any = any || drop[c];
-    }
-    if (!any)
-      continue;
-    for (std::size_t v = 0; v < labels.size(); ++v)
-      if (id[v] >= 0 && drop[id[v]])
-      {
-        marked[v] = amVoxel::Pending;
-        ++dropped;
-      }
+    const int c = static_cast<int>(sizes.size());
+    queue.assign(1, v);
+    id[v] = c;
+    for (std::size_t q = 0; q < queue.size(); ++q)
+      g.FaceNeighbours(queue[q], [&](std::size_t w) {
+        if (labels[w] == l && id[w] < 0)
+        {
+          id[w] = c;
+          queue.push_back(w);
+        }
+      });
+    sizes.push_back(queue.size());
+    labelOf.push_back(l);
   }
-  if (!dropped)
+  std::vector<int> largest(256, -1);
+  for (int c = 0; c < static_cast<int>(sizes.size()); ++c)
+  {
+    int& best = largest[labelOf[c]];
+    if (best < 0 || sizes[c] > sizes[best])
+      best = c;
+  }
+  std::vector<char> drop(sizes.size(), 0);
+  bool any = false;
+  for (int c = 0; c < static_cast<int>(sizes.size()); ++c)
+  {
+    const int l = labelOf[c];
+    const bool one = l < static_cast<int>(single.size()) && single[l];
+    drop[c] = c != largest[l] && (sizes[c] < minimumVoxels || one);
+    any = any || drop[c];
+  }
+  if (!any)
     return 0;
+  std::vector<std::uint8_t> marked = labels;
+  for (std::size_t v = 0; v < n; ++v)
+    if (id[v] >= 0 && drop[id[v]])
+      marked[v] = amVoxel::Pending;
   amVoxel::HandOver(g, marked);
   std::size_t changed = 0;
-  for (std::size_t v = 0; v < labels.size(); ++v)
+  for (std::size_t v = 0; v < n; ++v)
     changed += marked[v] != labels[v];
   labels.swap(marked);
   return changed;

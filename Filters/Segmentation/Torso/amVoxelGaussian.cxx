@@ -1,13 +1,14 @@
 // Separable Gaussian smoothing in millimetres.
 #include "amVoxelGrid.h"
 
+#include "vtkSMPTools.h"
+
 #include <algorithm>
 #include <cmath>
 
 void amVoxel::Gaussian(const amVoxelGrid& g, std::vector<float>& field, double sigma)
 {
   const std::size_t stride[3] = { 1, static_cast<std::size_t>(g.N[0]), static_cast<std::size_t>(g.N[0]) * g.N[1] };
-  std::vector<float> line, smoothed;
   for (int a = 0; a < 3; ++a)
   {
     const double s = sigma / g.Spacing[a];
@@ -21,12 +22,13 @@ void amVoxel::Gaussian(const amVoxelGrid& g, std::vector<float>& field, double s
     for (double& x : w)
       x /= sum;
     const int n = g.N[a];
-    line.resize(n);
-    smoothed.resize(n);
     const int b = (a + 1) % 3, c = (a + 2) % 3;
-    for (int q = 0; q < g.N[c]; ++q)
-      for (int p = 0; p < g.N[b]; ++p)
+    // The lines along the axis are independent: on the threads.
+    vtkSMPTools::For(0, static_cast<vtkIdType>(g.N[b]) * g.N[c], [&](vtkIdType l0, vtkIdType l1) {
+      std::vector<float> line(n), smoothed(n);
+      for (vtkIdType l = l0; l < l1; ++l)
       {
+        const std::size_t p = static_cast<std::size_t>(l % g.N[b]), q = static_cast<std::size_t>(l / g.N[b]);
         const std::size_t start = p * stride[b] + q * stride[c];
         for (int t = 0; t < n; ++t)
           line[t] = field[start + t * stride[a]];
@@ -40,5 +42,6 @@ void amVoxel::Gaussian(const amVoxelGrid& g, std::vector<float>& field, double s
         for (int t = 0; t < n; ++t)
           field[start + t * stride[a]] = smoothed[t];
       }
+    });
   }
 }
