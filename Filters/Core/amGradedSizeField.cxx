@@ -85,6 +85,11 @@ bool amGradedSizeField::Build(const std::vector<std::array<double, 3>>& points,
           earlier.push_back({ di, dj, dk,
             static_cast<float>(slope * this->H * std::sqrt(double(di * di + dj * dj + dk * dk))) });
       }
+  // A node with all 26 neighbours in the grid takes them at fixed index offsets (the same minima
+  // in the same order as the checked path).
+  std::vector<long long> linear;
+  for (const Offset& o : earlier)
+    linear.push_back((static_cast<long long>(o.dk) * ny + o.dj) * nx + o.di);
   for (int pass = 0; pass < 2; ++pass)
   {
     const int s = pass == 0 ? 1 : -1;
@@ -94,10 +99,22 @@ bool amGradedSizeField::Build(const std::vector<std::array<double, 3>>& points,
       for (long long jj = 0; jj < ny; ++jj)
       {
         const long long j = pass == 0 ? jj : ny - 1 - jj;
+        const bool innerRow = j > 0 && k > 0 && j < ny - 1 && k < nz - 1;
         for (long long ii = 0; ii < nx; ++ii)
         {
           const long long i = pass == 0 ? ii : nx - 1 - ii;
-          float& v = this->Values[static_cast<size_t>(index(i, j, k))];
+          const long long at = index(i, j, k);
+          float& v = this->Values[static_cast<size_t>(at)];
+          if (innerRow && i > 0 && i < nx - 1)
+          {
+            for (size_t n = 0; n < earlier.size(); ++n)
+            {
+              const float u = this->Values[static_cast<size_t>(at + s * linear[n])];
+              if (u != big)
+                v = std::min(v, u + earlier[n].w);
+            }
+            continue;
+          }
           for (const Offset& o : earlier)
           {
             const long long a = i + s * o.di, b = j + s * o.dj, c = k + s * o.dk;

@@ -1,6 +1,7 @@
 #include "amConcurrentXMLWriter.h"
 
 #include "amAtomicFile.h"
+#include "amCachedZLibCompressor.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCallbackCommand.h"
@@ -8,6 +9,7 @@
 #include "vtkErrorCode.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -18,6 +20,7 @@
 
 #include <condition_variable>
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -100,7 +103,8 @@ std::string RunWriter(const Job& job, std::vector<std::string>& warnings)
 }
 
 /// Writes one file; an empty string, or why it failed.
-std::string WriteOne(const Job& job, int level, std::vector<std::string>& warnings)
+std::string WriteOne(const Job& job, int level, std::vector<std::string>& warnings,
+  const std::shared_ptr<amCachedZLibCompressor::Cache>& blocks)
 {
   if (job.Writer)
     return RunWriter(job, warnings);
@@ -120,7 +124,10 @@ std::string WriteOne(const Job& job, int level, std::vector<std::string>& warnin
   // Inline base64 ("binary"), not appended: Debian 12's expat (2.5.0+deb12u5, with the backported
   // reparse deferral) breaks VTK 9.2's reading of appended data beyond a few kB.
   writer->SetDataModeToBinary();
-  writer->SetCompressorTypeToZLib();
+  // zlib, each block deflated once in the queue's life (a series' frames share their geometry).
+  vtkNew<amCachedZLibCompressor> compressor;
+  compressor->SetCache(blocks);
+  writer->SetCompressor(compressor);
   writer->SetCompressionLevel(level);
   const int ok = writer->Write();
   const unsigned long code = writer->GetErrorCode();
@@ -147,6 +154,7 @@ struct amConcurrentXMLWriter::Internal
   int Level = 1;
   std::string Error;
   std::vector<std::string> Warnings;
+  std::shared_ptr<amCachedZLibCompressor::Cache> Blocks = amCachedZLibCompressor::NewCache();
 
   void Work()
   {
@@ -163,7 +171,7 @@ struct amConcurrentXMLWriter::Internal
         ++this->Busy;
       }
       std::vector<std::string> warnings;
-      const std::string why = WriteOne(job, this->Level, warnings);
+      const std::string why = WriteOne(job, this->Level, warnings, this->Blocks);
       job.Data = nullptr; // released on this thread, before the caller may wait for an empty queue
       job.Writer = nullptr;
       std::lock_guard<std::mutex> lock(this->Lock);

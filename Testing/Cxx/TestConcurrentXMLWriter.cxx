@@ -2,6 +2,7 @@
 // vtkXML*Writer writes, whatever the thread count; the data copied when queued; a folder that does
 // not exist and a type with no format are errors naming the file, with no file left behind; a
 // queued writer writes the bytes it writes alone, its warnings and errors kept with its file.
+#include "amCachedZLibCompressor.h"
 #include "amConcurrentXMLWriter.h"
 #include "amGmshWriter.h"
 #include "amMeditWriter.h"
@@ -17,12 +18,15 @@
 #include "vtkSphereSource.h"
 #include "vtkPoints.h"
 #include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLImageDataWriter.h"
 #include "vtkXMLPolyDataWriter.h"
+#include "vtkZLibDataCompressor.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -219,4 +223,45 @@ TEST(ConcurrentXMLWriter, QueuedWritersWriteWhatTheyWouldHaveWritten)
   vtkNew<amMeditWriter> empty;
   EXPECT_FALSE(none->QueueWriter(empty, "empty.mesh"));
   EXPECT_NE(std::string(none->GetErrorMessage()).find("no input"), std::string::npos) << none->GetErrorMessage();
+}
+
+// The cached compressor: VTK's zlib bytes, the second time from its cache (a changed block is
+// compressed anew, not mistaken for the cached one), under VTK's zlib class name.
+TEST(ConcurrentXMLWriter, CachedBlocksAreZLibsBytes)
+{
+  std::vector<unsigned char> block(32768);
+  for (size_t i = 0; i < block.size(); ++i)
+    block[i] = static_cast<unsigned char>((i * 7919u) >> 5);
+  vtkNew<vtkZLibDataCompressor> plain;
+  plain->SetCompressionLevel(1);
+  vtkSmartPointer<vtkUnsignedCharArray> expected;
+  expected.TakeReference(plain->Compress(block.data(), block.size()));
+  auto cache = amCachedZLibCompressor::NewCache();
+  vtkNew<amCachedZLibCompressor> first, second;
+  first->SetCache(cache);
+  second->SetCache(cache);
+  first->SetCompressionLevel(1);
+  second->SetCompressionLevel(1);
+  EXPECT_STREQ(second->GetClassName(), "vtkZLibDataCompressor");
+  auto same = [&](vtkUnsignedCharArray* a, vtkUnsignedCharArray* b) {
+    return a->GetNumberOfValues() == b->GetNumberOfValues() &&
+      std::equal(a->GetPointer(0), a->GetPointer(0) + a->GetNumberOfValues(), b->GetPointer(0));
+  };
+  for (vtkDataCompressor* c : { static_cast<vtkDataCompressor*>(first), static_cast<vtkDataCompressor*>(second) })
+  {
+    vtkSmartPointer<vtkUnsignedCharArray> got;
+    got.TakeReference(c->Compress(block.data(), block.size()));
+    EXPECT_TRUE(same(got, expected));
+  }
+  block[100] ^= 0xFF; // the same hash bucket is not enough: the bytes are compared
+  expected.TakeReference(plain->Compress(block.data(), block.size()));
+  vtkSmartPointer<vtkUnsignedCharArray> changed;
+  changed.TakeReference(second->Compress(block.data(), block.size()));
+  EXPECT_TRUE(same(changed, expected));
+  // Another level is another entry.
+  second->SetCompressionLevel(9);
+  plain->SetCompressionLevel(9);
+  expected.TakeReference(plain->Compress(block.data(), block.size()));
+  changed.TakeReference(second->Compress(block.data(), block.size()));
+  EXPECT_TRUE(same(changed, expected));
 }
