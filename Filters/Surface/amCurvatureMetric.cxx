@@ -152,12 +152,18 @@ int amCurvatureMetric::RequestData(
   }
   const vtkIdType np = mesh.NumberOfPoints();
   const bool labelled = mesh.Labels.size() == mesh.Triangles.size();
-  auto sheetOf = [&](vtkIdType t) -> long long {
-    if (!labelled)
-      return 0;
-    const int a = std::min(mesh.Labels[t][0], mesh.Labels[t][1]), b = std::max(mesh.Labels[t][0], mesh.Labels[t][1]);
-    return (static_cast<long long>(a) << 32) ^ static_cast<unsigned int>(b);
-  };
+  // Each triangle's interface (its unordered pair of labels), once: the neighbourhood searches
+  // below compare it millions of times.
+  std::vector<long long> sheetOfTriangle(labelled ? mesh.Triangles.size() : 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(sheetOfTriangle.size()), [&](vtkIdType t0, vtkIdType t1) {
+    for (vtkIdType t = t0; t < t1; ++t)
+    {
+      const int a = std::min(mesh.Labels[t][0], mesh.Labels[t][1]),
+                b = std::max(mesh.Labels[t][0], mesh.Labels[t][1]);
+      sheetOfTriangle[t] = (static_cast<long long>(a) << 32) ^ static_cast<unsigned int>(b);
+    }
+  });
+  auto sheetOf = [&](vtkIdType t) -> long long { return labelled ? sheetOfTriangle[t] : 0; };
 
   // The fit's neighbourhood: every vertex of the interface within 'radius' of the vertex (reached
   // through the interface's triangles), and at least its NeighborhoodRings-ring.
@@ -233,13 +239,18 @@ int amCurvatureMetric::RequestData(
                 if (sheetOf(t) != sheet)
                   continue;
                 for (vtkIdType q : mesh.Triangles[t])
-                  if (stamp[q] != mark &&
-                    (ring < rings || (Vec3(mesh.Points[q].data()) - p).squaredNorm() <= r2))
+                {
+                  if (stamp[q] == mark || stamp[q] == -mark)
+                    continue;
+                  if (ring < rings || (Vec3(mesh.Points[q].data()) - p).squaredNorm() <= r2)
                   {
                     stamp[q] = mark;
                     seen.push_back(q);
                     next.push_back(q);
                   }
+                  else
+                    stamp[q] = -mark; // beyond the radius: so at every later ring too
+                }
               }
             frontier.swap(next);
           }
