@@ -124,7 +124,24 @@ bool amThoraxPhantomModel::InsideSuperquadric(const double x[3], const double ra
   const double u = x[0] / radii[0], v = x[1] / radii[1], w = std::fabs(x[2] / radii[2]);
   if (w > 1.0)
     return false;
-  return u * u + v * v + std::pow(w, q) <= 1.0;
+  // w^q depends on the height alone, and points come slice by slice, each tested against the
+  // outer and the inner body: the last two powers are kept (pow was most of the phantom's time).
+  thread_local double lastW[2] = { -1.0, -1.0 }, lastQ[2] = { 0.0, 0.0 }, lastPower[2] = { 0.0, 0.0 };
+  thread_local int slot = 0;
+  double power;
+  if (w == lastW[0] && q == lastQ[0])
+    power = lastPower[0];
+  else if (w == lastW[1] && q == lastQ[1])
+    power = lastPower[1];
+  else
+  {
+    power = std::pow(w, q);
+    lastW[slot] = w;
+    lastQ[slot] = q;
+    lastPower[slot] = power;
+    slot ^= 1;
+  }
+  return u * u + v * v + power <= 1.0;
 }
 
 double amThoraxPhantomModel::SuperquadricVolume(const double radii[3], double q)
