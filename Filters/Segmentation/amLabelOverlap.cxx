@@ -8,6 +8,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPTools.h"
@@ -87,29 +88,45 @@ int amLabelOverlap::RequestData(vtkInformation*, vtkInformationVector** inputVec
   const double voxel = a->GetSpacing()[0] * a->GetSpacing()[1] * a->GetSpacing()[2];
   const vtkIdType n = la->GetNumberOfTuples();
 
-  // Reference label at each voxel centre of the evaluated map (nearest voxel, 0 outside).
+  // Reference label at each voxel centre of the evaluated map (nearest voxel, 0 outside). On the
+  // same grid that voxel is the one of the same index (the transforms' rounding stays far below
+  // half a voxel), read directly.
   std::vector<int> ref(static_cast<size_t>(n));
-  vtkSMPTools::For(0, da[2], [&](vtkIdType k0, vtkIdType k1) {
-    for (vtkIdType k = k0; k < k1; ++k)
-      for (int j = 0; j < da[1]; ++j)
-        for (int i = 0; i < da[0]; ++i)
-        {
-          double x[3], c[3];
-          a->TransformContinuousIndexToPhysicalPoint(i + ea[0], j + ea[2], k + ea[4], x);
-          b->TransformPhysicalPointToContinuousIndex(x, c);
-          int ijk[3];
-          bool inside = true;
-          for (int d = 0; d < 3; ++d)
+  bool sameGrid = true;
+  for (int d = 0; d < 6; ++d)
+    sameGrid = sameGrid && ea[d] == eb[d];
+  for (int d = 0; d < 3; ++d)
+    sameGrid = sameGrid && a->GetOrigin()[d] == b->GetOrigin()[d] && a->GetSpacing()[d] == b->GetSpacing()[d];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      sameGrid = sameGrid && a->GetDirectionMatrix()->GetElement(r, c) == b->GetDirectionMatrix()->GetElement(r, c);
+  if (sameGrid)
+    vtkSMPTools::For(0, n, [&](vtkIdType i0, vtkIdType i1) {
+      for (vtkIdType i = i0; i < i1; ++i)
+        ref[i] = static_cast<int>(lb->GetComponent(i, 0));
+    });
+  else
+    vtkSMPTools::For(0, da[2], [&](vtkIdType k0, vtkIdType k1) {
+      for (vtkIdType k = k0; k < k1; ++k)
+        for (int j = 0; j < da[1]; ++j)
+          for (int i = 0; i < da[0]; ++i)
           {
-            ijk[d] = static_cast<int>(std::floor(c[d] + 0.5)) - eb[2 * d];
-            inside = inside && ijk[d] >= 0 && ijk[d] < db[d];
+            double x[3], c[3];
+            a->TransformContinuousIndexToPhysicalPoint(i + ea[0], j + ea[2], k + ea[4], x);
+            b->TransformPhysicalPointToContinuousIndex(x, c);
+            int ijk[3];
+            bool inside = true;
+            for (int d = 0; d < 3; ++d)
+            {
+              ijk[d] = static_cast<int>(std::floor(c[d] + 0.5)) - eb[2 * d];
+              inside = inside && ijk[d] >= 0 && ijk[d] < db[d];
+            }
+            const vtkIdType id = (k * da[1] + j) * static_cast<vtkIdType>(da[0]) + i;
+            ref[id] = inside ? static_cast<int>(lb->GetComponent(
+                                 (static_cast<vtkIdType>(ijk[2]) * db[1] + ijk[1]) * db[0] + ijk[0], 0))
+                             : 0;
           }
-          const vtkIdType id = (k * da[1] + j) * static_cast<vtkIdType>(da[0]) + i;
-          ref[id] = inside
-            ? static_cast<int>(lb->GetComponent((static_cast<vtkIdType>(ijk[2]) * db[1] + ijk[1]) * db[0] + ijk[0], 0))
-            : 0;
-        }
-  });
+    });
 
   std::array<double, 257> na{}, nb{}, both{};
   double fa = 0, fb = 0, fboth = 0;
