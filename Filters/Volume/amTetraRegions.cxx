@@ -49,8 +49,14 @@ bool amTetraRegions::Assign(const amSurfaceMesh& mesh, const amTetGenRun::Result
   const vtkIdType nt = mesh.NumberOfTriangles(), nTets = out.NumberOfTetrahedra, nSub = out.NumberOfFaces;
   std::unordered_map<FaceKey, vtkIdType, FaceHash> subfaceOf;
   subfaceOf.reserve(static_cast<size_t>(nSub) * 2);
+  // A face with a vertex off the surface is no subface: most are told so without a lookup.
+  std::vector<char> onSurface(static_cast<size_t>(out.NumberOfPoints), 0);
   for (vtkIdType s = 0; s < nSub; ++s)
+  {
     subfaceOf[MakeKey(out.Faces[3 * s], out.Faces[3 * s + 1], out.Faces[3 * s + 2])] = s;
+    for (int k = 0; k < 3; ++k)
+      onSurface[out.Faces[3 * s + k]] = 1;
+  }
   auto sourceOf = [&out](vtkIdType s) { return SourceOf(out, s); };
   for (vtkIdType s = 0; s < nSub; ++s)
     if (sourceOf(s) < 0 || sourceOf(s) >= nt)
@@ -82,7 +88,8 @@ bool amTetraRegions::Assign(const amSurfaceMesh& mesh, const amTetGenRun::Result
       for (int i = 0; i < 4; ++i)
       {
         const int a = tets[4 * t + (i + 1) % 4], b = tets[4 * t + (i + 2) % 4], d = tets[4 * t + (i + 3) % 4];
-        const auto it = subfaceOf.find(MakeKey(a, b, d));
+        const auto it =
+          onSurface[a] && onSurface[b] && onSurface[d] ? subfaceOf.find(MakeKey(a, b, d)) : subfaceOf.end();
         const int n = out.Neighbors[4 * t + i];
         if (it == subfaceOf.end())
         {
