@@ -44,6 +44,15 @@ bool Writable(vtkDataObject* data)
     vtkImageData::SafeDownCast(data);
 }
 
+/// A deep copy of the data, the worker's own.
+vtkSmartPointer<vtkDataObject> CopyOf(vtkDataObject* data)
+{
+  vtkSmartPointer<vtkDataObject> copy;
+  copy.TakeReference(data->NewInstance());
+  copy->DeepCopy(data);
+  return copy;
+}
+
 /// A writer for the data's type, or null.
 vtkSmartPointer<vtkXMLWriter> WriterFor(vtkDataObject* data)
 {
@@ -226,8 +235,7 @@ bool amConcurrentXMLWriter::Write(vtkDataObject* data, const char* fileName)
     return false;
   }
   Job job;
-  job.Data.TakeReference(data->NewInstance());
-  job.Data->DeepCopy(data);
+  job.Data = CopyOf(data);
   job.File = fileName;
   std::unique_lock<std::mutex> lock(in.Lock);
   if (!in.Error.empty())
@@ -266,9 +274,7 @@ bool amConcurrentXMLWriter::QueueWriter(vtkAlgorithm* writer, const char* fileNa
       in.Error = file + ": " + (writer ? "the writer has no input data of one connection" : "no writer");
     return false;
   }
-  vtkSmartPointer<vtkDataObject> copy;
-  copy.TakeReference(data->NewInstance());
-  copy->DeepCopy(data);
+  vtkSmartPointer<vtkDataObject> copy = CopyOf(data);
   Job job;
   job.Writer = writer;
   job.File = file;

@@ -61,7 +61,7 @@ public:
   bool QueueWriter(vtkAlgorithm* writer, const char* fileName);
 
   /// The warnings of the queued writers so far: "<file>: <message>" (VTK's text, with its file,
-  /// line and class).
+  /// line and class). Read them after Finish(): a writer still running may add one.
   int GetNumberOfWarnings();
   const char* GetWarning(int i);
 
