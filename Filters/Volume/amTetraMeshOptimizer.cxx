@@ -57,9 +57,10 @@ std::string amTetraMeshOptimizer::Report::Describe() const
   os << "worst Q " << this->WorstBefore << " -> " << this->WorstAfter << ", mean " << this->MeanBefore << " -> "
      << this->MeanAfter << " (" << this->EdgeRemovals << " edge removals, " << this->Flips23 << " 2-3 flips, "
      << this->EdgeSplits << " edge splits, " << this->FaceSplits << " face splits, " << this->Moves << " vertex moves";
-  if (this->SurfaceMoves + this->Relabels + this->SurfaceSplits > 0)
+  if (this->SurfaceMoves + this->Relabels + this->SurfaceSplits + this->SurfaceCollapses > 0)
     os << "; around slivers " << this->SurfaceMoves << " surface vertex slides, " << this->Relabels
-       << " region changes, " << this->SurfaceSplits << " surface edge splits: the surface moved by "
+       << " region changes, " << this->SurfaceSplits << " surface edge splits, " << this->SurfaceCollapses
+       << " surface edge collapses: the surface moved by "
        << this->SurfaceDeviation << " mm";
   os << "; " << this->Slivers << " slivers left)";
   return os.str();
@@ -289,9 +290,9 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
   grid->GetCellData()->AddArray(region);
   grid->GetCellData()->SetActiveScalars(region->GetName());
 
-  // Slivers that changed region, or surface edges split near them, changed the surface's
-  // triangles: they are the mesh's faces anew.
-  if (report.Relabels + report.SurfaceSplits > 0)
+  // Slivers that changed region, or surface edges split or collapsed near them, changed the
+  // surface's triangles: they are the mesh's faces anew.
+  if (report.Relabels + report.SurfaceSplits + report.SurfaceCollapses > 0)
   {
     fixed = amTetraInterfaceUpdate::Rebuild(surface, points, tets, regions, background);
     ns = static_cast<vtkIdType>(fixed.size());

@@ -56,7 +56,8 @@ public:
     // at its midpoint, and the flips and moves run again around them, for up to SliverRounds
     // rounds. The deviation is measured (two-sided, against the surface as it was) and kept
     // within the bound; up to four budgets are tried (four more, regions changed first, where
-    // those leave slivers) and the one leaving fewest slivers kept.
+    // those leave slivers; four more where those still do, a surface edge of each sliver first
+    // collapsed along its interface or junction curve) and the one leaving fewest slivers kept.
     double SliverQuality = 10;
     double SliverDihedral = 10;
     double MaximumSurfaceDeviation = 0;
@@ -68,6 +69,7 @@ public:
     long Flips23 = 0, EdgeRemovals = 0, EdgeSplits = 0, FaceSplits = 0, Moves = 0;
     long Relabels = 0;             // elements that changed region (or left the mesh)
     long SurfaceSplits = 0;        // surface edges split at their midpoints near slivers
+    long SurfaceCollapses = 0;     // surface edges of slivers collapsed along their interface or curve
     long SurfaceMoves = 0;         // slides of surface vertices
     double SurfaceDeviation = 0;   // the largest displacement of the surface they caused (mm)
     long Slivers = 0;              // elements still above SliverQuality or below SliverDihedral

@@ -132,8 +132,10 @@ public:
   /// two-sided Hausdorff distance between the surface before and after is measured and kept
   /// within this bound (SurfaceDeviation). Which slivers those rounds free depends on how far
   /// each operation may move the surface: up to four such budgets within the bound are tried,
-  /// four more with the regions changed before any slide where those leave slivers, and the
-  /// result with the fewest slivers kept. The triangles of output port 1 are then the mesh's
+  /// four more with the regions changed before any slide where those leave slivers, four more
+  /// where those still do with a short surface edge of each sliver first collapsed along its
+  /// interface or junction curve (where a junction curve zigzags between elements, or a vertex
+  /// inside an interface sits next to one), and the result with the fewest slivers kept. The triangles of output port 1 are then the mesh's
   /// faces anew: those that remain keep their cell data, new ones have SourceTriangle -1. The
   /// mesh's surface is thus within the remeshing's Hausdorff distance plus SurfaceDeviation of
   /// the label surface.

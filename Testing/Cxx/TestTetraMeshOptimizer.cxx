@@ -2,6 +2,7 @@
 // by hand.
 #include "amTetraGeometry.h"
 #include "amTetraImproveMesh.h"
+#include "amTetraLattice.h"
 
 #include "vtkSMPTools.h"
 
@@ -98,54 +99,6 @@ TEST(TetraImprove, SplitFaceUndoneBelowItsGoalAndNeverOnAFixedFace)
   EXPECT_FALSE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 3), 0.2));
 }
 
-namespace
-{
-/// A lattice of n^3 vertices, each cube in six tetrahedra (region 1), the inner vertices
-/// jittered by up to 'jitter' (a fixed sequence), the outer ones fixed.
-void Lattice(int n, double jitter, std::vector<double>& p, amTetraImprove::Mesh& m)
-{
-  std::uint64_t state = 12345;
-  auto random = [&state]() {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
-  };
-  auto id = [n](int i, int j, int k) { return (k * n + j) * n + i; };
-  auto outer = [n](int i, int j, int k) { return i == 0 || j == 0 || k == 0 || i == n - 1 || j == n - 1 || k == n - 1; };
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-      {
-        const double d = outer(i, j, k) ? 0 : 2 * jitter;
-        p.push_back(i + d * random());
-        p.push_back(j + d * random());
-        p.push_back(k + d * random());
-      }
-  const size_t nv = p.size() / 3;
-  m.Inc.resize(nv);
-  m.FixedVertex.assign(nv, 0);
-  m.Dirty.assign(nv, 1);
-  static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
-  for (int k = 0; k + 1 < n; ++k)
-    for (int j = 0; j + 1 < n; ++j)
-      for (int i = 0; i + 1 < n; ++i)
-        for (const auto& a : axes)
-        {
-          int c[3] = { i, j, k };
-          Tet t;
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s)
-          {
-            ++c[a[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          if (amTetraGeometry::SignedVolume(&p[3 * t[0]], &p[3 * t[1]], &p[3 * t[2]], &p[3 * t[3]]) < 0)
-            std::swap(t[2], t[3]);
-          m.Add(t, 1);
-        }
-  for (int v = 0; v < static_cast<int>(nv); ++v)
-    m.FixedVertex[v] = outer(v % n, (v / n) % n, v / (n * n));
-}
-}
 
 // SmoothAll makes its blocks' choices on two threads at once, and takes them in order: the mesh
 // it leaves is, bit for bit, the serial loop's (three blocks of vertices).
@@ -153,8 +106,8 @@ TEST(TetraImprove, SmoothAllIsTheSerialLoopBitForBit)
 {
   std::vector<double> serialPoints, blockPoints;
   amTetraImprove::Mesh serial(serialPoints), blocks(blockPoints);
-  Lattice(22, 0.3, serialPoints, serial);
-  Lattice(22, 0.3, blockPoints, blocks);
+  amTest::Lattice(22, 0.3, serialPoints, serial);
+  amTest::Lattice(22, 0.3, blockPoints, blocks);
   ASSERT_GT(serial.Inc.size(), 2 * 4096u);
   vtkSMPTools::SetBackend("STDThread");
   vtkSMPTools::Initialize(2);
@@ -184,8 +137,8 @@ TEST(TetraImprove, TopologyPassIsTheSerialLoopBitForBit)
 {
   std::vector<double> serialPoints, blockPoints;
   amTetraImprove::Mesh serial(serialPoints), blocks(blockPoints);
-  Lattice(16, 0.45, serialPoints, serial);
-  Lattice(16, 0.45, blockPoints, blocks);
+  amTest::Lattice(16, 0.45, serialPoints, serial);
+  amTest::Lattice(16, 0.45, blockPoints, blocks);
   vtkSMPTools::SetBackend("STDThread");
   vtkSMPTools::Initialize(2);
   const double bad = 1 / 1.6, split = 1 / 5.0;

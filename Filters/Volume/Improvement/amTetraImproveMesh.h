@@ -10,7 +10,9 @@
  * The sliver phase (amTetraImproveSlivers.cxx), where the surface may move within a budget:
  * surface vertex slides (Climb with a radius, StarDeviation), amTetraImproveRelabel.cxx (a
  * surface-bound sliver handed to the region across the surface), amTetraImproveSurfaceSplit.cxx
- * (a surface edge split at its midpoint), amTetraImproveDeviation.cxx (what the surface moved).
+ * (a surface edge split at its midpoint), amTetraImproveCollapse.cxx (a short surface edge
+ * collapsed, along its interface or junction curve), amTetraImproveDeviation.cxx (what the
+ * surface moved).
  */
 #ifndef amTetraImproveMesh_h
 #define amTetraImproveMesh_h
@@ -240,6 +242,15 @@ long CountSlivers(const Mesh& m, const amTetraMeshOptimizer::Options& options);
 /// the surface's deviation is measured and kept within the budget (report.SurfaceDeviation).
 void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraMeshOptimizer::Report& report,
   const std::function<void(int)>& improve, const std::function<void()>& fixEdges);
+/// Collapses the surface edge (v, u): v moves onto u and leaves the mesh with the elements on the
+/// edge; the fixed faces around u are then those between two regions. Only where every interface
+/// around v is on the edge (v inside an interface, or on a junction curve along it), the link
+/// condition holds (the mesh stays a manifold), no element inverts, the worst element around
+/// the two gets better, every region keeps an element (regionCount, updated), and the surface
+/// moves by at most maxDeviation (sampled, two-sided, over the fixed faces around them). Returns
+/// that displacement, or -1 (the mesh as it was).
+double CollapseSurfaceEdge(
+  Mesh& m, int v, int u, double maxDeviation, std::unordered_map<int, long>& regionCount);
 /// Splits the surface edge (u, v) at its midpoint, every element and fixed face on it in two
 /// (the surface keeps its shape); returns the new vertex, or -1.
 int SplitSurfaceEdge(Mesh& m, int u, int v);

@@ -88,12 +88,46 @@ double Moved(const Mesh& m, const Tet& x)
   return most;
 }
 
+/// What an attempt does first in each round.
+enum class First
+{
+  Slide,    // surface vertex slides
+  Relabel,  // region changes
+  Collapse, // surface edge collapses
+};
+
+/// Collapses a surface edge of sliver t, the shortest that collapses (either way) within
+/// maxDeviation: the displacement, or -1.
+double CollapseShortest(Mesh& m, int t, double maxDeviation, std::unordered_map<int, long>& regionCount)
+{
+  const Tet x = m.T[t];
+  std::vector<std::pair<double, std::pair<int, int>>> edges;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (m.FixedEdges.count(EdgeKey(x[i], x[j])))
+      {
+        const Vec d = amTetraGeometry::Sub(m.X(x[i]), m.X(x[j]));
+        edges.push_back({ amTetraGeometry::Dot(d, d), { x[i], x[j] } });
+      }
+  std::sort(edges.begin(), edges.end());
+  for (const auto& e : edges)
+    for (const auto& vu : { e.second, std::make_pair(e.second.second, e.second.first) })
+    {
+      const double moved = CollapseSurfaceEdge(m, vu.first, vu.second, maxDeviation, regionCount);
+      if (moved >= 0)
+        return moved;
+    }
+  return -1;
+}
+
 /// The rounds of one attempt with the given budget (mm): slivers' surface vertices slide (three
 /// quarters of it), slivers still bad change region (once each, within what the budget leaves
 /// where their vertices slid), a surface edge of those left is split, then the flips and moves
-/// run again. 'relabelFirst': slivers change region before any slide too (a fin's element,
-/// removed while the whole budget is left there, before slides around it spend it).
-void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budget, bool relabelFirst,
+/// run again. 'first' Relabel: slivers change region before any slide too (a fin's element,
+/// removed while the whole budget is left there, before slides around it spend it); Collapse:
+/// before that, a short surface edge of each sliver collapses (where a junction curve zigzags,
+/// or a vertex inside an interface sits next to one, no element spans the place well).
+void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budget, First first,
   amTetraMeshOptimizer::Report& report, const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
 {
   std::unordered_map<int, long> regionCount;
@@ -101,7 +135,7 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
     if (m.Alive[t])
       ++regionCount[m.R[t]];
   const double slide = 0.75 * budget;
-  std::unordered_set<int> relabelled; // once each: a sliver handed back and forth frees nothing
+  std::unordered_set<int> relabelled;              // once each: a sliver handed back and forth frees nothing
   const double goal = 1.05 * SliverClear(options); // a margin: the bar is on Q and angles, the goal on the objective
   for (int round = 1; round <= options.SliverRounds; ++round)
   {
@@ -117,7 +151,15 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
           ++changes;
         }
     };
-    if (relabelFirst)
+    if (first == First::Collapse)
+      for (size_t t = 0; t < limit; ++t)
+        if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options) &&
+          CollapseShortest(m, static_cast<int>(t), budget - Moved(m, m.T[t]), regionCount) >= 0)
+        {
+          ++report.SurfaceCollapses;
+          ++changes;
+        }
+    if (first == First::Relabel)
       relabel();
     for (size_t t = 0; t < limit; ++t)
       if (m.Alive[t] && IsSliver(m, static_cast<int>(t), options))
@@ -157,7 +199,8 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   // same mesh with another budget: smaller after one that went past MaximumSurfaceDeviation,
   // between the two after one within it that left slivers (which slivers the rounds free
   // depends on the budget in no simple way). Where four budgets leave slivers, four more are
-  // tried with the regions changed first (relabelFirst). The best within the bound is kept
+  // tried with the regions changed first (First::Relabel), and where those do, four more with
+  // a surface edge of each sliver collapsed before that (First::Collapse). The best within the bound is kept
   // (fewest slivers, the first of equals); none within it leaves the mesh as it was.
   const std::vector<double> points = m.P;
   const Mesh saved = m;
@@ -167,17 +210,17 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   amTetraMeshOptimizer::Report bestReport = savedReport;
   long bestSlivers = -1;
   const double bound = options.MaximumSurfaceDeviation;
-  constexpr int Budgets = 4; // per order of the operations
+  constexpr int Budgets = 4, Orders = 3; // budgets per order of the operations (First)
   double budget = bound, within = 0, past = std::numeric_limits<double>::infinity();
-  for (int attempt = 0; attempt < 2 * Budgets; ++attempt)
+  for (int attempt = 0; attempt < Orders * Budgets; ++attempt)
   {
-    if (attempt == Budgets)
+    if (attempt > 0 && attempt % Budgets == 0)
     {
       budget = bound; // the search again, with the other order
       within = 0;
       past = std::numeric_limits<double>::infinity();
     }
-    Attempt(m, options, budget, attempt >= Budgets, report, improve, fixEdges);
+    Attempt(m, options, budget, static_cast<First>(attempt / Budgets), report, improve, fixEdges);
     const double deviation = SurfaceDeviation(m, surfaceBefore);
     const long slivers = CountSlivers(m, options);
     if (deviation <= bound)
@@ -196,7 +239,7 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
     }
     else
       past = std::min(past, budget);
-    if (attempt == 2 * Budgets - 1)
+    if (attempt == Orders * Budgets - 1)
       break;
     if (within == 0)
       budget *= 0.9 * bound / deviation;
