@@ -24,6 +24,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Image_3.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_3/initialize_triangulation_from_labeled_image.h>
 #include <CGAL/Mesh_3/polylines_to_protect.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_constant_domain_field_3.h>
@@ -36,10 +37,12 @@
 #include <CGAL/make_mesh_3.h>
 #include <CGAL/odt_optimize_mesh_3.h>
 #include <CGAL/perturb_mesh_3.h>
+#include <CGAL/refine_mesh_3.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -269,10 +272,32 @@ int amLabelMapTetrahedralize::RequestData(
   C3t3 c3t3;
   try
   {
-    if (this->ProtectJunctions)
-      c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::features(domain), p::no_perturb(), p::no_exude());
-    else
-      c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, p::no_features(), p::no_perturb(), p::no_exude());
+    {
+      // Every connected component of every label gets initial points, shot from a voxel inside
+      // it to its boundary: from Mesh_3's default start (random points on the domain) a small
+      // region can be missed entirely. The shots' directions come from CGAL's default random
+      // numbers, seeded here so that the same input gives the same mesh; the search's report on
+      // std::cout is not passed on.
+      CGAL::get_default_random() = CGAL::Random(0);
+      std::streambuf* const out = std::cout.rdbuf(nullptr);
+      struct Restore
+      {
+        std::streambuf* Out;
+        ~Restore()
+        {
+          std::cout.rdbuf(this->Out);
+          std::cout.clear();
+        }
+      } restore{ out };
+      if (wide)
+        initialize_triangulation_from_labeled_image(
+          c3t3, domain, image, criteria, static_cast<unsigned short>(0), this->ProtectJunctions != 0);
+      else
+        initialize_triangulation_from_labeled_image(
+          c3t3, domain, image, criteria, static_cast<unsigned char>(0), this->ProtectJunctions != 0);
+    }
+    // (The protecting balls of the junction curves stay: no reset of the triangulation.)
+    CGAL::refine_mesh_3(c3t3, domain, criteria, p::no_perturb(), p::no_exude(), p::no_reset_c3t3());
     this->UpdateProgress(0.6);
     if (this->Odt)
       CGAL::odt_optimize_mesh_3(c3t3, domain, p::time_limit = 0, p::max_iteration_number = 20);

@@ -2,10 +2,11 @@
 // bound the tetrahedra exactly, the world frame (origin, direction), every phantom organ, same
 // result twice, bad input.
 #include "amAtlasChain.h" // amTest::DistinctValues
+#include "amImageReader.h"
 #include "amLabelMapTetrahedralize.h"
 #include "amMeshQuality.h"
-#include "amSyntheticAtlasSource.h"
 #include "amSurfaceTestUtilities.h"
+#include "amSyntheticAtlasSource.h"
 #include "amTestUtilities.h"
 #include "amThoraxPhantomSource.h"
 
@@ -39,8 +40,7 @@ double Det(const double a[3], const double b[3], const double c[3], const double
     v[k] = c[k] - a[k];
     w[k] = d[k] - a[k];
   }
-  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-    u[2] * (v[0] * w[1] - v[1] * w[0]);
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
 }
 
 /// Per region: volume of its tetrahedra, and the number with non-positive volume.
@@ -365,7 +365,8 @@ TEST(LabelMapTetrahedralize, BadInput)
     EXPECT_NE(r.Errors.find("empty"), std::string::npos) << r.Errors;
   }
   {
-    const Meshing r = MeshIt(amTest::LabelMap(8, 8, 8, 1.0, origin, [](double, double, double) { return 0; }), 2, 3, 0.5);
+    const Meshing r =
+      MeshIt(amTest::LabelMap(8, 8, 8, 1.0, origin, [](double, double, double) { return 0; }), 2, 3, 0.5);
     EXPECT_FALSE(r.Ok);
     EXPECT_NE(r.Errors.find("only the background"), std::string::npos) << r.Errors;
   }
@@ -426,4 +427,34 @@ TEST(LabelMapTetrahedralize, MoreThan255Labels)
   m->SetFacetDistance(1.0);
   m->Update();
   EXPECT_EQ(amTest::DistinctValues(m->GetOutput()->GetCellData()->GetArray("Region")), labels);
+}
+
+// A real map nobody tuned for (the niivue torso, 0.78 x 0.78 x 5 mm voxels): every label a region,
+// its small ones too (each connected component seeded before the refinement), and with the
+// improvement no element above Q 10 or under 10 degrees.
+TEST(LabelMapTetrahedralize, EveryLabelOfARealMapAndNoSliver)
+{
+  AM_REQUIRE_SHARED(path, "niivue_torso_labels/torsoLabel.nii.gz");
+  vtkNew<amImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  std::set<int> labels = amTest::DistinctValues(reader->GetOutput()->GetPointData()->GetScalars());
+  labels.erase(0);
+  vtkNew<amLabelMapTetrahedralize> m;
+  m->SetInputConnection(reader->GetOutputPort());
+  m->SetFacetDistance(2);
+  m->SetFacetSize(8);
+  m->SetCellSize(8);
+  m->SetImproveQuality(true);
+  m->Update();
+  EXPECT_EQ(amTest::DistinctValues(m->GetOutput()->GetCellData()->GetArray("Region")), labels);
+  vtkNew<amMeshQuality> quality;
+  quality->SetInputData(m->GetOutput());
+  quality->Update();
+  std::printf("%zu labels, %lld tetrahedra, worst Q %.2f, smallest dihedral %.2f deg\n", labels.size(),
+    static_cast<long long>(m->GetOutput()->GetNumberOfCells()), quality->GetMaximumQuality(),
+    quality->GetMinimumDihedralAngle());
+  EXPECT_EQ(m->GetNumberOfSlivers(), 0);
+  EXPECT_LE(quality->GetMaximumQuality(), 10.0);
+  EXPECT_GE(quality->GetMinimumDihedralAngle(), 10.0);
 }
