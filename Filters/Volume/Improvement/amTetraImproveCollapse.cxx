@@ -116,15 +116,10 @@ bool LinkCondition(const Mesh& m, int u, int v)
 /// The largest distance from the sampled points of the triangles 'from' to the set 'to'.
 double Farthest(const Mesh& m, const std::vector<Tri>& from, const std::vector<Tri>& to)
 {
-  double worst = 0, closest[3];
+  double worst = 0;
   for (const Tri& f : from)
-    SampleTriangle(m.X(f[0]), m.X(f[1]), m.X(f[2]), 8, [&](const double* x) {
-      double best = std::numeric_limits<double>::infinity();
-      for (const Tri& g : to)
-        best = std::min(best, amTriangleLocator::ClosestPointOnTriangle(x, m.X(g[0]), m.X(g[1]), m.X(g[2]), closest));
-      worst = std::max(worst, best);
-    });
-  return std::sqrt(worst);
+    worst = std::max(worst, FarthestPoint(m, f, to));
+  return worst;
 }
 
 /// The fixed faces holding vertex w.

@@ -44,6 +44,20 @@ double Farthest(const std::vector<Tri>& from, const double* fromPoints, const am
 }
 }
 
+double FarthestPoint(const Mesh& m, const Tri& f, const std::vector<Tri>& to)
+{
+  if (to.empty())
+    return std::numeric_limits<double>::infinity();
+  double worst = 0, closest[3];
+  SampleTriangle(m.X(f[0]), m.X(f[1]), m.X(f[2]), 8, [&](const double* x) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Tri& g : to)
+      best = std::min(best, amTriangleLocator::ClosestPointOnTriangle(x, m.X(g[0]), m.X(g[1]), m.X(g[2]), closest));
+    worst = std::max(worst, best);
+  });
+  return std::sqrt(worst);
+}
+
 double StarDeviation(const Mesh& m, int v, const double* y)
 {
   // The fixed faces around v, on the positions now (v at y) and on the original ones.

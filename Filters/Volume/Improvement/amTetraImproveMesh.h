@@ -66,7 +66,7 @@ public:
   std::vector<Tet> T;
   std::vector<int> R;
   std::vector<char> Alive;
-  std::vector<double> Q; // Objective per tetrahedron (kept current as vertices move)
+  std::vector<double> Q;   // Objective per tetrahedron (kept current as vertices move)
   std::vector<char> Tried; // per tetrahedron: the flips failed and nothing moved since
   std::vector<char> Dirty; // per vertex: its star changed since it was last smoothed
   std::vector<std::vector<int>> Inc;
@@ -183,8 +183,8 @@ void Replace(Mesh& m, const std::vector<int>& killed, const std::vector<Tet>& ma
 bool Mend(Mesh& m, int t, double split, int maxRing, amTetraMeshOptimizer::Report& report, std::vector<int>& ringTets,
   std::vector<int>& ring);
 /// The topology pass over the tetrahedra 0 .. m.T.size()-1 as they are when it starts: for each
-/// alive one not yet tried and worse than 'bad', Mend. Exactly that serial loop: blocks of tetrahedra have their flips planned on the threads
-/// at once, then made in order, and one whose neighbourhood a change in its block touched first
+/// alive one not yet tried and worse than 'bad', Mend. Exactly that serial loop: blocks of tetrahedra have their flips
+/// planned on the threads at once, then made in order, and one whose neighbourhood a change in its block touched first
 /// is done again at its turn. Adds what it did to the report; returns the changes.
 long TopologyPass(Mesh& m, double bad, double split, int maxRing, amTetraMeshOptimizer::Report& report);
 /// The star of v as it is: its worst objective and the sum of the inverse objectives.
@@ -249,14 +249,16 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
 /// the two gets better, every region keeps an element (regionCount, updated), and the surface
 /// moves by at most maxDeviation (sampled, two-sided, over the fixed faces around them). Returns
 /// that displacement, or -1 (the mesh as it was).
-double CollapseSurfaceEdge(
-  Mesh& m, int v, int u, double maxDeviation, std::unordered_map<int, long>& regionCount);
+double CollapseSurfaceEdge(Mesh& m, int v, int u, double maxDeviation, std::unordered_map<int, long>& regionCount);
 /// Splits the surface edge (u, v) at its midpoint, every element and fixed face on it in two
 /// (the surface keeps its shape); returns the new vertex, or -1.
 int SplitSurfaceEdge(Mesh& m, int u, int v);
 /// The two-sided Hausdorff distance between the surface as it was ('before', on m.Origin) and
 /// the fixed faces now, over the triangles that changed (sampled, corners and edges included).
 double SurfaceDeviation(const Mesh& m, const std::vector<Tri>& before);
+/// The largest distance from a point of triangle f to the triangles 'to' (sampled on a grid of
+/// 45 points, corners and edges included); inf when 'to' is empty.
+double FarthestPoint(const Mesh& m, const Tri& f, const std::vector<Tri>& to);
 /// v's own share of the surface's displacement: the two-sided Hausdorff distance (sampled)
 /// between the fixed faces around v with v at y and with v at its origin (m.Origin), the other
 /// vertices where they are now; inf when v has no origin (made inside the mesh).
@@ -264,7 +266,7 @@ double StarDeviation(const Mesh& m, int v, const double* y);
 
 /// Points of triangle (a, b, c) on a barycentric grid of 'steps' intervals per edge, corners
 /// and edges included: f(x) for each.
-template <typename F>
+template<typename F>
 void SampleTriangle(const double* a, const double* b, const double* c, int steps, F&& f)
 {
   for (int i = 0; i <= steps; ++i)

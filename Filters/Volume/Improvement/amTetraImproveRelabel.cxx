@@ -1,7 +1,5 @@
 #include "amTetraImproveMesh.h"
 
-#include "amTriangleLocator.h"
-
 #include <cmath>
 #include <limits>
 
@@ -12,22 +10,6 @@ namespace
 Tri Face(const Tet& x, int i)
 {
   return Sorted(x[(i + 1) % 4], x[(i + 2) % 4], x[(i + 3) % 4]);
-}
-
-/// The largest distance from a point of triangle f to the triangles 'to' (sampled on a grid of
-/// 45 points, corners and edges included).
-double FarthestPoint(const Mesh& m, const Tri& f, const std::vector<Tri>& to)
-{
-  if (to.empty())
-    return std::numeric_limits<double>::infinity();
-  double worst = 0, closest[3];
-  SampleTriangle(m.X(f[0]), m.X(f[1]), m.X(f[2]), 8, [&](const double* x) {
-    double best = std::numeric_limits<double>::infinity();
-    for (const Tri& g : to)
-      best = std::min(best, amTriangleLocator::ClosestPointOnTriangle(x, m.X(g[0]), m.X(g[1]), m.X(g[2]), closest));
-    worst = std::max(worst, best);
-  });
-  return std::sqrt(worst);
 }
 }
 
