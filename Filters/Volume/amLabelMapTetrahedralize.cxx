@@ -174,8 +174,11 @@ int amLabelMapTetrahedralize::RequestData(
     return 0;
   }
   const bool wide = nLabels > 255;
+  // One voxel of background all round: CGAL's image domain ends at the centres of the outermost
+  // voxels, which would cut the labels on the border in half (a one-voxel label there vanished).
+  const int padded[3] = { dims[0] + 2, dims[1] + 2, dims[2] + 2 };
   _image* raw = ::_createImage(
-    dims[0], dims[1], dims[2], 1, spacing[0], spacing[1], spacing[2], wide ? 2 : 1, WK_FIXED, SGN_UNSIGNED);
+    padded[0], padded[1], padded[2], 1, spacing[0], spacing[1], spacing[2], wide ? 2 : 1, WK_FIXED, SGN_UNSIGNED);
   if (!raw)
   {
     vtkErrorMacro("Could not allocate the CGAL image (" << nv << " voxels).");
@@ -184,6 +187,8 @@ int amLabelMapTetrahedralize::RequestData(
   CGAL::Image_3 image(raw);
   {
     // Runs of one label are common: the map lookup only where the value changes.
+    const size_t total = static_cast<size_t>(padded[0]) * padded[1] * padded[2];
+    std::fill_n(static_cast<unsigned char*>(raw->data), total * (wide ? 2 : 1), 0);
     double last = std::numeric_limits<double>::quiet_NaN();
     int index = 0;
     for (vtkIdType i = 0; i < nv; ++i)
@@ -194,10 +199,12 @@ int amLabelMapTetrahedralize::RequestData(
         last = v;
         index = compactOf[static_cast<int>(v)];
       }
+      const vtkIdType x = i % dims[0], y = (i / dims[0]) % dims[1], z = i / (static_cast<vtkIdType>(dims[0]) * dims[1]);
+      const size_t at = static_cast<size_t>(((z + 1) * padded[1] + (y + 1)) * padded[0] + (x + 1));
       if (wide)
-        static_cast<unsigned short*>(raw->data)[i] = static_cast<unsigned short>(index);
+        static_cast<unsigned short*>(raw->data)[at] = static_cast<unsigned short>(index);
       else
-        static_cast<unsigned char*>(raw->data)[i] = static_cast<unsigned char>(index);
+        static_cast<unsigned char*>(raw->data)[at] = static_cast<unsigned char>(index);
     }
   }
   std::map<int, vtkIdType> count; // compact index -> voxel count
@@ -331,7 +338,7 @@ int amLabelMapTetrahedralize::RequestData(
   const Tr& tr = c3t3.triangulation();
   auto world = [&](Tr::Vertex_handle v) {
     const Point p = tr.geom_traits().construct_point_3_object()(tr.point(v));
-    const double local[3] = { p.x(), p.y(), p.z() };
+    const double local[3] = { p.x() - spacing[0], p.y() - spacing[1], p.z() - spacing[2] }; // (the padding)
     std::array<double, 3> x;
     for (int r = 0; r < 3; ++r)
       x[r] =

@@ -8,9 +8,10 @@
  * error). Every label other than BackgroundLabel becomes a subdomain: CGAL meshes a compact copy
  * (background 0, the labels 1..K in increasing order; 8-bit up to 255 labels, 16-bit up to 65535)
  * and each region is given its own label back.
- * CGAL's Delaunay refinement starts from points on the boundary of every connected component of
- * every label (CGAL's initialize_triangulation_from_labeled_image: a small region is not left to
- * chance), samples the interfaces of the (trilinearly interpolated) label function and refines
+ * CGAL's Delaunay refinement meshes the map padded with one voxel of background (so the labels on
+ * the image's border keep their whole voxels), starts from points on the boundary of every
+ * connected component of every label (CGAL's initialize_triangulation_from_labeled_image: a small
+ * region is not left to chance), samples the interfaces of the (trilinearly interpolated) label function and refines
  * until the criteria hold: FacetDistance (surface approximation, mm),
  * FacetSize and FacetAngle (surface triangles), CellSize and CellRadiusEdgeRatio (tetrahedra).
  * With ProtectJunctions (default), the curves where three or more labels meet (and where labels
