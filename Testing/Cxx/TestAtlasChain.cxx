@@ -79,6 +79,16 @@ void ExpectNoSliver(amTetrahedralize* tetra, double deviation)
   EXPECT_GE(quality->GetMinimumDihedralAngle(), 10.0);
 }
 
+/// The errors of a chain's remeshing and TetGen stages (and their executives), caught.
+void WatchRemeshAndTetra(amTest::ErrorCatcher* errors, amTest::AtlasChain& chain)
+{
+  for (vtkAlgorithm* a : { static_cast<vtkAlgorithm*>(chain.Remesh), static_cast<vtkAlgorithm*>(chain.Tetra) })
+  {
+    errors->Watch(a);
+    errors->Watch(a->GetExecutive());
+  }
+}
+
 enum Variant
 {
   Clean,
@@ -148,11 +158,7 @@ TEST(AtlasChain, HundredLabels)
   {
     amTest::AtlasChain chain(100, 1, dims, spacing, 0.0, noise, eps);
     vtkNew<amTest::ErrorCatcher> errors;
-    for (vtkAlgorithm* a : { static_cast<vtkAlgorithm*>(chain.Remesh), static_cast<vtkAlgorithm*>(chain.Tetra) })
-    {
-      errors->Watch(a);
-      errors->Watch(a->GetExecutive());
-    }
+    WatchRemeshAndTetra(errors, chain);
     chain.Tetra->Update();
     ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
     std::set<int> labels = amTest::DistinctValues(chain.Source->GetOutput()->GetPointData()->GetScalars());
@@ -254,11 +260,7 @@ TEST_P(RealLabelMaps, EveryLabelARegionThroughTetGen)
   chain.Metric->SetMinimumSize(map.MinimumSize);
   chain.Tetra->SetMaximumSurfaceDeviation(0.5 * map.Tolerance);
   vtkNew<amTest::ErrorCatcher> errors;
-  for (vtkAlgorithm* a : { static_cast<vtkAlgorithm*>(chain.Remesh), static_cast<vtkAlgorithm*>(chain.Tetra) })
-  {
-    errors->Watch(a);
-    errors->Watch(a->GetExecutive());
-  }
+  WatchRemeshAndTetra(errors, chain);
   chain.Tetra->Update();
   ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
   std::set<int> labels = amTest::DistinctValues(reader->GetOutput()->GetPointData()->GetScalars());
