@@ -34,7 +34,6 @@
 #include <CGAL/Random.h>
 #include <CGAL/exude_mesh_3.h>
 #include <CGAL/lloyd_optimize_mesh_3.h>
-#include <CGAL/make_mesh_3.h>
 #include <CGAL/odt_optimize_mesh_3.h>
 #include <CGAL/perturb_mesh_3.h>
 #include <CGAL/refine_mesh_3.h>
@@ -186,9 +185,9 @@ int amLabelMapTetrahedralize::RequestData(
   }
   CGAL::Image_3 image(raw);
   {
-    // Runs of one label are common: the map lookup only where the value changes.
     const size_t total = static_cast<size_t>(padded[0]) * padded[1] * padded[2];
     std::fill_n(static_cast<unsigned char*>(raw->data), total * (wide ? 2 : 1), 0);
+    // Runs of one label are common: the map lookup only where the value changes.
     double last = std::numeric_limits<double>::quiet_NaN();
     int index = 0;
     for (vtkIdType i = 0; i < nv; ++i)

@@ -216,11 +216,7 @@ double CollapseSurfaceEdge(Mesh& m, int v, int u, double maxDeviation, std::unor
     for (int t : added)
       m.Kill(t);
     for (int t : star)
-    {
-      m.Alive[t] = 1;
-      for (int x : m.T[t])
-        m.Inc[x].push_back(t);
-    }
+      m.Revive(t);
     for (const auto& c : changed)
       if (c.second)
         m.FixedFaces.insert(c.first);

@@ -136,6 +136,13 @@ public:
       inc.erase(std::find(inc.begin(), inc.end(), id));
     }
   }
+  /// Brings a killed tetrahedron back in its slot (a change undone).
+  void Revive(int id)
+  {
+    this->Alive[id] = 1;
+    for (int v : this->T[id])
+      this->Inc[v].push_back(id);
+  }
   bool Has(int t, int v) const
   {
     const Tet& x = this->T[t];

@@ -124,8 +124,8 @@ double CollapseShortest(Mesh& m, int t, double maxDeviation, std::unordered_map<
 /// quarters of it), slivers still bad change region (once each, within what the budget leaves
 /// where their vertices slid), a surface edge of those left is split, then the flips and moves
 /// run again. 'first' Relabel: slivers change region before any slide too (a fin's element,
-/// removed while the whole budget is left there, before slides around it spend it); Collapse:
-/// before that, a short surface edge of each sliver collapses (where a junction curve zigzags,
+/// removed while the whole budget is left there, before slides around it spend it); Collapse: a
+/// short surface edge of each sliver collapses before any slide (where a junction curve zigzags,
 /// or a vertex inside an interface sits next to one, no element spans the place well).
 void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budget, First first,
   amTetraMeshOptimizer::Report& report, const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
@@ -199,9 +199,9 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   // same mesh with another budget: smaller after one that went past MaximumSurfaceDeviation,
   // between the two after one within it that left slivers (which slivers the rounds free
   // depends on the budget in no simple way). Where four budgets leave slivers, four more are
-  // tried with the regions changed first (First::Relabel), and where those do, four more with
-  // a surface edge of each sliver collapsed before that (First::Collapse). The best within the bound is kept
-  // (fewest slivers, the first of equals); none within it leaves the mesh as it was.
+  // tried with the regions changed first (First::Relabel), and where those do, four more with a
+  // surface edge of each sliver collapsed first (First::Collapse). The best within the bound is
+  // kept (fewest slivers, the first of equals); none within it leaves the mesh as it was.
   const std::vector<double> points = m.P;
   const Mesh saved = m;
   const amTetraMeshOptimizer::Report savedReport = report;

@@ -67,11 +67,7 @@ int SplitSurfaceEdge(Mesh& m, int u, int v)
     for (int t : made)
       m.Kill(t);
     for (int t : around)
-    {
-      m.Alive[t] = 1;
-      for (int x : m.T[t])
-        m.Inc[x].push_back(t);
-    }
+      m.Revive(t);
     for (const Tri& f : split)
     {
       const int other = f[0] != u && f[0] != v ? f[0] : f[1] != u && f[1] != v ? f[1] : f[2];
