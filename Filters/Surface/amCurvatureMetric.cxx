@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <sstream>
 
@@ -164,6 +165,23 @@ int amCurvatureMetric::RequestData(
     }
   });
   auto sheetOf = [&](vtkIdType t) -> long long { return labelled ? sheetOfTriangle[t] : 0; };
+  // A vertex whose triangles all lie on one interface (all but the junction curves' vertices):
+  // the search steps from it to its edge neighbours, a third of the visits its triangles' corners
+  // take. Mixed: a vertex on two interfaces or more.
+  const long long mixed = std::numeric_limits<long long>::min();
+  std::vector<long long> sheetOfVertex(static_cast<size_t>(np), 0);
+  if (labelled)
+    vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+      for (vtkIdType v = v0; v < v1; ++v)
+      {
+        const vtkIdType r0 = mesh.VertexTriangleStart[v], r1 = mesh.VertexTriangleStart[v + 1];
+        long long sheet = r1 > r0 ? sheetOfTriangle[mesh.VertexTriangles[r0]] : mixed;
+        for (vtkIdType r = r0 + 1; r < r1 && sheet != mixed; ++r)
+          if (sheetOfTriangle[mesh.VertexTriangles[r]] != sheet)
+            sheet = mixed;
+        sheetOfVertex[v] = sheet;
+      }
+    });
 
   // The fit's neighbourhood: every vertex of the interface within 'radius' of the vertex (reached
   // through the interface's triangles), and at least its NeighborhoodRings-ring.
@@ -232,26 +250,30 @@ int amCurvatureMetric::RequestData(
           for (int ring = 0; !frontier.empty(); ++ring)
           {
             next.clear();
-            for (vtkIdType f : frontier)
-              for (vtkIdType r = mesh.VertexTriangleStart[f]; r < mesh.VertexTriangleStart[f + 1]; ++r)
+            auto visit = [&](vtkIdType q) {
+              if (stamp[q] == mark || stamp[q] == -mark)
+                return;
+              if (ring < rings || (Vec3(mesh.Points[q].data()) - p).squaredNorm() <= r2)
               {
-                const vtkIdType t = mesh.VertexTriangles[r];
-                if (sheetOf(t) != sheet)
-                  continue;
-                for (vtkIdType q : mesh.Triangles[t])
-                {
-                  if (stamp[q] == mark || stamp[q] == -mark)
-                    continue;
-                  if (ring < rings || (Vec3(mesh.Points[q].data()) - p).squaredNorm() <= r2)
-                  {
-                    stamp[q] = mark;
-                    seen.push_back(q);
-                    next.push_back(q);
-                  }
-                  else
-                    stamp[q] = -mark; // beyond the radius: so at every later ring too
-                }
+                stamp[q] = mark;
+                seen.push_back(q);
+                next.push_back(q);
               }
+              else
+                stamp[q] = -mark; // beyond the radius: so at every later ring too
+            };
+            for (vtkIdType f : frontier)
+              if (sheetOfVertex[f] == sheet)
+                for (vtkIdType r = mesh.RingStart[f]; r < mesh.RingStart[f + 1]; ++r)
+                  visit(mesh.Ring[r]);
+              else
+                for (vtkIdType r = mesh.VertexTriangleStart[f]; r < mesh.VertexTriangleStart[f + 1]; ++r)
+                {
+                  const vtkIdType t = mesh.VertexTriangles[r];
+                  if (sheetOf(t) == sheet)
+                    for (vtkIdType q : mesh.Triangles[t])
+                      visit(q);
+                }
             frontier.swap(next);
           }
           nbrs.clear();
@@ -285,21 +307,30 @@ int amCurvatureMetric::RequestData(
       for (vtkIdType v = 0; v < np; ++v)
         h[v] = std::min(sizeOf(curv[v].K1), sizeOf(curv[v].K2));
       vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+        Stamps& stamps = stampLocal.Local();
+        std::vector<int>& stamp = stamps.Of;
+        if (stamp.size() != static_cast<size_t>(np))
+          stamp.assign(static_cast<size_t>(np), 0);
         std::vector<vtkIdType> near;
         std::vector<double> values;
         for (vtkIdType v = v0; v < v1; ++v)
         {
+          // The 2-ring, each vertex once (the median does not depend on their order).
+          const int mark = ++stamps.Current;
           near.assign(1, v);
+          stamp[v] = mark;
           for (int ring = 0, from = 0; ring < 2; ++ring)
           {
             const int to = static_cast<int>(near.size());
             for (int i = from; i < to; ++i)
               for (vtkIdType r = mesh.RingStart[near[i]]; r < mesh.RingStart[near[i] + 1]; ++r)
-                near.push_back(mesh.Ring[r]);
+                if (stamp[mesh.Ring[r]] != mark)
+                {
+                  stamp[mesh.Ring[r]] = mark;
+                  near.push_back(mesh.Ring[r]);
+                }
             from = to;
           }
-          std::sort(near.begin(), near.end());
-          near.erase(std::unique(near.begin(), near.end()), near.end());
           values.clear();
           for (vtkIdType q : near)
             values.push_back(h[q]);
