@@ -12,9 +12,8 @@ namespace
 // The supernodal factor calls BLAS; a threaded OpenBLAS splits its sums differently for each
 // thread count, which changes the last bits of the result. For results that do not depend on
 // the machine's core count, OpenBLAS (when it is the BLAS in use) runs on a fixed number of
-// threads while CHOLMOD works (two: the factor's dense products are most of the torso's time),
-// and gets its setting back afterwards.
-constexpr int Threads = 2;
+// threads while CHOLMOD works (amSparseCholesky::BlasThreads), and gets its setting back
+// afterwards.
 
 // Free nodes from which METIS alone orders the matrix.
 constexpr long long LargeMatrix = 20000;
@@ -22,7 +21,7 @@ constexpr long long LargeMatrix = 20000;
 class FixedBlasThreads
 {
 public:
-  FixedBlasThreads()
+  explicit FixedBlasThreads(int threads)
   {
     void* blas = dlopen("libopenblas.so.0", RTLD_LAZY | RTLD_NOLOAD);
     if (!blas)
@@ -33,7 +32,7 @@ public:
     if (this->Set && get)
     {
       this->Saved = get();
-      this->Set(Threads);
+      this->Set(threads);
     }
   }
   ~FixedBlasThreads()
@@ -148,7 +147,7 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
   }
   colStart[m] = fill;
 
-  FixedBlasThreads blas;
+  FixedBlasThreads blas(this->BlasThreads);
   // CHOLMOD's default orders with AMD and then METIS and keeps the better; on a mesh of tens of
   // thousands of nodes METIS (nested dissection) is the better one, by far, so it alone is tried.
   c->nmethods = m >= LargeMatrix ? 1 : 0;
@@ -228,7 +227,7 @@ bool amSparseCholesky::Solve(const double* b, double* x, int count)
       rc[r] = s;
     }
   }
-  FixedBlasThreads blas;
+  FixedBlasThreads blas(this->BlasThreads);
   if (!cholmod_l_solve2(CHOLMOD_A, in.L, in.B, nullptr, &in.X, nullptr, &in.Y, &in.E, &in.Common))
     return false;
   const auto* solution = static_cast<const double*>(in.X->x);

@@ -45,6 +45,12 @@ public:
 
   const std::string& Error() const { return this->Message; }
 
+  /// OpenBLAS's threads while CHOLMOD works (a fixed number: the results do not depend on the
+  /// machine's cores). Two suit a large factor, whose dense products are most of its time; one
+  /// suits a small system solved thousands of times, where waking a second thread at each
+  /// solve costs more than it gives (and its waiting thread spins on the other core).
+  int BlasThreads = 2;
+
   /// Figures of the factorisation: non-zeros of L, floating-point operations, seconds, and
   /// whether the supernodal (BLAS) form was used; the ordering ("AMD", "METIS", "NESDIS", ...).
   double FactorNonZeros() const { return this->NonZeros; }

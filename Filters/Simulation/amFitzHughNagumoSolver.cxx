@@ -77,6 +77,7 @@ amFitzHughNagumoSolver::amFitzHughNagumoSolver()
   , StimulusDuration(5.0)
   , StimulusStrength(1.0)
   , ActivationThreshold(0.5)
+  , Solver(DIRECT)
   , SolverTolerance(1e-8)
   , MaximumIterations(1000)
   , NumberOfHeartNodes(0)
@@ -327,6 +328,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   sp.StimulusStart = this->StimulusStart;
   sp.StimulusDuration = this->StimulusDuration;
   sp.StimulusStrength = this->StimulusStrength;
+  sp.Direct = this->Solver == DIRECT;
   sp.SolverTolerance = this->SolverTolerance;
   sp.MaximumIterations = this->MaximumIterations;
   // The Purkinje network's stand-in spreading at a speed: each endocardial node's stimulus
@@ -415,7 +417,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
          << " region=" << this->StimulusRegion << " endocardial=" << this->EndocardialRegions.size()
          << " endocardial_velocity=" << this->EndocardialConductionVelocity
          << " start=" << this->StimulusStart << " duration=" << this->StimulusDuration
-         << " strength=" << this->StimulusStrength;
+         << " strength=" << this->StimulusStrength << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG");
   amProvenance::Record(heart, input, "amFitzHughNagumoSolver", params.str());
   this->Cache = std::move(run);
   return 1;
@@ -494,4 +496,6 @@ void amFitzHughNagumoSolver::PrintSelf(ostream& os, vtkIndent indent)
      << this->StimulusCenter[2] << " radius " << this->StimulusRadius << " region " << this->StimulusRegion << "\n";
   os << indent << "EndocardialRegions: " << this->EndocardialRegions.size()
      << " EndocardialConductionVelocity: " << this->EndocardialConductionVelocity << "\n";
+  os << indent << "Solver: " << (this->Solver == DIRECT ? "DIRECT" : "CONJUGATE_GRADIENT")
+     << " SolverTolerance: " << this->SolverTolerance << " MaximumIterations: " << this->MaximumIterations << "\n";
 }

@@ -18,9 +18,10 @@
  * Discretisation: P1 elements, consistent mass M and stiffness K (amP1Assembly); first-order
  * semi-implicit (IMEX) Euler: (M + dt K) u^{n+1} = M (u^n + dt f(u^n, v^n)), the reaction explicit,
  * diffusion implicit, then v^{n+1} = (v^n + dt c3 u^{n+1}) / (1 + dt c3 c4). The matrix is
- * assembled once; each step is solved by Jacobi-preconditioned conjugate gradients warm-started
- * from the last state (amConjugateGradient). Assembly, products and vector work run on threads;
- * results do not depend on the thread count.
+ * assembled and factored once (sparse Cholesky, amSparseCholesky), so each step is two triangular
+ * sweeps; Solver CONJUGATE_GRADIENT solves each step by Jacobi-preconditioned conjugate gradients
+ * warm-started from the last state instead (amConjugateGradient; no factor in memory). Assembly,
+ * products and vector work run on threads; results do not depend on the thread count.
  *
  * Input: a tetrahedral vtkUnstructuredGrid (e.g. Tetrahedralize's output) with cell data
  * RegionArrayName ("Region"). The heart is the cells whose region is in HeartRegions (default 5,
@@ -176,6 +177,21 @@ public:
   ///@}
 
   ///@{
+  /// Linear solver of each step. DIRECT (default): M + dt K factored once (CHOLMOD), each step
+  /// two triangular sweeps. CONJUGATE_GRADIENT: Jacobi-preconditioned conjugate gradients,
+  /// warm-started, no factor (also where the factor cannot be made).
+  enum SolverType
+  {
+    DIRECT = 0,
+    CONJUGATE_GRADIENT = 1
+  };
+  vtkSetClampMacro(Solver, int, DIRECT, CONJUGATE_GRADIENT);
+  vtkGetMacro(Solver, int);
+  void SetSolverToDirect() { this->SetSolver(DIRECT); }
+  void SetSolverToConjugateGradient() { this->SetSolver(CONJUGATE_GRADIENT); }
+  ///@}
+
+  ///@{
   /// Conjugate gradients: relative residual (default 1e-8) and iteration cap (default 1000).
   vtkSetClampMacro(SolverTolerance, double, 1e-16, 0.1);
   vtkGetMacro(SolverTolerance, double);
@@ -184,7 +200,8 @@ public:
   ///@}
 
   ///@{
-  /// Figures of the last run: heart nodes, steps, mean CG iterations per step, wall seconds of
+  /// Figures of the last run: heart nodes, steps, mean CG iterations per step (0 with the
+  /// DIRECT solver), wall seconds of
   /// the time loop, fraction of heart nodes activated by the end.
   vtkGetMacro(NumberOfHeartNodes, vtkIdType);
   vtkGetMacro(NumberOfSteps, int);
@@ -217,6 +234,7 @@ protected:
   int StimulusRegion;
   double StimulusStart, StimulusDuration, StimulusStrength;
   double ActivationThreshold;
+  int Solver;
   double SolverTolerance;
   int MaximumIterations;
 

@@ -29,6 +29,10 @@ void amFitzHughNagumoStepper::Setup(const amP1Assembly& fem, const std::vector<s
   this->Solver.SetMatrix(&this->S);
   this->Solver.RelativeTolerance = this->P.SolverTolerance;
   this->Solver.MaximumIterations = this->P.MaximumIterations;
+  // One BLAS thread: at each step's small solve a second one would cost more than it gives, and
+  // would spin between steps on the core the other loops use.
+  this->Factor.BlasThreads = 1;
+  this->Factored = this->P.Direct && this->Factor.Factor(&this->S);
   const size_t n = fem.Points.size();
   this->Stimulated = stimulated;
   this->Delays = delays;
@@ -68,7 +72,10 @@ bool amFitzHughNagumoStepper::Step(double t)
   });
   this->M.Multiply(this->W.data(), this->B.data());
   this->UOld = this->U;
-  const amConjugateGradient::Result result = this->Solver.Solve(this->B.data(), this->U.data());
+  if (this->Factored && !this->Factor.Solve(this->B.data(), this->U.data()))
+    this->Factored = false; // no workspace: the conjugate gradients from here on
+  const amConjugateGradient::Result result =
+    this->Factored ? amConjugateGradient::Result{ 0, 0, 0, true } : this->Solver.Solve(this->B.data(), this->U.data());
   this->Iterations += result.Iterations;
   if (!result.Converged)
   {
