@@ -73,10 +73,19 @@ bool WriteAll(int fd, const void* data, size_t bytes)
   return true;
 }
 
-/// Runs TetGen in a child process. TetGen 1.5.0 frees its memory twice when it stops on an error
-/// in library mode (terminatetetgen, then the mesh destructor), which crashes the caller: in a
-/// child, an error or a crash of TetGen becomes a message here. Returns "" on success.
-std::string RunTetGen(std::string& switches, tetgenio& in, amTetGenRun::Result& result)
+/// TetGen in a child process. TetGen 1.5.0 frees its memory twice when it stops on an error in
+/// library mode (terminatetetgen, then the mesh destructor), which crashes the caller: in a
+/// child, an error or a crash of TetGen becomes a message here. Several children run at once.
+struct Child
+{
+  pid_t Pid = -1;
+  int Data = -1, Message = -1; // the result's bytes; TetGen's words (its stdout)
+  std::vector<char> Bytes;
+  std::string Said;
+};
+
+/// Forks the child that tetrahedralizes 'in'; "" on success.
+std::string Start(std::string& switches, tetgenio& in, Child& child)
 {
   int fds[2], msg[2];
   if (::pipe(fds) != 0)
@@ -133,41 +142,65 @@ std::string RunTetGen(std::string& switches, tetgenio& in, amTetGenRun::Result& 
   }
   ::close(fds[1]);
   ::close(msg[1]);
-  std::vector<char> data;
-  std::string said;
+  child.Pid = pid;
+  child.Data = fds[0];
+  child.Message = msg[0];
+  return "";
+}
+
+/// Reads every started child's pipes until all are closed (a child's pipe not read would stop it
+/// once full).
+void Collect(std::vector<Child>& children)
+{
+  std::vector<pollfd> polls;
+  std::vector<std::pair<size_t, int>> owner; // child, 0 data / 1 message
+  for (size_t c = 0; c < children.size(); ++c)
+    if (children[c].Pid > 0)
+    {
+      polls.push_back({ children[c].Data, POLLIN, 0 });
+      owner.emplace_back(c, 0);
+      polls.push_back({ children[c].Message, POLLIN, 0 });
+      owner.emplace_back(c, 1);
+    }
   char buffer[1 << 16];
-  pollfd polls[2] = { { fds[0], POLLIN, 0 }, { msg[0], POLLIN, 0 } };
-  int open = 2;
+  size_t open = polls.size();
   while (open > 0)
   {
-    if (::poll(polls, 2, -1) < 0)
+    if (::poll(polls.data(), polls.size(), -1) < 0)
     {
       if (errno == EINTR)
         continue;
       break;
     }
-    for (int k = 0; k < 2; ++k)
+    for (size_t k = 0; k < polls.size(); ++k)
     {
       if (polls[k].fd < 0 || !(polls[k].revents & (POLLIN | POLLHUP | POLLERR)))
         continue;
       const ssize_t n = ::read(polls[k].fd, buffer, sizeof(buffer));
       if (n < 0 && errno == EINTR)
         continue;
+      Child& child = children[owner[k].first];
       if (n <= 0)
       {
         ::close(polls[k].fd);
         polls[k].fd = -1;
         --open;
       }
-      else if (k == 0)
-        data.insert(data.end(), buffer, buffer + n);
-      else if (said.size() < 4096)
-        said.append(buffer, static_cast<size_t>(n));
+      else if (owner[k].second == 0)
+        child.Bytes.insert(child.Bytes.end(), buffer, buffer + n);
+      else if (child.Said.size() < 4096)
+        child.Said.append(buffer, static_cast<size_t>(n));
     }
   }
   for (auto& pfd : polls)
     if (pfd.fd >= 0)
       ::close(pfd.fd);
+}
+
+/// Waits for the child and reads its result; "" on success.
+std::string Finish(Child& child, amTetGenRun::Result& result)
+{
+  std::string said = child.Said;
   // TetGen's own words, on one line.
   for (char& c : said)
     if (c == '\n' || c == '\t')
@@ -178,9 +211,10 @@ std::string RunTetGen(std::string& switches, tetgenio& in, amTetGenRun::Result& 
     said.pop_back();
   const std::string tetgenSaid = said.empty() ? "" : " TetGen said: \"" + said + "\"";
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+  while (::waitpid(child.Pid, &status, 0) < 0 && errno == EINTR)
   {
   }
+  const std::vector<char>& data = child.Bytes;
   long long header[4] = { 0, 0, 0, 0 };
   if (data.size() < sizeof(header))
   {
@@ -220,38 +254,70 @@ std::string RunTetGen(std::string& switches, tetgenio& in, amTetGenRun::Result& 
 }
 }
 
+std::vector<std::string> amTetGenRun::RunEach(const std::vector<Input>& inputs, const amGradedSizeField& field,
+  const std::string& switches, std::vector<Result>& results, const std::function<void()>& meanwhile)
+{
+  const size_t n = inputs.size();
+  results.assign(n, Result());
+  std::vector<std::string> failures(n);
+  std::vector<Child> children(n);
+  CurrentSizing.Field = &field; // the children inherit it
+  for (size_t i = 0; i < n; ++i)
+  {
+    const amSurfaceMesh& mesh = *inputs[i].Mesh;
+    const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
+    tetgenio in;
+    in.firstnumber = 0;
+    in.numberofpoints = static_cast<int>(np);
+    in.pointlist = new REAL[3 * np];
+    for (vtkIdType v = 0; v < np; ++v)
+      for (int d = 0; d < 3; ++d)
+        in.pointlist[3 * v + d] = mesh.Points[v][d];
+    in.numberoffacets = static_cast<int>(nt);
+    in.facetlist = new tetgenio::facet[nt];
+    in.facetmarkerlist = new int[nt];
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      tetgenio::facet& f = in.facetlist[t];
+      tetgenio::init(&f);
+      f.numberofpolygons = 1;
+      f.polygonlist = new tetgenio::polygon[1];
+      tetgenio::init(&f.polygonlist[0]);
+      f.polygonlist[0].numberofvertices = 3;
+      f.polygonlist[0].vertexlist = new int[3];
+      for (int k = 0; k < 3; ++k)
+        f.polygonlist[0].vertexlist[k] = static_cast<int>(mesh.Triangles[t][k]);
+      in.facetmarkerlist[t] = static_cast<int>(t + 1);
+    }
+    const std::vector<std::array<double, 3>>& holes = inputs[i].Holes;
+    if (!holes.empty())
+    {
+      in.numberofholes = static_cast<int>(holes.size());
+      in.holelist = new REAL[3 * holes.size()];
+      for (size_t h = 0; h < holes.size(); ++h)
+        for (int d = 0; d < 3; ++d)
+          in.holelist[3 * h + d] = holes[h][d];
+    }
+    in.tetunsuitable = &TetTooBig;
+    std::string sw = switches;
+    failures[i] = Start(sw, in, children[i]);
+    in.tetunsuitable = nullptr;
+  }
+  if (meanwhile)
+    meanwhile(); // the children block on their full pipes until it ends, at most
+  Collect(children);
+  for (size_t i = 0; i < n; ++i)
+    if (children[i].Pid > 0)
+      failures[i] = Finish(children[i], results[i]);
+  CurrentSizing.Field = nullptr;
+  return failures;
+}
+
 std::string amTetGenRun::Run(
   const amSurfaceMesh& mesh, const amGradedSizeField& field, const std::string& switches, Result& result)
 {
-  const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
-  tetgenio in;
-  in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(np);
-  in.pointlist = new REAL[3 * np];
-  for (vtkIdType v = 0; v < np; ++v)
-    for (int d = 0; d < 3; ++d)
-      in.pointlist[3 * v + d] = mesh.Points[v][d];
-  in.numberoffacets = static_cast<int>(nt);
-  in.facetlist = new tetgenio::facet[nt];
-  in.facetmarkerlist = new int[nt];
-  for (vtkIdType t = 0; t < nt; ++t)
-  {
-    tetgenio::facet& f = in.facetlist[t];
-    tetgenio::init(&f);
-    f.numberofpolygons = 1;
-    f.polygonlist = new tetgenio::polygon[1];
-    tetgenio::init(&f.polygonlist[0]);
-    f.polygonlist[0].numberofvertices = 3;
-    f.polygonlist[0].vertexlist = new int[3];
-    for (int k = 0; k < 3; ++k)
-      f.polygonlist[0].vertexlist[k] = static_cast<int>(mesh.Triangles[t][k]);
-    in.facetmarkerlist[t] = static_cast<int>(t + 1);
-  }
-  CurrentSizing.Field = &field;
-  in.tetunsuitable = &TetTooBig;
-  std::string sw = switches;
-  const std::string failure = RunTetGen(sw, in, result);
-  CurrentSizing.Field = nullptr;
-  in.tetunsuitable = nullptr;
+  std::vector<Result> results;
+  const std::string failure = RunEach({ Input{ &mesh, {} } }, field, switches, results).front();
+  result = std::move(results.front());
   return failure;
 }

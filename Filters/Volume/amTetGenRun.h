@@ -6,12 +6,13 @@
  * TetGen 1.5.0 frees its memory twice when it stops on an error in library mode
  * (terminatetetgen, then the mesh destructor), which crashes the caller: in a child process an
  * error or a crash of TetGen becomes a message. Each input triangle is a facet whose marker is
- * its index + 1, so every boundary triangle of the result names its source.
+ * its index + 1, so every boundary triangle of the result names its source. RunEach runs several
+ * surfaces in as many child processes at once (amTetGenParts: groups of regions).
  *
  * Reference: H. Si, TetGen, a Delaunay-based quality tetrahedral mesh generator, ACM TOMS 41(2),
  * 2015.
  *
- * @sa amTetrahedralize amTetraRegions
+ * @sa amTetrahedralize amTetraRegions amTetGenParts
  */
 #ifndef amTetGenRun_h
 #define amTetGenRun_h
@@ -20,6 +21,8 @@
 
 #include "vtkType.h"
 
+#include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,6 +45,18 @@ public:
   /// why it failed (TetGen's own words included).
   static std::string Run(
     const amSurfaceMesh& mesh, const amGradedSizeField& field, const std::string& switches, Result& result);
+
+  /// A surface to tetrahedralize, and points inside the parts of its volume to leave empty
+  /// (TetGen's holes: the tetrahedra around each are removed up to the surface).
+  struct Input
+  {
+    const amSurfaceMesh* Mesh = nullptr;
+    std::vector<std::array<double, 3>> Holes;
+  };
+  /// Run on each input, all in child processes at once; per input "" or why it failed.
+  /// 'meanwhile' (may be empty) runs on the calling thread while the children work.
+  static std::vector<std::string> RunEach(const std::vector<Input>& inputs, const amGradedSizeField& field,
+    const std::string& switches, std::vector<Result>& results, const std::function<void()>& meanwhile = nullptr);
 };
 
 #endif

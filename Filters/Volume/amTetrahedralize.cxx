@@ -5,7 +5,7 @@
 #include "amRegionVolumes.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
-#include "amTetGenRun.h"
+#include "amTetGenParts.h"
 #include "amTetraGeometry.h"
 #include "amTetraMeshOptimizer.h"
 #include "amTetraRegions.h"
@@ -62,6 +62,7 @@ amTetrahedralize::amTetrahedralize()
   , SurfaceDeviation(0)
   , NumberOfSlivers(0)
   , NumberOfVolumeMisses(0)
+  , NumberOfGroups(0)
 {
   this->SetSizeArrayName("Size");
   this->SetNumberOfOutputPorts(2);
@@ -93,6 +94,7 @@ int amTetrahedralize::RequestData(
   vtkPolyData* interfaces = vtkPolyData::GetData(outputVector, 1);
   this->NumberOfTetrahedra = 0;
   this->NumberOfSteinerPoints = 0;
+  this->NumberOfGroups = 0;
   const int bg = this->BackgroundLabel;
 
   // --- Input checks ------------------------------------------------------------------------------
@@ -163,7 +165,8 @@ int amTetrahedralize::RequestData(
      << this->MinimumDihedralAngle << "O" << this->OptimizationLevel << "/7";
   const std::string switches = sw.str();
   amTetGenRun::Result out;
-  const std::string failure = amTetGenRun::Run(mesh, field, switches, out);
+  const std::string failure =
+    amTetGenParts::Run(mesh, field, switches, bg, this->PreserveSurface != 0, out, &this->NumberOfGroups);
   if (!failure.empty())
   {
     std::ostringstream msg;
@@ -357,7 +360,8 @@ int amTetrahedralize::RequestData(
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
-         << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " tetrahedra=" << this->NumberOfTetrahedra
+         << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " groups=" << this->NumberOfGroups
+         << " tetrahedra=" << this->NumberOfTetrahedra
          << improvement.str();
   amProvenance::Record(output, input, "amTetrahedralize", params.str());
   this->UpdateProgress(1.0);

@@ -27,7 +27,10 @@
  *
  * With PreserveSurface (default, TetGen -Y) the boundary and interface triangles of the output
  * are the input triangles and the input points come first, in order, except where
- * MaximumSurfaceDeviation lets the surface move to free slivers.
+ * MaximumSurfaceDeviation lets the surface move to free slivers. No tetrahedron then spans an
+ * interface, so the regions in two groups of about equal work are meshed by two TetGen processes
+ * at once and put together (amTetGenParts; NumberOfGroups says whether they were): the groups
+ * depend on the surface alone, so the mesh is the same on any number of cores.
  *
  * Output port 0: vtkUnstructuredGrid of tetrahedra (positive volume), cell data "Region",
  * point data "SurfacePointId" (index of the input surface point, -1 inside).
@@ -158,6 +161,8 @@ public:
   /// (when the surface carries its label map's "LabelVoxelVolumes"); each region's figures are in
   /// the output's field data "RegionVolumes" (label, voxel mm^3, mesh mm^3, relative difference).
   vtkGetMacro(NumberOfVolumeMisses, vtkIdType);
+  /// The groups of regions TetGen meshed at once (1: the surface in one run).
+  vtkGetMacro(NumberOfGroups, int);
   ///@}
 
 protected:
@@ -185,6 +190,7 @@ protected:
   double SurfaceDeviation;
   vtkIdType NumberOfSlivers;
   vtkIdType NumberOfVolumeMisses;
+  int NumberOfGroups;
 
 private:
   amTetrahedralize(const amTetrahedralize&) = delete;

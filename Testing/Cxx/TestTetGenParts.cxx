@@ -1,0 +1,135 @@
+// TetGen on two groups of regions at once: a block of label 1 that encloses three small blocks
+// (2, 3, 4), so each group's run needs holes where the other group's regions lie.
+#include "amGradedSizeField.h"
+#include "amLabelSurface.h"
+#include "amSurfaceMesh.h"
+#include "amTetGenParts.h"
+#include "amTetGenRun.h"
+#include "amTetraGeometry.h"
+#include "amTetraRegions.h"
+
+#include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+namespace
+{
+const int N = 14;
+
+/// Label 1: the voxels [2, 12)^3; inside it, 2: [4, 7)^3, 3: [8, 11) x [4, 7) x [4, 7) and
+/// 4: [4, 6) x [8, 11) x [7, 10) (voxel volumes 1000 - 72, 27, 27, 18 mm^3).
+amSurfaceMesh Nested()
+{
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(N, N, N);
+  img->AllocateScalars(VTK_INT, 1);
+  auto* a = vtkIntArray::SafeDownCast(img->GetPointData()->GetScalars());
+  a->SetName("Labels");
+  auto in = [](int v, int lo, int hi) { return v >= lo && v < hi; };
+  for (int k = 0; k < N; ++k)
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i < N; ++i)
+      {
+        int label = in(i, 2, 12) && in(j, 2, 12) && in(k, 2, 12) ? 1 : 0;
+        if (in(i, 4, 7) && in(j, 4, 7) && in(k, 4, 7))
+          label = 2;
+        if (in(i, 8, 11) && in(j, 4, 7) && in(k, 4, 7))
+          label = 3;
+        if (in(i, 4, 6) && in(j, 8, 11) && in(k, 7, 10))
+          label = 4;
+        a->SetValue((k * N + j) * N + i, label);
+      }
+  vtkNew<amLabelSurface> surface;
+  surface->SetInputData(img);
+  surface->SetComputeTopology(false);
+  surface->Update();
+  amSurfaceMesh mesh;
+  std::string why;
+  EXPECT_TRUE(mesh.Build(surface->GetOutput(), why)) << why;
+  return mesh;
+}
+
+std::map<int, double> RegionVolumes(const amSurfaceMesh& mesh, const amTetGenRun::Result& out)
+{
+  amTetraRegions regions;
+  std::string why;
+  EXPECT_TRUE(regions.Assign(mesh, out, 0, why)) << why;
+  std::map<int, double> volume;
+  for (vtkIdType t = 0;
+       t < out.NumberOfTetrahedra && regions.Label.size() == static_cast<size_t>(out.NumberOfTetrahedra); ++t)
+  {
+    const int* v = &out.Tetrahedra[4 * t];
+    const double* p = out.Points.data();
+    const double signed6 = amTetraGeometry::SignedVolume(p + 3 * v[0], p + 3 * v[1], p + 3 * v[2], p + 3 * v[3]);
+    EXPECT_GT(std::fabs(signed6), 0.0) << "tetrahedron " << t << " is flat";
+    volume[regions.Label[t]] += std::fabs(signed6);
+  }
+  return volume;
+}
+}
+
+TEST(TetGenParts, GroupsOfAboutEqualWork)
+{
+  const amSurfaceMesh mesh = Nested();
+  const auto groups = amTetGenParts::Groups(mesh, 0);
+  ASSERT_EQ(groups.size(), 2u);
+  EXPECT_EQ(groups[0], std::vector<int>({ 1 })); // the large block outweighs the three small ones
+  EXPECT_EQ(groups[1], std::vector<int>({ 2, 3, 4 }));
+}
+
+TEST(TetGenParts, TwoGroupsMakeTheMeshOfOneRun)
+{
+  const amSurfaceMesh mesh = Nested();
+  amGradedSizeField field;
+  std::string why;
+  const double bounds[6] = { 0, N, 0, N, 0, N };
+  ASSERT_TRUE(field.Build(mesh.Points, std::vector<double>(mesh.Points.size(), 1.0), 1.5, 10.0, bounds, why)) << why;
+  const std::string switches = "pzQnMYq1.4/10O2/7";
+  amTetGenRun::Result parts, whole;
+  int groups = 0;
+  const std::string failure = amTetGenParts::Run(mesh, field, switches, 0, true, parts, &groups);
+  ASSERT_TRUE(failure.empty()) << failure;
+  EXPECT_EQ(groups, 2);
+  ASSERT_TRUE(amTetGenRun::Run(mesh, field, switches, whole).empty());
+
+  // As one run leaves it: the input points first and unchanged, every triangle a face (in the
+  // triangles' order), the neighbours within range.
+  const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
+  ASSERT_GE(parts.NumberOfPoints, np);
+  for (vtkIdType v = 0; v < np; ++v)
+    for (int d = 0; d < 3; ++d)
+      ASSERT_EQ(parts.Points[3 * v + d], mesh.Points[v][d]);
+  ASSERT_EQ(parts.NumberOfFaces, nt);
+  for (vtkIdType s = 0; s < nt; ++s)
+    EXPECT_EQ(parts.FaceMarkers[s], s + 1);
+  for (int n : parts.Neighbors)
+    ASSERT_LT(n, parts.NumberOfTetrahedra);
+
+  // Every region filled as by one run, to rounding; nothing outside the regions.
+  const auto volume = RegionVolumes(mesh, parts), reference = RegionVolumes(mesh, whole);
+  EXPECT_NEAR(volume.at(1), 1000.0 - 72.0, 1e-9);
+  for (int label : { 2, 3, 4 })
+    EXPECT_NEAR(volume.at(label), reference.at(label), 1e-9) << "label " << label;
+  EXPECT_NEAR(volume.at(4), 18.0, 1e-9);
+  EXPECT_EQ(volume.count(0), 0u);
+}
+
+TEST(TetGenParts, OneRunWhenTheSurfaceMayMove)
+{
+  const amSurfaceMesh mesh = Nested();
+  amGradedSizeField field;
+  std::string why;
+  const double bounds[6] = { 0, N, 0, N, 0, N };
+  ASSERT_TRUE(field.Build(mesh.Points, std::vector<double>(mesh.Points.size(), 1.0), 1.5, 10.0, bounds, why)) << why;
+  amTetGenRun::Result out;
+  int groups = 0;
+  ASSERT_TRUE(amTetGenParts::Run(mesh, field, "pzQnMq1.4/10O2/7", 0, false, out, &groups).empty());
+  EXPECT_EQ(groups, 1);
+}
