@@ -46,6 +46,7 @@ constexpr auto Sub = &amTetraGeometry::Sub;
 amTetrahedralize::amTetrahedralize()
   : BackgroundLabel(0)
   , PreserveSurface(1)
+  , ParallelGroups(false)
   , MaximumRadiusEdgeRatio(1.5)
   , MinimumDihedralAngle(12.0)
   , Gradation(1.3)
@@ -165,8 +166,8 @@ int amTetrahedralize::RequestData(
      << this->MinimumDihedralAngle << "O" << this->OptimizationLevel << "/7";
   const std::string switches = sw.str();
   amTetGenRun::Result out;
-  const std::string failure =
-    amTetGenParts::Run(mesh, field, switches, bg, this->PreserveSurface != 0, out, &this->NumberOfGroups);
+  const std::string failure = amTetGenParts::Run(
+    mesh, field, switches, bg, this->PreserveSurface && this->ParallelGroups, out, &this->NumberOfGroups);
   if (!failure.empty())
   {
     std::ostringstream msg;
@@ -361,8 +362,7 @@ int amTetrahedralize::RequestData(
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
          << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " groups=" << this->NumberOfGroups
-         << " tetrahedra=" << this->NumberOfTetrahedra
-         << improvement.str();
+         << " tetrahedra=" << this->NumberOfTetrahedra << improvement.str();
   amProvenance::Record(output, input, "amTetrahedralize", params.str());
   this->UpdateProgress(1.0);
   return 1;
@@ -373,6 +373,7 @@ void amTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "BackgroundLabel: " << this->BackgroundLabel << "\n";
   os << indent << "PreserveSurface: " << this->PreserveSurface << "\n";
+  os << indent << "ParallelGroups: " << this->ParallelGroups << "\n";
   os << indent << "MaximumRadiusEdgeRatio: " << this->MaximumRadiusEdgeRatio << "\n";
   os << indent << "MinimumDihedralAngle: " << this->MinimumDihedralAngle << "\n";
   os << indent << "Gradation: " << this->Gradation << "\n";

@@ -28,9 +28,9 @@
  * With PreserveSurface (default, TetGen -Y) the boundary and interface triangles of the output
  * are the input triangles and the input points come first, in order, except where
  * MaximumSurfaceDeviation lets the surface move to free slivers. No tetrahedron then spans an
- * interface, so the regions in two groups of about equal work are meshed by two TetGen processes
- * at once and put together (amTetGenParts; NumberOfGroups says whether they were): the groups
- * depend on the surface alone, so the mesh is the same on any number of cores.
+ * interface, so with ParallelGroups the regions in two groups of about equal work are meshed by
+ * two TetGen processes at once and put together (amTetGenParts; NumberOfGroups says whether they
+ * were): the groups depend on the surface alone, so the mesh is the same on any number of cores.
  *
  * Output port 0: vtkUnstructuredGrid of tetrahedra (positive volume), cell data "Region",
  * point data "SurfacePointId" (index of the input surface point, -1 inside).
@@ -68,6 +68,16 @@ public:
   vtkSetMacro(PreserveSurface, vtkTypeBool);
   vtkGetMacro(PreserveSurface, vtkTypeBool);
   vtkBooleanMacro(PreserveSurface, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// With PreserveSurface, mesh the regions in two groups of about equal work by two TetGen
+  /// processes at once (default off). The mesh is then another one of the same quality (each
+  /// group's Steiner points placed without the other's), which on a coarse heart shifts the
+  /// simulation's activation times by a few ms: off keeps one run's mesh.
+  vtkSetMacro(ParallelGroups, vtkTypeBool);
+  vtkGetMacro(ParallelGroups, vtkTypeBool);
+  vtkBooleanMacro(ParallelGroups, vtkTypeBool);
   ///@}
 
   ///@{
@@ -174,6 +184,7 @@ protected:
 
   int BackgroundLabel;
   vtkTypeBool PreserveSurface;
+  vtkTypeBool ParallelGroups;
   double MaximumRadiusEdgeRatio;
   double MinimumDihedralAngle;
   double Gradation;

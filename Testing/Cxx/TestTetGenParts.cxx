@@ -7,12 +7,18 @@
 #include "amTetGenRun.h"
 #include "amTetraGeometry.h"
 #include "amTetraRegions.h"
+#include "amTetrahedralize.h"
 
+#include "vtkCell.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
 
 #include <gtest/gtest.h>
 
@@ -25,7 +31,7 @@ const int N = 14;
 
 /// Label 1: the voxels [2, 12)^3; inside it, 2: [4, 7)^3, 3: [8, 11) x [4, 7) x [4, 7) and
 /// 4: [4, 6) x [8, 11) x [7, 10) (voxel volumes 1000 - 72, 27, 27, 18 mm^3).
-amSurfaceMesh Nested()
+vtkSmartPointer<vtkPolyData> NestedSurface()
 {
   vtkNew<vtkImageData> img;
   img->SetDimensions(N, N, N);
@@ -50,9 +56,14 @@ amSurfaceMesh Nested()
   surface->SetInputData(img);
   surface->SetComputeTopology(false);
   surface->Update();
+  return surface->GetOutput();
+}
+
+amSurfaceMesh Nested()
+{
   amSurfaceMesh mesh;
   std::string why;
-  EXPECT_TRUE(mesh.Build(surface->GetOutput(), why)) << why;
+  EXPECT_TRUE(mesh.Build(NestedSurface(), why)) << why;
   return mesh;
 }
 
@@ -132,4 +143,34 @@ TEST(TetGenParts, OneRunWhenTheSurfaceMayMove)
   int groups = 0;
   ASSERT_TRUE(amTetGenParts::Run(mesh, field, "pzQnMq1.4/10O2/7", 0, false, out, &groups).empty());
   EXPECT_EQ(groups, 1);
+}
+
+TEST(TetGenParts, TetrahedralizeTakesTwoGroupsOnlyWhenAsked)
+{
+  auto surface = NestedSurface();
+  std::map<int, double> volume[2];
+  for (int parallel = 0; parallel < 2; ++parallel)
+  {
+    vtkNew<amTetrahedralize> tets;
+    tets->SetInputData(surface);
+    EXPECT_EQ(tets->GetParallelGroups(), 0); // the default: one run
+    tets->SetParallelGroups(parallel);
+    tets->SetImproveQuality(false);
+    tets->Update();
+    EXPECT_EQ(tets->GetNumberOfGroups(), parallel ? 2 : 1);
+    vtkUnstructuredGrid* grid = tets->GetOutput();
+    vtkDataArray* region = grid->GetCellData()->GetArray("Region");
+    ASSERT_NE(region, nullptr);
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      double p[4][3];
+      for (int k = 0; k < 4; ++k)
+        grid->GetPoint(grid->GetCell(c)->GetPointId(k), p[k]);
+      volume[parallel][static_cast<int>(region->GetComponent(c, 0))] +=
+        std::fabs(amTetraGeometry::SignedVolume(p[0], p[1], p[2], p[3]));
+    }
+  }
+  ASSERT_EQ(volume[0].size(), 4u);
+  for (const auto& [label, v] : volume[0])
+    EXPECT_NEAR(volume[1].at(label), v, 1e-9) << "label " << label;
 }
