@@ -203,21 +203,18 @@ int amMeshQuality::RequestData(vtkInformation*, vtkInformationVector** inputVect
     bool SameFace(const Face& o) const { return this->V[0] == o.V[0] && this->V[1] == o.V[1] && this->V[2] == o.V[2]; }
   };
   std::vector<Face> faces(static_cast<size_t>(4 * ne));
-  vtkSMPTools::For(0, ne, [&](vtkIdType c0, vtkIdType c1) {
-    for (vtkIdType c = c0; c < c1; ++c)
-      for (int i = 0; i < 4; ++i)
-      {
-        Face& f = faces[4 * c + i];
-        int k = 0;
-        for (int j = 0; j < 4; ++j)
-          if (j != i)
-            f.V[k++] = tets[c][j];
-        std::sort(f.V, f.V + 3);
-        f.Region = region[c];
-      }
-  });
-  // Equal faces are alike (same vertices and region): the halves sorted on the threads, merged.
-  amThreading::Sort(faces.begin(), faces.end());
+  for (vtkIdType c = 0; c < ne; ++c)
+    for (int i = 0; i < 4; ++i)
+    {
+      Face& f = faces[4 * c + i];
+      int k = 0;
+      for (int j = 0; j < 4; ++j)
+        if (j != i)
+          f.V[k++] = tets[c][j];
+      std::sort(f.V, f.V + 3);
+      f.Region = region[c];
+    }
+  std::sort(faces.begin(), faces.end());
 
   struct Row
   {
