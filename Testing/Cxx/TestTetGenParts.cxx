@@ -67,6 +67,16 @@ amSurfaceMesh Nested()
   return mesh;
 }
 
+/// Sizes of 1 mm at the surface, graded by 1.5 up to 10 mm.
+bool UnitSizes(const amSurfaceMesh& mesh, amGradedSizeField& field)
+{
+  std::string why;
+  const double bounds[6] = { 0, N, 0, N, 0, N };
+  const bool ok = field.Build(mesh.Points, std::vector<double>(mesh.Points.size(), 1.0), 1.5, 10.0, bounds, why);
+  EXPECT_TRUE(ok) << why;
+  return ok;
+}
+
 std::map<int, double> RegionVolumes(const amSurfaceMesh& mesh, const amTetGenRun::Result& out)
 {
   amTetraRegions regions;
@@ -99,9 +109,7 @@ TEST(TetGenParts, TwoGroupsMakeTheMeshOfOneRun)
 {
   const amSurfaceMesh mesh = Nested();
   amGradedSizeField field;
-  std::string why;
-  const double bounds[6] = { 0, N, 0, N, 0, N };
-  ASSERT_TRUE(field.Build(mesh.Points, std::vector<double>(mesh.Points.size(), 1.0), 1.5, 10.0, bounds, why)) << why;
+  ASSERT_TRUE(UnitSizes(mesh, field));
   const std::string switches = "pzQnMYq1.4/10O2/7";
   amTetGenRun::Result parts, whole;
   int groups = 0;
@@ -136,9 +144,7 @@ TEST(TetGenParts, OneRunWhenTheSurfaceMayMove)
 {
   const amSurfaceMesh mesh = Nested();
   amGradedSizeField field;
-  std::string why;
-  const double bounds[6] = { 0, N, 0, N, 0, N };
-  ASSERT_TRUE(field.Build(mesh.Points, std::vector<double>(mesh.Points.size(), 1.0), 1.5, 10.0, bounds, why)) << why;
+  ASSERT_TRUE(UnitSizes(mesh, field));
   amTetGenRun::Result out;
   int groups = 0;
   ASSERT_TRUE(amTetGenParts::Run(mesh, field, "pzQnMq1.4/10O2/7", 0, false, out, &groups).empty());
