@@ -80,7 +80,7 @@ struct Part
   amSurfaceMesh Mesh;
   std::vector<vtkIdType> Triangle; // part triangle -> the surface's
   std::vector<vtkIdType> Point;    // part point -> the surface's
-  amTetGenRun::Input Input;
+  std::vector<std::array<double, 3>> Holes;
 };
 
 void MakePart(const amSurfaceMesh& mesh, const std::vector<int>& labels, int background, Part& part)
@@ -170,14 +170,15 @@ void MakePart(const amSurfaceMesh& mesh, const std::vector<int>& labels, int bac
     Vec n = G::Cross(G::Sub(b, a), G::Sub(d, a));
     const double length = G::Norm(n);
     const double step = (side == 1 ? 0.01 : -0.01) * entry.first / length;
-    part.Input.Holes.push_back({ (a[0] + b[0] + d[0]) / 3 + step * n[0], (a[1] + b[1] + d[1]) / 3 + step * n[1],
+    part.Holes.push_back({ (a[0] + b[0] + d[0]) / 3 + step * n[0], (a[1] + b[1] + d[1]) / 3 + step * n[1],
       (a[2] + b[2] + d[2]) / 3 + step * n[2] });
   }
 }
 
 /// The groups' results as one run's: false when a group's tetrahedra do not fill its regions.
-bool Merge(const amSurfaceMesh& mesh, int background, std::vector<Part>& parts,
-  std::vector<amTetGenRun::Result>& results, const std::map<int, LabelFigures>& figures, amTetGenRun::Result& merged)
+bool Merge(const amSurfaceMesh& mesh, int background, const std::vector<Part>& parts,
+  const std::vector<amTetGenRun::Result>& results, const std::map<int, LabelFigures>& figures,
+  amTetGenRun::Result& merged)
 {
   const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
   merged = amTetGenRun::Result();
@@ -261,14 +262,14 @@ bool Merge(const amSurfaceMesh& mesh, int background, std::vector<Part>& parts,
   merged.NumberOfFaces = nt;
   return true;
 }
-}
 
-std::vector<std::vector<int>> amTetGenParts::Groups(const amSurfaceMesh& mesh, int background)
+/// The labels in two groups by their figures (see amTetGenParts::Groups).
+std::vector<std::vector<int>> GroupsOf(const std::map<int, LabelFigures>& figures)
 {
   // Expected work: the boundary's triangles, and the volume in tetrahedra of the boundary's mean
   // edge length (interiors grade to larger ones). The largest first into the lighter group.
   std::vector<std::pair<double, int>> work;
-  for (const auto& [label, f] : Figures(mesh, background))
+  for (const auto& [label, f] : figures)
   {
     const double h = f.Triangles > 0 ? f.EdgeLength / f.Triangles : 0;
     work.emplace_back(f.Triangles + (h > 0 ? std::fabs(f.Volume) / (4 * h * h * h) : 0), label);
@@ -287,14 +288,21 @@ std::vector<std::vector<int>> amTetGenParts::Groups(const amSurfaceMesh& mesh, i
     std::sort(g.begin(), g.end());
   return groups;
 }
+}
+
+std::vector<std::vector<int>> amTetGenParts::Groups(const amSurfaceMesh& mesh, int background)
+{
+  return GroupsOf(Figures(mesh, background));
+}
 
 std::string amTetGenParts::Run(const amSurfaceMesh& mesh, const amGradedSizeField& field, const std::string& switches,
   int background, bool preserved, amTetGenRun::Result& result, int* groups)
 {
   if (groups)
     *groups = 1;
-  const std::vector<std::vector<int>> labels =
-    preserved && !mesh.Labels.empty() ? Groups(mesh, background) : std::vector<std::vector<int>>();
+  const std::map<int, LabelFigures> figures =
+    preserved && !mesh.Labels.empty() ? Figures(mesh, background) : std::map<int, LabelFigures>();
+  const std::vector<std::vector<int>> labels = GroupsOf(figures);
   if (labels.size() >= 2)
   {
     std::vector<Part> parts(labels.size());
@@ -302,8 +310,7 @@ std::string amTetGenParts::Run(const amSurfaceMesh& mesh, const amGradedSizeFiel
     for (size_t g = 0; g < labels.size(); ++g)
     {
       MakePart(mesh, labels[g], background, parts[g]);
-      parts[g].Input.Mesh = &parts[g].Mesh;
-      inputs.push_back(parts[g].Input);
+      inputs.push_back({ &parts[g].Mesh, parts[g].Holes });
     }
     std::vector<amTetGenRun::Result> results;
     // A group's run sees only its own triangles: a triangle of one group crossing one of the
@@ -312,7 +319,7 @@ std::string amTetGenParts::Run(const amSurfaceMesh& mesh, const amGradedSizeFiel
     const std::vector<std::string> failures = amTetGenRun::RunEach(inputs, field, switches, results,
       [&]() { crossing = !amSelfIntersection::AllTriangles(mesh, mesh.Points).empty(); });
     const bool ran = std::all_of(failures.begin(), failures.end(), [](const std::string& f) { return f.empty(); });
-    if (ran && !crossing && Merge(mesh, background, parts, results, Figures(mesh, background), result))
+    if (ran && !crossing && Merge(mesh, background, parts, results, figures, result))
     {
       if (groups)
         *groups = static_cast<int>(labels.size());
