@@ -75,6 +75,7 @@ amLabelMapTetrahedralize::amLabelMapTetrahedralize()
   , Exude(1)
   , SliverBound(12.0)
   , ImproveQuality(0)
+  , PreserveVolumes(1)
   , ImprovementPasses(4)
   , MaximumSurfaceDeviation(0.2)
   , NumberOfSlivers(0)
@@ -436,11 +437,23 @@ int amLabelMapTetrahedralize::RequestData(
   std::ostringstream improvement;
   this->NumberOfSlivers = 0;
   this->SurfaceDeviation = 0;
-  if (this->ImproveQuality && this->ImprovementPasses > 0)
+  this->VolumeDisplacement = 0;
+  const bool improve = this->ImproveQuality && this->ImprovementPasses > 0;
+  if (improve || this->PreserveVolumes)
   {
     amTetraMeshOptimizer::Options options;
-    options.Passes = this->ImprovementPasses;
-    options.MaximumSurfaceDeviation = this->MaximumSurfaceDeviation;
+    options.Passes = improve ? this->ImprovementPasses : 0;
+    options.MaximumSurfaceDeviation = improve ? this->MaximumSurfaceDeviation : 0;
+    if (this->PreserveVolumes)
+    {
+      for (const auto& lv : voxelsOf)
+        if (lv.first != bg)
+          options.TargetVolumes[lv.first] = lv.second * spacing[0] * spacing[1] * spacing[2];
+      // The voxels' staircase lies up to half a voxel from any smooth surface through them: the
+      // surface may move that far, or FacetDistance where that is more.
+      options.MaximumVolumeOffset =
+        std::max(this->FacetDistance, 0.5 * std::max({ spacing[0], spacing[1], spacing[2] }));
+    }
     amTetraMeshOptimizer::Report report;
     std::string why;
     if (!amTetraMeshOptimizer::ImproveGrid(
@@ -452,6 +465,7 @@ int amLabelMapTetrahedralize::RequestData(
     improvement << " improvement: " << report.Describe();
     this->NumberOfSlivers = report.Slivers;
     this->SurfaceDeviation = report.SurfaceDeviation;
+    this->VolumeDisplacement = report.VolumeDisplacement;
   }
 
   // Each region's volume against its voxels (as amTetrahedralize reports it).
@@ -477,7 +491,7 @@ int amLabelMapTetrahedralize::RequestData(
          << " CellRadiusEdgeRatio=" << this->CellRadiusEdgeRatio << " ProtectJunctions=" << this->ProtectJunctions
          << " EdgeSize=" << edgeSize << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
          << " Perturb=" << this->Perturb << " Exude=" << this->Exude << " SliverBound=" << this->SliverBound
-         << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
+         << " PreserveVolumes=" << this->PreserveVolumes << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
          << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " tetrahedra=" << this->NumberOfTetrahedra
          << improvement.str();
   for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)
@@ -503,6 +517,7 @@ void amLabelMapTetrahedralize::PrintSelf(ostream& os, vtkIndent indent)
      << indent << "Odt: " << this->Odt << " Lloyd: " << this->Lloyd << " Perturb: " << this->Perturb
      << " Exude: " << this->Exude << "\n"
      << indent << "SliverBound: " << this->SliverBound << "\n"
+     << indent << "PreserveVolumes: " << this->PreserveVolumes << "\n"
      << indent << "ImproveQuality: " << this->ImproveQuality << " ImprovementPasses: " << this->ImprovementPasses
      << " MaximumSurfaceDeviation: " << this->MaximumSurfaceDeviation << "\n";
 }

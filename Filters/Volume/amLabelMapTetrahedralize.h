@@ -133,6 +133,23 @@ public:
   ///@}
 
   ///@{
+  /// Give each region its voxel volume (default on): CGAL's surface passes through the middle of
+  /// the label function's transitions and its facets are chords of it, so thin and convex regions
+  /// come out smaller (the TotalSegmentator abdomen at 4 mm facets: -8 % on average, -37 % for a
+  /// rib). The surface vertices inside one interface move along their normals, by at most
+  /// FacetDistance or half the largest voxel spacing, whichever is more (the voxels' staircase
+  /// lies that far from any smooth surface through them), one offset per interface chosen so
+  /// that every region gets its voxel volume
+  /// (amTetraMeshOptimizer's TargetVolumes), where no element falls below Q 2.5 (or its star's
+  /// worst); the junction curves stay. NumberOfVolumeMisses tells what is left,
+  /// VolumeDisplacement how far a surface vertex moved (mm).
+  vtkSetMacro(PreserveVolumes, vtkTypeBool);
+  vtkGetMacro(PreserveVolumes, vtkTypeBool);
+  vtkBooleanMacro(PreserveVolumes, vtkTypeBool);
+  vtkGetMacro(VolumeDisplacement, double);
+  ///@}
+
+  ///@{
   /// After CGAL, improve the elements as amTetrahedralize does (default off, as CGAL's own
   /// optimisers run): edge removals and 2-3 flips that make the worst element they touch better,
   /// smoothing and local search on the vertices off the surface (amTetraMeshOptimizer). The
@@ -180,6 +197,8 @@ protected:
   vtkTypeBool Perturb;
   vtkTypeBool Exude;
   double SliverBound;
+  vtkTypeBool PreserveVolumes;
+  double VolumeDisplacement = 0;
   vtkTypeBool ImproveQuality;
   int ImprovementPasses;
   double MaximumSurfaceDeviation;

@@ -57,6 +57,9 @@ std::string amTetraMeshOptimizer::Report::Describe() const
   os << "worst Q " << this->WorstBefore << " -> " << this->WorstAfter << ", mean " << this->MeanBefore << " -> "
      << this->MeanAfter << " (" << this->EdgeRemovals << " edge removals, " << this->Flips23 << " 2-3 flips, "
      << this->EdgeSplits << " edge splits, " << this->FaceSplits << " face splits, " << this->Moves << " vertex moves";
+  if (this->VolumeMoves > 0)
+    os << "; " << this->VolumeMoves << " surface vertex moves, at most " << this->VolumeDisplacement
+       << " mm, for the regions' volumes";
   if (this->SurfaceMoves + this->Relabels + this->SurfaceSplits + this->SurfaceCollapses > 0)
     os << "; around slivers " << this->SurfaceMoves << " surface vertex slides, " << this->Relabels
        << " region changes, " << this->SurfaceSplits << " surface edge splits, " << this->SurfaceCollapses
@@ -180,6 +183,15 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
       break;
   }
   };
+  if (!options.TargetVolumes.empty() && options.MaximumVolumeOffset > 0)
+  {
+    // Only what the moves disturb is smoothed between the rounds; the passes then start anew.
+    std::fill(m.Dirty.begin(), m.Dirty.end(), 0);
+    report.VolumeMoves = PreserveVolumes(
+      m, options.TargetVolumes, options.MaximumVolumeOffset, 1.0 / options.SearchQuality, options.VolumeRounds,
+      report.VolumeDisplacement);
+    std::fill(m.Dirty.begin(), m.Dirty.end(), 1);
+  }
   improve(0);
   if (rounds > 0)
   {

@@ -29,6 +29,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,14 @@ public:
     double SliverDihedral = 10;
     double MaximumSurfaceDeviation = 0;
     int SliverRounds = 4;
+    // Region volumes: where TargetVolumes (label -> mm^3) is not empty and MaximumVolumeOffset
+    // (mm) positive, the surface vertices inside one interface first move along their normals,
+    // by at most that distance, until each region has its target (amTetraImproveVolumes.cxx),
+    // where no element falls below Q SearchQuality (or its star's worst) and the boundary does
+    // not run into itself. Junction curves stay.
+    std::map<int, double> TargetVolumes;
+    double MaximumVolumeOffset = 0;
+    int VolumeRounds = 4;
   };
   struct Report
   {
@@ -71,6 +80,8 @@ public:
     long SurfaceSplits = 0;        // surface edges split at their midpoints near slivers
     long SurfaceCollapses = 0;     // surface edges of slivers collapsed along their interface or curve
     long SurfaceMoves = 0;         // slides of surface vertices
+    long VolumeMoves = 0;          // surface vertex moves that gave regions their volume
+    double VolumeDisplacement = 0; // the farthest those moved a vertex (mm)
     double SurfaceDeviation = 0;   // the largest displacement of the surface they caused (mm)
     long Slivers = 0;              // elements still above SliverQuality or below SliverDihedral
     /// One line for provenance: worst and mean Q before -> after, and the operations done.

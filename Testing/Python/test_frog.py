@@ -1,7 +1,7 @@
 """The frog tissue label map of ../shared/data (15 organs) meshed end to end by
 Examples/Pipelines/frog.xml (skipped when the data is absent): every organ is present in the
-tetrahedral mesh, no tetrahedron is inverted, each organ's volume is close to its voxel volume,
-and the Medit file carries the organs' interface triangles.
+tetrahedral mesh, no tetrahedron is inverted, each organ's volume within 2 % of its voxel volume
+(every organ is at least 1 cm3), and the Medit file carries the organs' interface triangles.
 """
 import os
 import subprocess
@@ -49,10 +49,10 @@ class FrogEndToEnd(unittest.TestCase):
             v = volume[region == label].sum()
             print("%5d %10.2f %9.2f" % (label, voxel_volume[label] / 1e3, v / 1e3))
             self.assertGreater(v, 0, "organ %d missing" % label)
-            # Thin organs (nerve, retina) lose or gain most; the bulk ones stay within a few %.
-            self.assertLess(abs(v - voxel_volume[label]), 0.35 * voxel_volume[label], "organ %d" % label)
-        total = volume.sum()
-        self.assertLess(abs(total - sum(voxel_volume.values())), 0.05 * sum(voxel_volume.values()))
+            # LabelMapTetrahedralize's PreserveVolumes gives the thin organs (nerve, retina) back
+            # what CGAL's chords take (up to 19 % without it).
+            self.assertGreaterEqual(voxel_volume[label], 1000.0)
+            self.assertLess(abs(v - voxel_volume[label]), 0.02 * voxel_volume[label], "organ %d" % label)
 
         medit = anatomesh.amMeditReader()
         medit.SetFileName(os.path.join(out, "frog_tets.mesh"))

@@ -2,8 +2,7 @@
 #include "amRemeshScheduler.h"
 #include "amSurfaceMesh.h"
 #include "amThreading.h"
-
-#include <Eigen/SparseCholesky>
+#include "amVolumeOffsets.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,11 +63,11 @@ int Remesher::PreserveVolumes(const std::map<int, double>& target, int rounds)
   {
     const std::map<int, double> now = this->RegionVolumes();
     // The regions to correct: every label with a target, except the outside.
-    std::map<int, int> row;
+    std::map<int, double> error;
     for (const auto& kv : now)
       if (kv.first != 0 && target.count(kv.first) && target.at(kv.first) > 0)
-        row.emplace(kv.first, static_cast<int>(row.size()));
-    if (row.empty())
+        error[kv.first] = target.at(kv.first) - kv.second;
+    if (error.empty())
       break;
     // Per interface vertex: the normal out of the interface's smaller label, and its volume
     // sensitivity (a third of the star's area vectors along it); per interface: the sums.
@@ -103,54 +102,16 @@ int Remesher::PreserveVolumes(const std::map<int, double>& target, int rounds)
       sides[first.Sheet] = { lo, std::max(first.Labels[0], first.Labels[1]) };
       movable.push_back(static_cast<int>(v));
     }
-    // (B W^-1 B^T) y = e, offsets W^-1 B^T y: B[region][sheet] = +-sensitivity, W = area.
-    const int n = static_cast<int>(row.size());
-    Eigen::VectorXd error(n);
-    for (const auto& kv : row)
-      error[kv.second] = target.at(kv.first) - now.at(kv.first);
-    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<amVolumeOffsets::Sheet> system(static_cast<size_t>(sheets));
     for (int k = 0; k < sheets; ++k)
-    {
-      if (sides[k][0] < 0 || !(area[k] > 0) || !(sensitivity[k] > 0))
-        continue;
-      const double w = sensitivity[k] * sensitivity[k] / area[k];
-      const int r0 = row.count(sides[k][0]) ? row[sides[k][0]] : -1, r1 = row.count(sides[k][1]) ? row[sides[k][1]] : -1;
-      if (r0 >= 0)
-        entries.emplace_back(r0, r0, w);
-      if (r1 >= 0)
-        entries.emplace_back(r1, r1, w);
-      if (r0 >= 0 && r1 >= 0)
-      {
-        entries.emplace_back(r0, r1, -w);
-        entries.emplace_back(r1, r0, -w);
-      }
-    }
-    double largest = 0;
-    for (const auto& e : entries)
-      largest = std::max(largest, std::fabs(e.value()));
-    if (!(largest > 0))
+      if (sides[k][0] >= 0)
+        system[k] = { sides[k][0], sides[k][1], sensitivity[k], area[k] };
+    const std::vector<double> offset = amVolumeOffsets::Solve(system, error, this->In.Eps);
+    if (offset.empty())
       break;
-    // A region with no vertex free to move (or enclosed by regions that cannot give way) makes
-    // the system singular: the small diagonal term leaves its offset at zero.
-    for (int r = 0; r < n; ++r)
-      entries.emplace_back(r, r, 1e-9 * largest);
-    Eigen::SparseMatrix<double> A(n, n);
-    A.setFromTriplets(entries.begin(), entries.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-    if (solver.info() != Eigen::Success)
-      break;
-    const Eigen::VectorXd y = solver.solve(error);
-    std::vector<double> offset(static_cast<size_t>(sheets), 0.0);
     bool any = false;
-    for (int k = 0; k < sheets; ++k)
-    {
-      if (sides[k][0] < 0 || !(area[k] > 0) || !(sensitivity[k] > 0))
-        continue;
-      const double y0 = row.count(sides[k][0]) ? y[row[sides[k][0]]] : 0.0,
-                   y1 = row.count(sides[k][1]) ? y[row[sides[k][1]]] : 0.0;
-      offset[k] = std::max(-this->In.Eps, std::min(this->In.Eps, sensitivity[k] / area[k] * (y0 - y1)));
-      any = any || std::fabs(offset[k]) > 1e-4 * this->In.Eps;
-    }
+    for (double o : offset)
+      any = any || std::fabs(o) > 1e-4 * this->In.Eps;
     if (!any)
       break;
     // Each vertex moved by its interface's offset, where the guards allow it, on the two workers:

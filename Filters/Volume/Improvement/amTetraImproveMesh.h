@@ -13,6 +13,9 @@
  * (a surface edge split at its midpoint), amTetraImproveCollapse.cxx (a short surface edge
  * collapsed, along its interface or junction curve), amTetraImproveDeviation.cxx (what the
  * surface moved).
+ *
+ * Before the improvement, where the options give target volumes: amTetraImproveVolumes.cxx (the
+ * surface moved along its normals until each region has its volume).
  */
 #ifndef amTetraImproveMesh_h
 #define amTetraImproveMesh_h
@@ -25,6 +28,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <map>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -257,6 +261,14 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
 /// moves by at most maxDeviation (sampled, two-sided, over the fixed faces around them). Returns
 /// that displacement, or -1 (the mesh as it was).
 double CollapseSurfaceEdge(Mesh& m, int v, int u, double maxDeviation, std::unordered_map<int, long>& regionCount);
+/// Gives the regions with a target their volume (label -> mm^3): rounds of moves of the surface
+/// vertices that lie inside one interface, along their normals by one offset per interface
+/// (amVolumeOffsets, at most 'limit' mm), each kept where no element of its star inverts or falls
+/// below the objective 'floor' (or its star's worst, if lower) and no part of the mesh's boundary
+/// is brought into another; the free vertices around are smoothed between rounds. Junction
+/// curves stay. Returns the moves; 'displacement' is the farthest a vertex went.
+long PreserveVolumes(
+  Mesh& m, const std::map<int, double>& target, double limit, double floor, int rounds, double& displacement);
 /// Splits the surface edge (u, v) at its midpoint, every element and fixed face on it in two
 /// (the surface keeps its shape); returns the new vertex, or -1.
 int SplitSurfaceEdge(Mesh& m, int u, int v);
