@@ -44,6 +44,8 @@ std::vector<SidedFace> FacesWithSides(const Mesh& m)
     for (int i = 0; i < 4; ++i)
     {
       const int a = x[(i + 1) % 4], b = x[(i + 2) % 4], c = x[(i + 3) % 4];
+      if (!m.FixedVertex[a] || !m.FixedVertex[b] || !m.FixedVertex[c])
+        continue; // (a fixed face has its three vertices fixed: most faces are passed without a lookup)
       const Tri key = Sorted(a, b, c);
       if (!m.FixedFaces.count(key))
         continue;
