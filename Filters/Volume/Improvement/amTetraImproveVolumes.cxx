@@ -4,6 +4,7 @@
 #include "amSurfaceMesh.h"
 #include "amVolumeOffsets.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <map>
@@ -218,6 +219,10 @@ long PreserveVolumes(
       for (size_t v = 0; v < m.Inc.size(); ++v)
         if (moved[v] && attempt == 2)
           back.push_back(static_cast<int>(v));
+      // In vertex order, whatever order the crossings came in (a move back depends on the
+      // vertices moved back before it).
+      std::sort(back.begin(), back.end());
+      back.erase(std::unique(back.begin(), back.end()), back.end());
       for (int v : back)
       {
         if (!moved[v])
