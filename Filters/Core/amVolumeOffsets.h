@@ -26,9 +26,9 @@ class ANATOMESHFILTERSCORE_EXPORT amVolumeOffsets
 public:
   struct Sheet
   {
-    int Lo = -1, Hi = -1;      // the labels on either side (the normal points out of Lo)
-    double Sensitivity = 0;    // d(volume of Lo) / d(offset), mm^2
-    double Area = 0;           // the weight of the sheet's offset, mm^2
+    int Lo = -1, Hi = -1;   // the labels on either side (the normal points out of Lo)
+    double Sensitivity = 0; // d(volume of Lo) / d(offset), mm^2
+    double Area = 0;        // the weight of the sheet's offset, mm^2
     bool Valid() const { return this->Lo != this->Hi && this->Area > 0 && this->Sensitivity > 0; }
   };
 

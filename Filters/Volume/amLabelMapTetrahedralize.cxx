@@ -491,7 +491,8 @@ int amLabelMapTetrahedralize::RequestData(
          << " CellRadiusEdgeRatio=" << this->CellRadiusEdgeRatio << " ProtectJunctions=" << this->ProtectJunctions
          << " EdgeSize=" << edgeSize << " curves=" << curves << " Odt=" << this->Odt << " Lloyd=" << this->Lloyd
          << " Perturb=" << this->Perturb << " Exude=" << this->Exude << " SliverBound=" << this->SliverBound
-         << " PreserveVolumes=" << this->PreserveVolumes << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
+         << " PreserveVolumes=" << this->PreserveVolumes << " ImproveQuality=" << this->ImproveQuality
+         << " ImprovementPasses=" << this->ImprovementPasses
          << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " tetrahedra=" << this->NumberOfTetrahedra
          << improvement.str();
   for (std::size_t k = 0; k + 1 < this->RegionCellSizes.size(); k += 2)

@@ -474,7 +474,8 @@ TEST(LabelMapTetrahedralize, EveryLabelOfARealMapAndNoSliver)
     EXPECT_EQ(m->GetNumberOfVolumeMisses(), 0) << map.Path;
     double spacing[3];
     reader->GetOutput()->GetSpacing(spacing);
-    EXPECT_LE(m->GetVolumeDisplacement(), std::max(map.Distance, 0.5 * std::max({ spacing[0], spacing[1], spacing[2] })) + 1e-9)
+    EXPECT_LE(
+      m->GetVolumeDisplacement(), std::max(map.Distance, 0.5 * std::max({ spacing[0], spacing[1], spacing[2] })) + 1e-9)
       << map.Path;
   }
 }
