@@ -153,6 +153,13 @@ int amMeshQuality::RequestData(vtkInformation*, vtkInformationVector** inputVect
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
       std::copy(ids, ids + 4, tets[c].begin());
+      for (int k = 0; k < 4; ++k)
+        if (ids[k] < 0 || ids[k] >= input->GetNumberOfPoints())
+        {
+          vtkErrorMacro("Tetrahedron " << c << " refers to point " << ids[k] << ", but the mesh has "
+                                       << input->GetNumberOfPoints() << " points.");
+          return 0;
+        }
     }
   }
   std::vector<int> region(static_cast<size_t>(ne), 0);
@@ -202,19 +209,39 @@ int amMeshQuality::RequestData(vtkInformation*, vtkInformationVector** inputVect
     }
     bool SameFace(const Face& o) const { return this->V[0] == o.V[0] && this->V[1] == o.V[1] && this->V[2] == o.V[2]; }
   };
-  std::vector<Face> faces(static_cast<size_t>(4 * ne));
+  // In that order without a sort of all of them: grouped by their smallest vertex (a counting
+  // sort), then each group, a few dozen faces, sorted on the threads.
+  const vtkIdType npoints = input->GetNumberOfPoints();
+  std::vector<vtkIdType> start(static_cast<size_t>(npoints) + 1, 0);
+  auto faceOf = [&](vtkIdType c, int i) {
+    Face f;
+    int k = 0;
+    for (int j = 0; j < 4; ++j)
+      if (j != i)
+        f.V[k++] = tets[c][j];
+    std::sort(f.V, f.V + 3);
+    f.Region = region[c];
+    return f;
+  };
   for (vtkIdType c = 0; c < ne; ++c)
     for (int i = 0; i < 4; ++i)
-    {
-      Face& f = faces[4 * c + i];
-      int k = 0;
-      for (int j = 0; j < 4; ++j)
-        if (j != i)
-          f.V[k++] = tets[c][j];
-      std::sort(f.V, f.V + 3);
-      f.Region = region[c];
-    }
-  std::sort(faces.begin(), faces.end());
+      ++start[faceOf(c, i).V[0] + 1];
+  for (vtkIdType v = 0; v < npoints; ++v)
+    start[v + 1] += start[v];
+  std::vector<Face> faces(static_cast<size_t>(4 * ne));
+  {
+    std::vector<vtkIdType> next(start.begin(), start.end() - 1);
+    for (vtkIdType c = 0; c < ne; ++c)
+      for (int i = 0; i < 4; ++i)
+      {
+        const Face f = faceOf(c, i);
+        faces[next[f.V[0]]++] = f;
+      }
+  }
+  vtkSMPTools::For(0, npoints, [&](vtkIdType v0, vtkIdType v1) {
+    for (vtkIdType v = v0; v < v1; ++v)
+      std::sort(faces.begin() + start[v], faces.begin() + start[v + 1]);
+  });
 
   struct Row
   {
@@ -256,19 +283,31 @@ int amMeshQuality::RequestData(vtkInformation*, vtkInformationVector** inputVect
     i = j;
   }
   {
-    std::map<int, std::vector<vtkIdType>> used;
+    // Each vertex's regions, grouped by vertex (a counting sort): a vertex counts once in each
+    // region it has a tetrahedron of.
+    std::vector<vtkIdType> first(static_cast<size_t>(npoints) + 1, 0);
     for (vtkIdType c = 0; c < ne; ++c)
       for (vtkIdType v : tets[c])
-        used[region[c]].push_back(v);
-    std::vector<char> any(static_cast<size_t>(input->GetNumberOfPoints()), 0);
-    for (auto& kv : used)
+        ++first[v + 1];
+    for (vtkIdType v = 0; v < npoints; ++v)
+      first[v + 1] += first[v];
+    std::vector<int> regionsOf(static_cast<size_t>(4 * ne));
+    std::vector<vtkIdType> next(first.begin(), first.end() - 1);
+    for (vtkIdType c = 0; c < ne; ++c)
+      for (vtkIdType v : tets[c])
+        regionsOf[next[v]++] = region[c];
+    std::vector<int> distinct;
+    for (vtkIdType v = 0; v < npoints; ++v)
     {
-      std::sort(kv.second.begin(), kv.second.end());
-      rows[kv.first].np = std::unique(kv.second.begin(), kv.second.end()) - kv.second.begin();
-      for (vtkIdType v : kv.second)
-        any[v] = 1;
+      if (first[v] == first[v + 1])
+        continue;
+      distinct.assign(regionsOf.begin() + first[v], regionsOf.begin() + first[v + 1]);
+      std::sort(distinct.begin(), distinct.end());
+      distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+      for (int r : distinct)
+        ++rows[r].np;
+      ++all.np;
     }
-    all.np = std::count(any.begin(), any.end(), 1);
   }
 
   const char* names[] = { "Region", "np", "nt", "ne", "MeanQuality", "MinimumQuality", "MaximumQuality",

@@ -159,3 +159,18 @@ TEST(MeshQuality, RefusesAMeshWithoutTetrahedra)
   q->Update();
   EXPECT_TRUE(errors->ErrorContains("has no tetrahedron")) << errors->AllErrors();
 }
+
+// A tetrahedron that names a point the mesh does not have is an error naming both, not a read
+// (or a count) past the points' end.
+TEST(MeshQuality, RefusesAPointIdOutOfRange)
+{
+  auto g = Grid({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, { { 0, 1, 2, 3 }, { 0, 1, 2, 7 } }, { 1, 1 });
+  vtkNew<amMeshQuality> q;
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(q);
+  errors->Watch(q->GetExecutive());
+  q->SetInputData(g);
+  q->Update();
+  EXPECT_TRUE(errors->ErrorContains("Tetrahedron 1 refers to point 7, but the mesh has 4 points"))
+    << errors->AllErrors();
+}
