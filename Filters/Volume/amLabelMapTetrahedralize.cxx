@@ -438,6 +438,10 @@ int amLabelMapTetrahedralize::RequestData(
   this->NumberOfSlivers = 0;
   this->SurfaceDeviation = 0;
   this->VolumeDisplacement = 0;
+  std::map<int, double> voxelVolumes; // label -> mm^3: the correction's targets and the report's reference
+  for (const auto& lv : voxelsOf)
+    if (lv.first != bg)
+      voxelVolumes[lv.first] = lv.second * spacing[0] * spacing[1] * spacing[2];
   const bool improve = this->ImproveQuality && this->ImprovementPasses > 0;
   if (improve || this->PreserveVolumes)
   {
@@ -446,9 +450,7 @@ int amLabelMapTetrahedralize::RequestData(
     options.MaximumSurfaceDeviation = improve ? this->MaximumSurfaceDeviation : 0;
     if (this->PreserveVolumes)
     {
-      for (const auto& lv : voxelsOf)
-        if (lv.first != bg)
-          options.TargetVolumes[lv.first] = lv.second * spacing[0] * spacing[1] * spacing[2];
+      options.TargetVolumes = voxelVolumes;
       // The voxels' staircase lies up to half a voxel from any smooth surface through them: the
       // surface may move that far, or FacetDistance where that is more.
       options.MaximumVolumeOffset =
@@ -472,12 +474,11 @@ int amLabelMapTetrahedralize::RequestData(
   {
     vtkNew<vtkDoubleArray> voxels;
     voxels->SetNumberOfComponents(2);
-    for (const auto& lv : voxelsOf)
-      if (lv.first != bg)
-      {
-        const double row[2] = { static_cast<double>(lv.first), lv.second * spacing[0] * spacing[1] * spacing[2] };
-        voxels->InsertNextTuple(row);
-      }
+    for (const auto& lv : voxelVolumes)
+    {
+      const double row[2] = { static_cast<double>(lv.first), lv.second };
+      voxels->InsertNextTuple(row);
+    }
     const auto misses = amRegionVolumes::Compare(output, "Region", voxels, 1000.0, 0.02);
     this->NumberOfVolumeMisses = static_cast<vtkIdType>(misses.size());
     if (!misses.empty())

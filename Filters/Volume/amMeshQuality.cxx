@@ -225,7 +225,7 @@ int amMeshQuality::RequestData(vtkInformation*, vtkInformationVector** inputVect
   };
   for (vtkIdType c = 0; c < ne; ++c)
     for (int i = 0; i < 4; ++i)
-      ++start[faceOf(c, i).V[0] + 1];
+      ++start[std::min({ tets[c][(i + 1) % 4], tets[c][(i + 2) % 4], tets[c][(i + 3) % 4] }) + 1];
   for (vtkIdType v = 0; v < npoints; ++v)
     start[v + 1] += start[v];
   std::vector<Face> faces(static_cast<size_t>(4 * ne));

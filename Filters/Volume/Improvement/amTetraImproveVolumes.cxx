@@ -209,29 +209,22 @@ long PreserveVolumes(
       const std::vector<vtkIdType> crossing = BoundaryCrossings(m, boundary, moved);
       if (crossing.empty())
         break;
-      std::vector<int> back;
+      // The moved vertices of the crossing faces (the third time, every moved vertex), in vertex
+      // order whatever order the crossings came in: a move back depends on those before it.
+      const bool all = attempt == 2;
+      std::vector<char> back(m.Inc.size(), 0);
       for (vtkIdType f : crossing)
         for (int v : boundary[f])
-          if (moved[v])
-            back.push_back(v);
-      if (attempt == 2)
-        back.clear(); // all of them
-      for (size_t v = 0; v < m.Inc.size(); ++v)
-        if (moved[v] && attempt == 2)
-          back.push_back(static_cast<int>(v));
-      // In vertex order, whatever order the crossings came in (a move back depends on the
-      // vertices moved back before it).
-      std::sort(back.begin(), back.end());
-      back.erase(std::unique(back.begin(), back.end()), back.end());
-      for (int v : back)
+          back[v] = 1;
+      for (size_t v = 0; v < back.size(); ++v)
       {
-        if (!moved[v])
+        if (!moved[v] || !(all || back[v]))
           continue;
         double worst, sum;
-        StarQuality(m, v, &before[3 * static_cast<size_t>(v)], worst, sum);
-        if (attempt == 2 || (worst > 0 && std::isfinite(sum)))
+        StarQuality(m, static_cast<int>(v), &before[3 * v], worst, sum);
+        if (all || (worst > 0 && std::isfinite(sum)))
         {
-          MoveVertex(m, v, &before[3 * static_cast<size_t>(v)]);
+          MoveVertex(m, static_cast<int>(v), &before[3 * v]);
           moved[v] = 0;
           --done;
         }
@@ -248,9 +241,8 @@ long PreserveVolumes(
   displacement = 0;
   for (size_t v = 0; v < ever.size(); ++v)
     if (ever[v])
-      displacement = std::max(displacement,
-        std::sqrt(amTetraGeometry::Dot(amTetraGeometry::Sub(m.X(static_cast<int>(v)), &start[3 * v]),
-          amTetraGeometry::Sub(m.X(static_cast<int>(v)), &start[3 * v]))));
+      displacement =
+        std::max(displacement, amTetraGeometry::Norm(amTetraGeometry::Sub(m.X(static_cast<int>(v)), &start[3 * v])));
   return moves;
 }
 }
