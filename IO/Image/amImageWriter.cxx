@@ -1,6 +1,7 @@
 #include "amImageWriter.h"
 
 #include "amAtomicFile.h"
+#include "amDeflate.h"
 #include "amLabelTable.h"
 #include "amITKBridge.h"
 #include "amNiftiCheck.h"
@@ -17,12 +18,14 @@
 #include <itkNrrdImageIO.h>
 
 #include <cstdio>
+#include <memory>
 
 vtkStandardNewMacro(amImageWriter);
 
 amImageWriter::amImageWriter()
   : FileName(nullptr)
   , UseCompression(true)
+  , CompressionLevel(1)
 {
   this->SetNumberOfOutputPorts(0);
 }
@@ -84,6 +87,11 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     return 0;
   }
 
+  // A .nii.gz: ITK writes the plain .nii beside it (ITK's NIfTI writer compresses only at zlib's
+  // default level), compressed here at CompressionLevel.
+  std::unique_ptr<amAtomicFile> plain;
+  if (ext == ".nii.gz")
+    plain.reset(new amAtomicFile(target.substr(0, target.size() - 3)));
   std::string error;
   bool ok = false;
   auto write = [&](auto* tag) {
@@ -91,9 +99,9 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     auto image = amITK::FromVTK<T>(input);
     auto writer = itk::ImageFileWriter<amITK::Image3<T>>::New();
     writer->SetImageIO(io);
-    writer->SetFileName(file.TemporaryPath());
+    writer->SetFileName(plain ? plain->TemporaryPath() : file.TemporaryPath());
     writer->SetInput(image);
-    writer->SetUseCompression(this->UseCompression || ext == ".nii.gz");
+    writer->SetUseCompression(this->UseCompression && !plain);
     try
     {
       writer->Update();
@@ -141,6 +149,9 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
       dataName = header.substr(begin, header.find_first_of("\r\n", begin) - begin);
     }
   }
+  if (ok && plain && !amDeflate::GzipFile(plain->TemporaryPath(), file.TemporaryPath(), this->CompressionLevel, error))
+    ok = false;
+  plain.reset(); // the plain temporary removed
   if (ok && (ext == ".nii" || ext == ".nii.gz"))
   {
     // ITK does not always report a short write (a full disk, a file size limit): the file must read
@@ -201,4 +212,5 @@ void amImageWriter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "UseCompression: " << this->UseCompression << "\n";
+  os << indent << "CompressionLevel: " << this->CompressionLevel << "\n";
 }

@@ -11,7 +11,9 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -161,4 +163,63 @@ TEST(ImageWriter, LabelNamesGoToATableBeside)
   ASSERT_EQ(writer->Write(), 1);
   EXPECT_FALSE(amTest::Exists(amTest::TempPath("ct_without_names.ctbl")));
   EXPECT_FALSE(amTest::Exists(amTest::TempPath("ct_without_names.itksnap.txt")));
+}
+
+TEST(ImageWriter, CompressionLevelKeepsTheVoxels)
+{
+  // A noisy CT at levels 1 and 9: the same voxels back, a smaller file at 9, a gzip stream either
+  // way (nibabel and ITK read .nii.gz by its gzip magic), and no temporary left beside it.
+  vtkNew<amThoraxPhantomSource> src;
+  src->SetSpacing(4, 4, 4);
+  src->SetNoiseStandardDeviation(20);
+  src->Update();
+  vtkImageData* ct = vtkImageData::SafeDownCast(src->GetOutputDataObject(0));
+  const std::filesystem::path folder = amTest::TempPath("compression_levels");
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  long long sizes[2] = { 0, 0 };
+  const int levels[2] = { 1, 9 };
+  for (int k = 0; k < 2; ++k)
+  {
+    const std::string path = (folder / ("ct_level" + std::to_string(levels[k]) + ".nii.gz")).string();
+    vtkNew<amImageWriter> writer;
+    EXPECT_EQ(writer->GetCompressionLevel(), 1);
+    writer->SetInputData(ct);
+    writer->SetFileName(path.c_str());
+    writer->SetCompressionLevel(levels[k]);
+    ASSERT_EQ(writer->Write(), 1);
+    FILE* f = std::fopen(path.c_str(), "rb");
+    ASSERT_NE(f, nullptr);
+    unsigned char magic[2] = { 0, 0 };
+    EXPECT_EQ(std::fread(magic, 1, 2, f), 2u);
+    std::fseek(f, 0, SEEK_END);
+    sizes[k] = std::ftell(f);
+    std::fclose(f);
+    EXPECT_EQ(magic[0], 0x1f);
+    EXPECT_EQ(magic[1], 0x8b);
+
+    vtkNew<amImageReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkDataArray* a = ct->GetPointData()->GetScalars();
+    vtkDataArray* b = reader->GetOutput()->GetPointData()->GetScalars();
+    ASSERT_NE(b, nullptr);
+    ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+      differ += a->GetComponent(i, 0) != b->GetComponent(i, 0);
+    EXPECT_EQ(differ, 0) << "level " << levels[k];
+  }
+  EXPECT_LT(sizes[1], sizes[0]);
+  // The two files and nothing else: the plain .nii written on the way is gone.
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    left.push_back(entry.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, std::vector<std::string>({ "ct_level1.nii.gz", "ct_level9.nii.gz" }));
+  vtkNew<amImageWriter> writer;
+  writer->SetCompressionLevel(0);
+  EXPECT_EQ(writer->GetCompressionLevel(), 1);
+  writer->SetCompressionLevel(12);
+  EXPECT_EQ(writer->GetCompressionLevel(), 9);
 }
