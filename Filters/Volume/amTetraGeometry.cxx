@@ -2,11 +2,6 @@
 
 #include <limits>
 
-double amTetraGeometry::SignedVolume(const double* p0, const double* p1, const double* p2, const double* p3)
-{
-  return Dot(Sub(p1, p0), Cross(Sub(p2, p0), Sub(p3, p0))) / 6.0;
-}
-
 double amTetraGeometry::Circumradius(const double* p0, const double* p1, const double* p2, const double* p3)
 {
   const Vec a = Sub(p1, p0), b = Sub(p2, p0), c = Sub(p3, p0);

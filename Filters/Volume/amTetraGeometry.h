@@ -21,8 +21,11 @@ public:
   static double Norm(const Vec& a) { return std::sqrt(Dot(a, a)); }
 
   /// Signed volume of tetrahedron (p0, p1, p2, p3): positive when p3 lies on the side of
-  /// (p1 - p0) x (p2 - p0).
-  static double SignedVolume(const double* p0, const double* p1, const double* p2, const double* p3);
+  /// (p1 - p0) x (p2 - p0). Inline: the quality objective and the smoothing call it most.
+  static double SignedVolume(const double* p0, const double* p1, const double* p2, const double* p3)
+  {
+    return Dot(Sub(p1, p0), Cross(Sub(p2, p0), Sub(p3, p0))) / 6.0;
+  }
   /// Circumradius of the tetrahedron; +inf when it is flat.
   static double Circumradius(const double* p0, const double* p1, const double* p2, const double* p3);
 };

@@ -203,16 +203,19 @@ void CurrentStar(const Mesh& m, int v, double& worst, double& sum);
 /// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
 /// (inf when a tetrahedron inverts); it stops early, with a worst under 'floor' or a sum at
 /// least 'ceiling', once the star is surely worse than either.
+/// With 'each', the objective of every element evaluated, in the order of m.Inc[v].
 void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ,
-  double floor = -std::numeric_limits<double>::infinity(), double ceiling = std::numeric_limits<double>::infinity());
-/// Moves v to x and updates its star's objectives.
-void MoveVertex(Mesh& m, int v, const double* x);
+  double floor = -std::numeric_limits<double>::infinity(), double ceiling = std::numeric_limits<double>::infinity(),
+  double* each = nullptr);
+/// Moves v to x and updates its star's objectives ('q': those of m.Inc[v] there, computed already).
+void MoveVertex(Mesh& m, int v, const double* x, const double* q = nullptr);
 /// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's
 /// worst element at least as good and lowers its mean Q.
 bool Smooth(Mesh& m, int v);
 /// Smooth's choice without the move: the position (in 'to') and whether there is one. It reads
-/// only v's star (the positions of its vertices and the objectives of its elements).
-bool SmoothTarget(const Mesh& m, int v, double* to);
+/// only v's star (the positions of its vertices and the objectives of its elements). With 'q'
+/// (room for m.Inc[v].size() values), the star's objectives at that position.
+bool SmoothTarget(const Mesh& m, int v, double* to, double* q = nullptr);
 /// Smooth over the vertices 0 .. n-1 in order, for each free one whose Dirty flag is set when its
 /// turn comes (the flag cleared), exactly as that serial loop would: blocks of vertices have their
 /// choices made on the threads at once, then taken in order, and a vertex whose star a move

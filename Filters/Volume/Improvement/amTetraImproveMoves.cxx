@@ -21,7 +21,8 @@ void CurrentStar(const Mesh& m, int v, double& worst, double& sum)
 /// (inf when a tetrahedron inverts). The evaluation stops at the first tetrahedron worse than
 /// 'floor' or once the sum reaches 'ceiling' (every term is positive, so it only grows): then the
 /// candidate is refused whatever the rest of the star, and most candidates are.
-void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ, double floor, double ceiling)
+void StarQuality(
+  const Mesh& m, int v, const double* x, double& worst, double& sumQ, double floor, double ceiling, double* each)
 {
   worst = std::numeric_limits<double>::infinity();
   sumQ = 0;
@@ -31,6 +32,8 @@ void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& s
     for (int k = 0; k < 4; ++k)
       p[k] = m.T[t][k] == v ? x : m.X(m.T[t][k]);
     const double q = amTetraMeshOptimizer::Objective(p[0], p[1], p[2], p[3]);
+    if (each)
+      *each++ = q;
     worst = std::min(worst, q);
     if (q <= 0)
     {
@@ -43,19 +46,20 @@ void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& s
   }
 }
 
-void MoveVertex(Mesh& m, int v, const double* x)
+void MoveVertex(Mesh& m, int v, const double* x, const double* q)
 {
   std::copy(x, x + 3, &m.P[3 * static_cast<size_t>(v)]);
   for (int t : m.Inc[v])
   {
-    m.Q[t] = m.Quality(m.T[t][0], m.T[t][1], m.T[t][2], m.T[t][3]);
+    // The same Objective on the same corners in the same order: the same value as computed anew.
+    m.Q[t] = q ? *q++ : m.Quality(m.T[t][0], m.T[t][1], m.T[t][2], m.T[t][3]);
     m.Tried[t] = 0;
     for (int w : m.T[t])
       m.Dirty[w] = 1;
   }
 }
 
-bool SmoothTarget(const Mesh& m, int v, double* bestPos)
+bool SmoothTarget(const Mesh& m, int v, double* bestPos, double* bestQ)
 {
   const auto& inc = m.Inc[v];
   if (inc.empty())
@@ -90,6 +94,11 @@ bool SmoothTarget(const Mesh& m, int v, double* bestPos)
   }
   double bestSum = sum0 * (1 - 1e-9);
   bool found = false;
+  // A candidate taken was evaluated whole (an early stop refuses it): its objectives are the
+  // star's at its position.
+  thread_local std::vector<double> each;
+  if (bestQ)
+    each.resize(inc.size());
   for (const auto& target : targets)
     for (double f : { 1.0, 0.5, 0.25 })
     {
@@ -97,11 +106,13 @@ bool SmoothTarget(const Mesh& m, int v, double* bestPos)
       for (int d = 0; d < 3; ++d)
         y[d] = x[d] + f * (target[d] - x[d]);
       double worst, sum;
-      StarQuality(m, v, y, worst, sum, worst0, bestSum);
+      StarQuality(m, v, y, worst, sum, worst0, bestSum, bestQ ? each.data() : nullptr);
       if (worst >= worst0 && sum < bestSum)
       {
         bestSum = sum;
         std::copy(y, y + 3, bestPos);
+        if (bestQ)
+          std::copy(each.begin(), each.end(), bestQ);
         found = true;
       }
     }

@@ -12,6 +12,8 @@ long SmoothAll(Mesh& m, size_t n)
   const size_t block = 4096;
   std::vector<char> found(block), evaluated(block);
   std::vector<double> to(3 * block);
+  // Each choice's star objectives, taken with it (not computed again in the serial part).
+  std::vector<std::vector<double>> q(block);
   std::vector<size_t> movedIn(n, 0); // the block (counted from 1) of a vertex's last move
   long moves = 0;
   size_t id = 0;
@@ -25,7 +27,10 @@ long SmoothAll(Mesh& m, size_t n)
         const size_t k = static_cast<size_t>(v) - b0;
         evaluated[k] = !m.FixedVertex[v] && m.Dirty[v];
         if (evaluated[k])
-          found[k] = SmoothTarget(m, static_cast<int>(v), &to[3 * k]);
+        {
+          q[k].resize(m.Inc[v].size());
+          found[k] = SmoothTarget(m, static_cast<int>(v), &to[3 * k], q[k].data());
+        }
       }
     });
     for (size_t v = b0; v < b1; ++v)
@@ -42,7 +47,7 @@ long SmoothAll(Mesh& m, size_t n)
       if (stale)
         moved = Smooth(m, static_cast<int>(v));
       else if ((moved = found[k]))
-        MoveVertex(m, static_cast<int>(v), &to[3 * k]);
+        MoveVertex(m, static_cast<int>(v), &to[3 * k], q[k].data());
       if (moved)
       {
         movedIn[v] = id;
