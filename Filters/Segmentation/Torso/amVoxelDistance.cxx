@@ -2,6 +2,8 @@
 // of Sampled Functions, 2012): the squared distance is a lower envelope of parabolas per axis.
 #include "amVoxelGrid.h"
 
+#include "vtkSMPTools.h"
+
 #include <cmath>
 #include <limits>
 
@@ -51,29 +53,35 @@ void Envelope(
 std::vector<float> amVoxel::Distance(const amVoxelGrid& g, const amVoxelMask& mask)
 {
   const double inf = std::numeric_limits<double>::infinity();
+  const vtkIdType count = static_cast<vtkIdType>(mask.size());
   std::vector<double> sq(mask.size());
-  for (std::size_t v = 0; v < mask.size(); ++v)
-    sq[v] = mask[v] ? 0.0 : inf;
+  vtkSMPTools::For(0, count, [&](vtkIdType i0, vtkIdType i1) {
+    for (vtkIdType i = i0; i < i1; ++i)
+      sq[i] = mask[i] ? 0.0 : inf;
+  });
   const std::size_t stride[3] = { 1, static_cast<std::size_t>(g.N[0]), static_cast<std::size_t>(g.N[0]) * g.N[1] };
-  std::vector<double> f, d, z;
-  std::vector<int> v;
   for (int a = 0; a < 3; ++a)
   {
+    // The lines along axis a are independent: on the threads, each with its own buffers.
     const int n = g.N[a], b = (a + 1) % 3, c = (a + 2) % 3;
-    f.resize(n);
-    for (int q = 0; q < g.N[c]; ++q)
-      for (int p = 0; p < g.N[b]; ++p)
+    vtkSMPTools::For(0, static_cast<vtkIdType>(g.N[b]) * g.N[c], [&](vtkIdType l0, vtkIdType l1) {
+      std::vector<double> f(n), d, z;
+      std::vector<int> v;
+      for (vtkIdType line = l0; line < l1; ++line)
       {
-        const std::size_t start = p * stride[b] + q * stride[c];
+        const std::size_t start = (line % g.N[b]) * stride[b] + (line / g.N[b]) * stride[c];
         for (int t = 0; t < n; ++t)
           f[t] = sq[start + t * stride[a]];
         Envelope(f, d, g.Spacing[a], v, z);
         for (int t = 0; t < n; ++t)
           sq[start + t * stride[a]] = d[t];
       }
+    });
   }
   std::vector<float> out(mask.size());
-  for (std::size_t i = 0; i < mask.size(); ++i)
-    out[i] = sq[i] == inf ? std::numeric_limits<float>::max() : static_cast<float>(std::sqrt(sq[i]));
+  vtkSMPTools::For(0, count, [&](vtkIdType i0, vtkIdType i1) {
+    for (vtkIdType i = i0; i < i1; ++i)
+      out[i] = sq[i] == inf ? std::numeric_limits<float>::max() : static_cast<float>(std::sqrt(sq[i]));
+  });
   return out;
 }

@@ -1,31 +1,39 @@
 // Erosion by the 3x3x3 cube and opening by the 6-neighbour cross.
 #include "amVoxelGrid.h"
 
+#include "vtkSMPTools.h"
+
 amVoxelMask amVoxel::Erode26(const amVoxelGrid& g, const amVoxelMask& mask)
 {
+  // Each voxel reads the mask only: on the threads.
   amVoxelMask out(mask.size(), 0);
-  for (std::size_t v = 0; v < mask.size(); ++v)
-  {
-    if (!mask[v])
-      continue;
-    bool all = true;
-    g.AllNeighbours(v, [&](std::size_t w) { all = all && mask[w]; });
-    out[v] = all;
-  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(mask.size()), [&](vtkIdType v0, vtkIdType v1) {
+    for (vtkIdType v = v0; v < v1; ++v)
+    {
+      if (!mask[v])
+        continue;
+      bool all = true;
+      g.AllNeighbours(static_cast<std::size_t>(v), [&](std::size_t w) { all = all && mask[w]; });
+      out[v] = all;
+    }
+  });
   return out;
 }
 
 amVoxelMask amVoxel::Open6(const amVoxelGrid& g, const amVoxelMask& mask)
 {
   amVoxelMask eroded(mask.size(), 0);
-  for (std::size_t v = 0; v < mask.size(); ++v)
-  {
-    if (!mask[v])
-      continue;
-    bool all = true;
-    g.FaceNeighbours(v, [&](std::size_t w) { all = all && mask[w]; });
-    eroded[v] = all;
-  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(mask.size()), [&](vtkIdType v0, vtkIdType v1) {
+    for (vtkIdType v = v0; v < v1; ++v)
+    {
+      if (!mask[v])
+        continue;
+      bool all = true;
+      g.FaceNeighbours(static_cast<std::size_t>(v), [&](std::size_t w) { all = all && mask[w]; });
+      eroded[v] = all;
+    }
+  });
+  // The dilation writes neighbours: in order.
   amVoxelMask out = eroded;
   for (std::size_t v = 0; v < mask.size(); ++v)
     if (eroded[v])
