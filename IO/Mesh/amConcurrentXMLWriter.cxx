@@ -1,6 +1,7 @@
 #include "amConcurrentXMLWriter.h"
 
 #include "amAtomicFile.h"
+#include "amBase64OutputStream.h"
 #include "amCachedZLibCompressor.h"
 
 #include "vtkAlgorithm.h"
@@ -54,14 +55,35 @@ vtkSmartPointer<vtkDataObject> CopyOf(vtkDataObject* data)
 }
 
 /// A writer for the data's type, or null.
+/// VTK's XML writer W with amBase64OutputStream for its inline data (the same file, written in
+/// blocks rather than four characters at a time).
+template <typename W>
+class BlockBase64 : public W
+{
+public:
+  static BlockBase64* New()
+  {
+    auto* writer = new BlockBase64;
+    writer->InitializeObjectBase();
+    return writer;
+  }
+
+protected:
+  BlockBase64()
+  {
+    vtkNew<amBase64OutputStream> stream;
+    this->SetDataStream(stream);
+  }
+};
+
 vtkSmartPointer<vtkXMLWriter> WriterFor(vtkDataObject* data)
 {
   if (vtkUnstructuredGrid::SafeDownCast(data))
-    return vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+    return vtkSmartPointer<BlockBase64<vtkXMLUnstructuredGridWriter>>::New();
   if (vtkPolyData::SafeDownCast(data))
-    return vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    return vtkSmartPointer<BlockBase64<vtkXMLPolyDataWriter>>::New();
   if (vtkImageData::SafeDownCast(data))
-    return vtkSmartPointer<vtkXMLImageDataWriter>::New();
+    return vtkSmartPointer<BlockBase64<vtkXMLImageDataWriter>>::New();
   return nullptr;
 }
 

@@ -2,12 +2,14 @@
 // vtkXML*Writer writes, whatever the thread count; the data copied when queued; a folder that does
 // not exist and a type with no format are errors naming the file, with no file left behind; a
 // queued writer writes the bytes it writes alone, its warnings and errors kept with its file.
+#include "amBase64OutputStream.h"
 #include "amCachedZLibCompressor.h"
 #include "amConcurrentXMLWriter.h"
 #include "amGmshWriter.h"
 #include "amMeditWriter.h"
 #include "amTestUtilities.h"
 
+#include "vtkBase64OutputStream.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
@@ -264,4 +266,34 @@ TEST(ConcurrentXMLWriter, CachedBlocksAreZLibsBytes)
   expected.TakeReference(plain->Compress(block.data(), block.size()));
   changed.TakeReference(second->Compress(block.data(), block.size()));
   EXPECT_TRUE(same(changed, expected));
+}
+
+TEST(Base64OutputStream, TheBytesOfVTKsStreamWhateverTheWrites)
+{
+  // Every length up to 70 kB boundaries' neighbours, cut into writes of every size pattern:
+  // block encoding, triplets split across writes and both paddings give VTK's bytes.
+  std::vector<unsigned char> data(3 * (1 << 14) + 7);
+  for (size_t i = 0; i < data.size(); ++i)
+    data[i] = static_cast<unsigned char>((i * 131 + (i >> 8) * 7) & 0xff);
+  const std::vector<size_t> lengths = { 0, 1, 2, 3, 4, 5, 6, 7, 3 * (1 << 14) - 1, 3 * (1 << 14), data.size() };
+  const std::vector<size_t> pieces = { 1, 2, 4, 5, 1000, data.size() };
+  for (size_t length : lengths)
+    for (size_t piece : pieces)
+    {
+      std::ostringstream expected, got;
+      vtkNew<vtkBase64OutputStream> reference;
+      vtkNew<amBase64OutputStream> stream;
+      reference->SetStream(&expected);
+      stream->SetStream(&got);
+      ASSERT_TRUE(reference->StartWriting() && stream->StartWriting());
+      for (size_t at = 0; at < length; at += piece)
+      {
+        const size_t n = std::min(piece, length - at);
+        ASSERT_TRUE(reference->Write(data.data() + at, n));
+        ASSERT_TRUE(stream->Write(data.data() + at, n));
+      }
+      ASSERT_TRUE(reference->EndWriting() && stream->EndWriting());
+      EXPECT_EQ(got.str(), expected.str()) << length << " bytes in writes of " << piece;
+      EXPECT_EQ(got.str().size(), (length + 2) / 3 * 4);
+    }
 }
