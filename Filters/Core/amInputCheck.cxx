@@ -3,8 +3,12 @@
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <vector>
 
 vtkDataArray* amInputCheck::ScalarImage(vtkImageData* image, std::string& why)
 {
@@ -32,25 +36,45 @@ bool amInputCheck::LabelBytes(vtkDataArray* scalars, int maximum, std::vector<un
 {
   const vtkIdType n = scalars->GetNumberOfTuples();
   out.resize(static_cast<std::size_t>(n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double v = scalars->GetComponent(i, 0);
-    if (!(v >= 0 && v <= maximum) || v != std::floor(v))
+  // On the threads; the voxel named is the first bad one (the smallest index), as in order.
+  std::atomic<vtkIdType> firstBad(n);
+  vtkSMPTools::For(0, n, [&](vtkIdType i0, vtkIdType i1) {
+    for (vtkIdType i = i0; i < i1; ++i)
     {
-      why = "Voxel " + std::to_string(i) + " has value " + std::to_string(v) + ": a label map holds whole numbers 0.." +
-        std::to_string(maximum) + ".";
-      return false;
+      const double v = scalars->GetComponent(i, 0);
+      if (!(v >= 0 && v <= maximum) || v != std::floor(v))
+      {
+        vtkIdType seen = firstBad.load();
+        while (i < seen && !firstBad.compare_exchange_weak(seen, i))
+        {
+        }
+        return;
+      }
+      out[i] = static_cast<unsigned char>(v);
     }
-    out[i] = static_cast<unsigned char>(v);
+  });
+  if (firstBad.load() < n)
+  {
+    const vtkIdType i = firstBad.load();
+    why = "Voxel " + std::to_string(i) + " has value " + std::to_string(scalars->GetComponent(i, 0)) +
+      ": a label map holds whole numbers 0.." + std::to_string(maximum) + ".";
+    return false;
   }
   return true;
 }
 
 long long amInputCheck::NonFinite(vtkDataArray* scalars)
 {
+  // Counted per block on the threads, the blocks added in order.
+  const vtkIdType n = scalars->GetNumberOfTuples(), block = 1 << 16;
+  std::vector<long long> counts(static_cast<std::size_t>((n + block - 1) / block), 0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(counts.size()), [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType b = b0; b < b1; ++b)
+      for (vtkIdType i = b * block; i < std::min(n, (b + 1) * block); ++i)
+        counts[b] += std::isfinite(scalars->GetComponent(i, 0)) ? 0 : 1;
+  });
   long long count = 0;
-  const vtkIdType n = scalars->GetNumberOfTuples();
-  for (vtkIdType i = 0; i < n; ++i)
-    count += std::isfinite(scalars->GetComponent(i, 0)) ? 0 : 1;
+  for (long long c : counts)
+    count += c;
   return count;
 }

@@ -52,8 +52,8 @@ class ThoraxJob(unittest.TestCase):
         # up to the run's time; the same figures in the run marker.
         table = stdout[stdout.index("Seconds per filter"):].splitlines()
         names = ["phantom", "snake", "segmentation", "dice", "surface", "smooth", "metric", "remesh",
-                 "save_surface_mesh", "tets", "quality", "save_volume_mesh", "save_gmsh", "heart", "torso",
-                 "save_ct", "save_truth", "save_labels", "(outputs)", "(other)"]
+                 "save_surface_mesh", "save_ct", "save_truth", "save_labels", "tets", "quality", "save_volume_mesh",
+                 "save_gmsh", "heart", "torso", "(outputs)", "(other)"]
         self.assertEqual([l.split()[0] for l in table[1:len(names) + 1]], names)
         self.assertRegex(stdout, r"heart +FitzHughNagumoSolver +[0-9.]+ s +[0-9.]+ % +[0-9.]+ +\(\d+ runs\)")
         # Cores kept busy: CPU seconds per wall second, more than none and at most the machine's
