@@ -3,9 +3,13 @@
 
 #include "vtkSMPTools.h"
 
-amVoxelMask amVoxel::Erode26(const amVoxelGrid& g, const amVoxelMask& mask)
+namespace
 {
-  // Each voxel reads the mask only: on the threads.
+/// The voxels of the mask whose every neighbour (as 'visit' lists them) is in it. Each voxel reads
+/// the mask only: on the threads.
+template <typename Visit>
+amVoxelMask Erode(const amVoxelMask& mask, Visit visit)
+{
   amVoxelMask out(mask.size(), 0);
   vtkSMPTools::For(0, static_cast<vtkIdType>(mask.size()), [&](vtkIdType v0, vtkIdType v1) {
     for (vtkIdType v = v0; v < v1; ++v)
@@ -13,26 +17,22 @@ amVoxelMask amVoxel::Erode26(const amVoxelGrid& g, const amVoxelMask& mask)
       if (!mask[v])
         continue;
       bool all = true;
-      g.AllNeighbours(static_cast<std::size_t>(v), [&](std::size_t w) { all = all && mask[w]; });
+      visit(static_cast<std::size_t>(v), [&](std::size_t w) { all = all && mask[w]; });
       out[v] = all;
     }
   });
   return out;
 }
+}
+
+amVoxelMask amVoxel::Erode26(const amVoxelGrid& g, const amVoxelMask& mask)
+{
+  return Erode(mask, [&g](std::size_t v, auto f) { g.AllNeighbours(v, f); });
+}
 
 amVoxelMask amVoxel::Open6(const amVoxelGrid& g, const amVoxelMask& mask)
 {
-  amVoxelMask eroded(mask.size(), 0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(mask.size()), [&](vtkIdType v0, vtkIdType v1) {
-    for (vtkIdType v = v0; v < v1; ++v)
-    {
-      if (!mask[v])
-        continue;
-      bool all = true;
-      g.FaceNeighbours(static_cast<std::size_t>(v), [&](std::size_t w) { all = all && mask[w]; });
-      eroded[v] = all;
-    }
-  });
+  const amVoxelMask eroded = Erode(mask, [&g](std::size_t v, auto f) { g.FaceNeighbours(v, f); });
   // The dilation writes neighbours: in order.
   amVoxelMask out = eroded;
   for (std::size_t v = 0; v < mask.size(); ++v)
