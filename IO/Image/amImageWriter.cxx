@@ -2,8 +2,8 @@
 
 #include "amAtomicFile.h"
 #include "amDeflate.h"
-#include "amLabelTable.h"
 #include "amITKBridge.h"
+#include "amLabelTable.h"
 #include "amNiftiCheck.h"
 
 #include "vtkImageData.h"

@@ -54,10 +54,9 @@ vtkSmartPointer<vtkDataObject> CopyOf(vtkDataObject* data)
   return copy;
 }
 
-/// A writer for the data's type, or null.
 /// VTK's XML writer W with amBase64OutputStream for its inline data (the same file, written in
 /// blocks rather than four characters at a time).
-template <typename W>
+template<typename W>
 class BlockBase64 : public W
 {
 public:
@@ -76,6 +75,7 @@ protected:
   }
 };
 
+/// A writer for the data's type, or null.
 vtkSmartPointer<vtkXMLWriter> WriterFor(vtkDataObject* data)
 {
   if (vtkUnstructuredGrid::SafeDownCast(data))

@@ -7,7 +7,7 @@ namespace
 {
 /// The voxels of the mask whose every neighbour (as 'visit' lists them) is in it. Each voxel reads
 /// the mask only: on the threads.
-template <typename Visit>
+template<typename Visit>
 amVoxelMask Erode(const amVoxelMask& mask, Visit visit)
 {
   amVoxelMask out(mask.size(), 0);
