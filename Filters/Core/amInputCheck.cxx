@@ -1,12 +1,13 @@
 #include "amInputCheck.h"
 
+#include "amThreading.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <vector>
 
@@ -37,26 +38,16 @@ bool amInputCheck::LabelBytes(vtkDataArray* scalars, int maximum, std::vector<un
   const vtkIdType n = scalars->GetNumberOfTuples();
   out.resize(static_cast<std::size_t>(n));
   // On the threads; the voxel named is the first bad one (the smallest index), as in order.
-  std::atomic<vtkIdType> firstBad(n);
-  vtkSMPTools::For(0, n, [&](vtkIdType i0, vtkIdType i1) {
-    for (vtkIdType i = i0; i < i1; ++i)
-    {
-      const double v = scalars->GetComponent(i, 0);
-      if (!(v >= 0 && v <= maximum) || v != std::floor(v))
-      {
-        vtkIdType seen = firstBad.load();
-        while (i < seen && !firstBad.compare_exchange_weak(seen, i))
-        {
-        }
-        return;
-      }
-      out[i] = static_cast<unsigned char>(v);
-    }
+  const vtkIdType bad = amThreading::FirstFailure(0, n, [&](vtkIdType i) {
+    const double v = scalars->GetComponent(i, 0);
+    if (!(v >= 0 && v <= maximum) || v != std::floor(v))
+      return false;
+    out[i] = static_cast<unsigned char>(v);
+    return true;
   });
-  if (firstBad.load() < n)
+  if (bad < n)
   {
-    const vtkIdType i = firstBad.load();
-    why = "Voxel " + std::to_string(i) + " has value " + std::to_string(scalars->GetComponent(i, 0)) +
+    why = "Voxel " + std::to_string(bad) + " has value " + std::to_string(scalars->GetComponent(bad, 0)) +
       ": a label map holds whole numbers 0.." + std::to_string(maximum) + ".";
     return false;
   }

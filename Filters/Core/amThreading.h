@@ -14,6 +14,7 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <atomic>
 
 class ANATOMESHFILTERSCORE_EXPORT amThreading
 {
@@ -30,6 +31,27 @@ public:
       f(first, last);
     else
       vtkSMPTools::For(first, last, std::max<vtkIdType>(8192, (last - first) / 64), f);
+  }
+
+  /// The smallest i in [first, last) for which ok(i) is false, or 'last' when there is none: ok
+  /// runs on the threads (each chunk stops at its first failure), so a check over millions of
+  /// voxels names the same first bad one as the serial loop would. ok may write i's own output.
+  template <typename Functor>
+  static vtkIdType FirstFailure(vtkIdType first, vtkIdType last, Functor&& ok)
+  {
+    std::atomic<vtkIdType> failed(last);
+    vtkSMPTools::For(first, last, [&](vtkIdType i0, vtkIdType i1) {
+      for (vtkIdType i = i0; i < i1; ++i)
+        if (!ok(i))
+        {
+          vtkIdType seen = failed.load();
+          while (i < seen && !failed.compare_exchange_weak(seen, i))
+          {
+          }
+          return;
+        }
+    });
+    return failed.load();
   }
 
   /// std::sort with both halves sorted at once on the threads, then merged (VTK's STDThread

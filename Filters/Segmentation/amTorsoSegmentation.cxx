@@ -17,11 +17,9 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <atomic>
 #include <cmath>
 #include <sstream>
 
@@ -149,30 +147,20 @@ int amTorsoSegmentation::RequestData(
   hu->SetName("HU");
   hu->SetNumberOfTuples(n);
   // On the threads; the first non-finite voxel (the smallest index) is the one named.
-  std::atomic<vtkIdType> firstBad(n);
   const double width = this->InputWindow[0];
-  vtkSMPTools::For(0, n, [&](vtkIdType i0, vtkIdType i1) {
-    for (vtkIdType i = i0; i < i1; ++i)
-    {
-      const double v = scalars->GetComponent(i, 0);
-      if (!std::isfinite(v))
-      {
-        vtkIdType seen = firstBad.load();
-        while (i < seen && !firstBad.compare_exchange_weak(seen, i))
-        {
-        }
-        return;
-      }
-      double h = v;
-      if (windowed)
-        h = v <= 0.0 ? -1000.0 : v >= 255.0 ? 1000.0 : lowest + v * width / 255.0;
-      hu->SetValue(i, static_cast<float>(h));
-    }
+  const vtkIdType bad = amThreading::FirstFailure(0, n, [&](vtkIdType i) {
+    const double v = scalars->GetComponent(i, 0);
+    if (!std::isfinite(v))
+      return false;
+    double h = v;
+    if (windowed)
+      h = v <= 0.0 ? -1000.0 : v >= 255.0 ? 1000.0 : lowest + v * width / 255.0;
+    hu->SetValue(i, static_cast<float>(h));
+    return true;
   });
-  if (firstBad.load() < n)
+  if (bad < n)
   {
-    const vtkIdType i = firstBad.load();
-    vtkErrorMacro("The CT has a non-finite value (" << scalars->GetComponent(i, 0) << ") at voxel " << i
+    vtkErrorMacro("The CT has a non-finite value (" << scalars->GetComponent(bad, 0) << ") at voxel " << bad
                                                       << ": cannot segment it.");
     return 0;
   }

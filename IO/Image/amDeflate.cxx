@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -13,7 +14,7 @@ bool amDeflate::GzipFile(const std::string& from, const std::string& to, int lev
     why = "cannot read '" + from + "'";
     return false;
   }
-  const std::string mode = "wb" + std::to_string(level < 1 ? 1 : (level > 9 ? 9 : level));
+  const std::string mode = "wb" + std::to_string(std::clamp(level, 1, 9));
   gzFile out = gzopen(to.c_str(), mode.c_str());
   if (!out)
   {
