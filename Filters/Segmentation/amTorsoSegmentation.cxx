@@ -161,7 +161,7 @@ int amTorsoSegmentation::RequestData(
   if (bad < n)
   {
     vtkErrorMacro("The CT has a non-finite value (" << scalars->GetComponent(bad, 0) << ") at voxel " << bad
-                                                      << ": cannot segment it.");
+                                                    << ": cannot segment it.");
     return 0;
   }
   vtkNew<vtkImageData> huImage;
