@@ -19,8 +19,8 @@ TMP = os.environ.get("ANATOMESH_TEST_TMP", tempfile.gettempdir())
 CLI = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh")]
 
 
-def run(*args):
-    p = subprocess.run(CLI + list(args), capture_output=True, text=True, timeout=600)
+def run(*args, env=None):
+    p = subprocess.run(CLI + list(args), capture_output=True, text=True, timeout=600, env=env)
     return p.returncode, p.stdout, p.stderr
 
 
@@ -346,6 +346,27 @@ class ThoraxJob(unittest.TestCase):
         code, stdout, _ = run("filters")
         self.assertEqual(code, 0)
         self.assertIn("ThoraxPhantomSource", stdout)
+
+    def test_the_command_sets_the_allocator_and_keeps_a_users_own(self):
+        # The command starts itself again with glibc's allocator set for large arrays (see
+        # Wrapping/anatomesh); the run's marker says which settings the run had. A user's own
+        # GLIBC_TUNABLES is left as it is.
+        path = pipeline_file("allocator.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="8 8 8"/></Filter>
+              <Output from="p" port="Labels" file="${output}/labels.vti"/>
+            </AnatomeshPipeline>""")
+        out = os.path.join(TMP, "allocator_out")
+        plain = {k: v for k, v in os.environ.items() if k != "GLIBC_TUNABLES"}
+        for tunables, expected in ((None, "glibc.malloc.hugetlb=1:glibc.malloc.mmap_max=0"),
+                                   ("glibc.malloc.tcache_count=6", "glibc.malloc.tcache_count=6")):
+            env = dict(plain)
+            if tunables is not None:
+                env["GLIBC_TUNABLES"] = tunables
+            code, _, stderr = run("run", path, "--output", out, "--quiet", env=env)
+            self.assertEqual(code, 0, stderr)
+            with open(os.path.join(out, "anatomesh-run.json")) as f:
+                self.assertEqual(json.load(f)["glibc_tunables"], expected)
 
 
 class ProgressLog(unittest.TestCase):

@@ -31,10 +31,11 @@ def _write(folder, record):
 
 
 def write_complete(folder, pipeline, variables, written, data, seconds, stages=None):
-    """stages: seconds per filter (and for writing the outputs), as the run's timing table lists them."""
+    """stages: seconds per filter (and for writing the outputs), as the run's timing table lists them. The
+    allocator's settings the run had (GLIBC_TUNABLES, see the anatomesh command) go with its seconds."""
     _write(folder, {"status": "complete", "pipeline": os.path.abspath(pipeline), "variables": variables,
                     "files": written, "seconds": round(seconds, 3), "stage_seconds": stages or {},
-                    "figures": figures(data)})
+                    "glibc_tunables": os.environ.get("GLIBC_TUNABLES", ""), "figures": figures(data)})
 
 
 def write_failed(folder, pipeline, variables, message):
