@@ -1,0 +1,107 @@
+"""The main job as it ships (Examples/Pipelines/thorax.xml at its own 1 mm, through the ``anatomesh``
+command): every organ segmented with Dice >= 0.95, and the simulation on the segmented mesh agrees
+with the same job run on the phantom's exact labels (the reference, made only here): activation
+times within 5 ms RMS at common points, every lead correlating >= 0.95."""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkProbeFilter
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+SOURCE = os.path.abspath(os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
+TMP = os.environ.get("ANATOMESH_TEST_TMP", tempfile.gettempdir())
+JOB = os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml")
+
+
+def run_job(pipeline, out):
+    shutil.rmtree(out, ignore_errors=True)
+    p = subprocess.run([sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh"), "run", pipeline, "--output",
+                        out], capture_output=True, text=True, timeout=800)
+    if p.returncode != 0:
+        raise AssertionError("%s failed: %s" % (pipeline, p.stderr[-2000:]))
+
+
+def truth_pipeline():
+    """The main job with the surface made from the phantom's own labels instead of the segmentation."""
+    with open(JOB) as f:
+        text = f.read()
+    head, tail = text.split('<Filter name="surface" type="LabelSurface">', 1)
+    segmented, rest = tail.split("</Filter>", 1)
+    assert '<Input from="segmentation"/>' in segmented, "thorax.xml's surface no longer reads the segmentation"
+    truth = segmented.replace('<Input from="segmentation"/>', '<Input from="phantom" port="Labels"/>')
+    path = os.path.join(TMP, "thorax_truth_reference.xml")
+    with open(path, "w") as f:
+        f.write(head + '<Filter name="surface" type="LabelSurface">' + truth + "</Filter>" + rest)
+    return path
+
+
+def last_heart(out):
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(out, "thorax_heart_0100.vtu"))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def leads(out):
+    with open(os.path.join(out, "thorax_ecg.csv")) as f:
+        rows = list(csv.reader(f))
+    values = np.array(rows[1:], dtype=float)
+    return {name: values[:, c] for c, name in enumerate(rows[0])}
+
+
+class MainJob(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.segmented = os.path.join(TMP, "main_job_segmented")
+        cls.truth = os.path.join(TMP, "main_job_truth")
+        run_job(JOB, cls.segmented)
+        run_job(truth_pipeline(), cls.truth)
+
+    def test_every_organ_is_segmented(self):
+        with open(os.path.join(self.segmented, "thorax_dice.csv")) as f:
+            rows = list(csv.DictReader(f))
+        organs = [r for r in rows if int(r["Label"]) > 0]
+        self.assertEqual([int(r["Label"]) for r in organs], list(range(1, 11)))
+        for r in organs:
+            print("organ %2s Dice %.4f" % (r["Label"], float(r["Dice"])))
+            self.assertGreaterEqual(float(r["Dice"]), 0.95, r["Label"])
+
+    def test_activation_times_agree(self):
+        seg_heart, truth_heart = last_heart(self.segmented), last_heart(self.truth)
+        seg_act = vtk_to_numpy(seg_heart.GetPointData().GetArray("ActivationTime"))
+        self.assertTrue(np.all(seg_act >= 0), "part of the segmented heart never activated")
+        points = vtkPolyData()
+        points.SetPoints(seg_heart.GetPoints())
+        probe = vtkProbeFilter()
+        probe.SetInputData(points)
+        probe.SetSourceData(truth_heart)
+        probe.Update()
+        valid = vtk_to_numpy(probe.GetOutput().GetPointData().GetArray("vtkValidPointMask")).astype(bool)
+        truth_act = vtk_to_numpy(probe.GetOutput().GetPointData().GetArray("ActivationTime"))
+        self.assertGreater(valid.mean(), 0.6)
+        rms = np.sqrt(np.mean((seg_act[valid] - truth_act[valid]) ** 2))
+        print("activation: RMS difference %.2f ms over %d common nodes (%.1f %%); last %.1f vs %.1f ms"
+              % (rms, valid.sum(), 100 * valid.mean(), seg_act.max(), truth_act[valid].max()))
+        self.assertLessEqual(rms, 5.0)
+
+    def test_every_lead_correlates(self):
+        seg, truth = leads(self.segmented), leads(self.truth)
+        self.assertEqual(list(seg), list(truth))
+        np.testing.assert_array_equal(seg["Time"], truth["Time"])
+        for name in list(seg)[1:]:
+            r = np.corrcoef(seg[name], truth[name])[0, 1]
+            print("lead %-4s correlation %.4f, peak %.1f vs %.1f mV" % (name, r, np.abs(seg[name]).max(),
+                                                                     np.abs(truth[name]).max()))
+            self.assertGreaterEqual(r, 0.95, name)
+
+
+if __name__ == "__main__":
+    unittest.main()
