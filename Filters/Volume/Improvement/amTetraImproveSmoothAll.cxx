@@ -21,18 +21,26 @@ long SmoothAll(Mesh& m, size_t n)
   {
     ++id;
     const size_t b1 = std::min(n, b0 + block);
-    vtkSMPTools::For(static_cast<vtkIdType>(b0), static_cast<vtkIdType>(b1), 256, [&](vtkIdType v0, vtkIdType v1) {
-      for (vtkIdType v = v0; v < v1; ++v)
-      {
-        const size_t k = static_cast<size_t>(v) - b0;
-        evaluated[k] = !m.FixedVertex[v] && m.Dirty[v];
-        if (evaluated[k])
+    // A block with nothing to smooth when it starts (the sliver rounds' passes, which touch a few
+    // stars) starts no threads: what an earlier move makes dirty in it is smoothed at its turn.
+    bool any = false;
+    for (size_t v = b0; v < b1 && !any; ++v)
+      any = !m.FixedVertex[v] && m.Dirty[v];
+    if (!any)
+      std::fill(evaluated.begin(), evaluated.end(), 0);
+    else
+      vtkSMPTools::For(static_cast<vtkIdType>(b0), static_cast<vtkIdType>(b1), 256, [&](vtkIdType v0, vtkIdType v1) {
+        for (vtkIdType v = v0; v < v1; ++v)
         {
-          q[k].resize(m.Inc[v].size());
-          found[k] = SmoothTarget(m, static_cast<int>(v), &to[3 * k], q[k].data());
+          const size_t k = static_cast<size_t>(v) - b0;
+          evaluated[k] = !m.FixedVertex[v] && m.Dirty[v];
+          if (evaluated[k])
+          {
+            q[k].resize(m.Inc[v].size());
+            found[k] = SmoothTarget(m, static_cast<int>(v), &to[3 * k], q[k].data());
+          }
         }
-      }
-    });
+      });
     for (size_t v = b0; v < b1; ++v)
     {
       if (m.FixedVertex[v] || !m.Dirty[v])

@@ -122,25 +122,35 @@ long TopologyPass(Mesh& m, double bad, double split, int maxRing, amTetraMeshOpt
         return false;
     return true;
   };
-  for (size_t b0 = 0; b0 < limit; b0 += block)
+  // The tetrahedra wanted when the pass starts, in order: at its turn one of them may have left
+  // (killed, or marked tried by its own Mend), but none joins (a change only makes new ones, past
+  // 'limit', and moves only new vertices). The blocks are blocks of these: each keeps both cores
+  // busy, and a pass with a few bad elements left starts the threads once, not once per 4096.
+  std::vector<size_t> list;
+  for (size_t t = 0; t < limit; ++t)
+    if (wanted(t))
+      list.push_back(t);
+  for (size_t b0 = 0; b0 < list.size(); b0 += block)
   {
     ++id;
-    const size_t b1 = std::min(limit, b0 + block);
-    vtkSMPTools::For(static_cast<vtkIdType>(b0), static_cast<vtkIdType>(b1), 128, [&](vtkIdType t0, vtkIdType t1) {
+    const size_t b1 = std::min(list.size(), b0 + block);
+    vtkSMPTools::For(static_cast<vtkIdType>(b0), static_cast<vtkIdType>(b1), 128, [&](vtkIdType i0, vtkIdType i1) {
       thread_local std::vector<int> planRing;
-      for (vtkIdType t = t0; t < t1; ++t)
+      for (vtkIdType i = i0; i < i1; ++i)
       {
-        Plan& plan = plans[static_cast<size_t>(t) - b0];
+        Plan& plan = plans[static_cast<size_t>(i) - b0];
         plan.What = Plan::None;
-        if (wanted(static_cast<size_t>(t)))
+        const size_t t = list[static_cast<size_t>(i)];
+        if (wanted(t))
           PlanMend(m, static_cast<int>(t), split, maxRing, plan, planRing);
       }
     });
-    for (size_t t = b0; t < b1; ++t)
+    for (size_t i = b0; i < b1; ++i)
     {
+      const size_t t = list[i];
       if (!wanted(t))
         continue;
-      const Plan& plan = plans[t - b0];
+      const Plan& plan = plans[i - b0];
       const size_t before = m.T.size();
       bool changed;
       if (plan.What == Plan::None || !clean(static_cast<int>(t)))
