@@ -4,6 +4,7 @@
 #include "amSurfaceMesh.h"
 #include "amTetraGeometry.h"
 #include "amTetraRegions.h"
+#include "amTriangleLocator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -83,7 +84,28 @@ struct Part
   std::vector<std::array<double, 3>> Holes;
 };
 
-void MakePart(const amSurfaceMesh& mesh, const std::vector<int>& labels, int background, Part& part)
+/// The point a hundredth of the inradius off triangle t's centroid, on its 'side' (1: along its
+/// normal), when t is the surface's triangle nearest to it: then no other triangle lies between
+/// them, and the point is in the region on that side of t.
+bool ClearHolePoint(const amSurfaceMesh& mesh, const amTriangleLocator& locator, vtkIdType t, int side, double inradius,
+  std::array<double, 3>& hole)
+{
+  const auto& tri = mesh.Triangles[t];
+  const double* a = mesh.Points[tri[0]].data();
+  const double* b = mesh.Points[tri[1]].data();
+  const double* d = mesh.Points[tri[2]].data();
+  const Vec n = G::Cross(G::Sub(b, a), G::Sub(d, a));
+  const double step = (side == 1 ? 0.01 : -0.01) * inradius / G::Norm(n);
+  for (int k = 0; k < 3; ++k)
+    hole[k] = (a[k] + b[k] + d[k]) / 3 + step * n[k];
+  double closest[3];
+  vtkIdType nearest = -1;
+  locator.ClosestPoint(hole.data(), closest, nearest);
+  return nearest == t;
+}
+
+void MakePart(const amSurfaceMesh& mesh, const amTriangleLocator& locator, const std::vector<int>& labels,
+  int background, Part& part)
 {
   auto inGroup = [&labels](int label) { return std::binary_search(labels.begin(), labels.end(), label); };
   const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
@@ -142,9 +164,14 @@ void MakePart(const amSurfaceMesh& mesh, const std::vector<int>& labels, int bac
   for (size_t i = 1; i < sides.size(); ++i)
     if (sides[i].Edge == sides[i - 1].Edge && sides[i].Label == sides[i - 1].Label)
       patches.Join(sides[i].Candidate, sides[i - 1].Candidate);
-  // Each patch's hole point: off its roundest triangle's centroid, into the other group's
-  // region, by a hundredth of its inradius (nothing else of the surface comes that near).
-  std::map<size_t, std::pair<double, size_t>> best; // patch -> (inradius, candidate)
+  // Each patch's hole point: off the centroid of its roundest triangle, into the other group's
+  // region, by a hundredth of its inradius, where that triangle is the surface's nearest to the
+  // point. Where two interfaces nearly touch (a layer of the other region thinner than the
+  // offset), the point could lie beyond the next triangle, in a region of this group, whose
+  // tetrahedra TetGen would then carve away: the next roundest is tried. A patch without such a
+  // triangle gets no hole: TetGen meshes that region too, and its tetrahedra, of the background
+  // here, are left out when merging.
+  std::map<size_t, std::vector<std::pair<double, size_t>>> byPatch; // patch -> (inradius, candidate)
   for (size_t c = 0; c < candidates.size(); ++c)
   {
     const auto& tri = mesh.Triangles[candidates[c].first];
@@ -154,24 +181,25 @@ void MakePart(const amSurfaceMesh& mesh, const std::vector<int>& labels, int bac
     const double area2 = G::Norm(G::Cross(G::Sub(b, a), G::Sub(d, a)));
     const double perimeter = G::Norm(G::Sub(b, a)) + G::Norm(G::Sub(d, b)) + G::Norm(G::Sub(a, d));
     const double inradius = perimeter > 0 ? area2 / perimeter : 0;
-    auto& entry = best[patches.Root(c)];
-    if (inradius > entry.first)
-      entry = { inradius, c };
+    if (inradius > 0)
+      byPatch[patches.Root(c)].push_back({ inradius, c });
   }
-  for (const auto& [patch, entry] : best)
+  for (auto& [patch, list] : byPatch)
   {
-    if (!(entry.first > 0))
-      continue;
-    const auto& [t, side] = candidates[entry.second];
-    const auto& tri = mesh.Triangles[t];
-    const double* a = mesh.Points[tri[0]].data();
-    const double* b = mesh.Points[tri[1]].data();
-    const double* d = mesh.Points[tri[2]].data();
-    Vec n = G::Cross(G::Sub(b, a), G::Sub(d, a));
-    const double length = G::Norm(n);
-    const double step = (side == 1 ? 0.01 : -0.01) * entry.first / length;
-    part.Holes.push_back({ (a[0] + b[0] + d[0]) / 3 + step * n[0], (a[1] + b[1] + d[1]) / 3 + step * n[1],
-      (a[2] + b[2] + d[2]) / 3 + step * n[2] });
+    // Roundest first; among equals, the first candidate (the order of the triangles).
+    std::sort(list.begin(), list.end(), [](const std::pair<double, size_t>& x, const std::pair<double, size_t>& y) {
+      return x.first > y.first || (x.first == y.first && x.second < y.second);
+    });
+    for (const auto& [inradius, c] : list)
+    {
+      const auto& [t, side] = candidates[c];
+      std::array<double, 3> hole;
+      if (ClearHolePoint(mesh, locator, t, side, inradius, hole))
+      {
+        part.Holes.push_back(hole);
+        break;
+      }
+    }
   }
 }
 
@@ -197,6 +225,14 @@ bool Merge(const amSurfaceMesh& mesh, int background, const std::vector<Part>& p
     if (!regions.Assign(part.Mesh, out, background, why))
       return false;
     const vtkIdType localPoints = part.Mesh.NumberOfPoints();
+    // The part's points first and unchanged, as TetGen keeps its input's: TetGen drops those a
+    // hole carved every tetrahedron away from, and then the group is not trusted.
+    if (out.NumberOfPoints < localPoints)
+      return false;
+    for (vtkIdType v = 0; v < localPoints; ++v)
+      for (int d = 0; d < 3; ++d)
+        if (out.Points[3 * v + d] != part.Mesh.Points[v][d])
+          return false;
     // Points: the part's surface points are the surface's; its Steiner points used by its
     // regions' tetrahedra come next, in its order.
     std::vector<int> point(static_cast<size_t>(out.NumberOfPoints), -1);
@@ -307,9 +343,11 @@ std::string amTetGenParts::Run(const amSurfaceMesh& mesh, const amGradedSizeFiel
   {
     std::vector<Part> parts(labels.size());
     std::vector<amTetGenRun::Input> inputs;
+    amTriangleLocator locator;
+    locator.Build(mesh.Points, mesh.Triangles);
     for (size_t g = 0; g < labels.size(); ++g)
     {
-      MakePart(mesh, labels[g], background, parts[g]);
+      MakePart(mesh, locator, labels[g], background, parts[g]);
       inputs.push_back({ &parts[g].Mesh, parts[g].Holes });
     }
     std::vector<amTetGenRun::Result> results;

@@ -180,3 +180,80 @@ TEST(TetGenParts, TetrahedralizeTakesTwoGroupsOnlyWhenAsked)
   for (const auto& [label, v] : volume[0])
     EXPECT_NEAR(volume[1].at(label), v, 1e-9) << "label " << label;
 }
+
+namespace
+{
+/// Label 1: a 6 mm cube; around it a gap of label 2, then a 2 mm wall of label 3, then label 2
+/// again to the border; the gap squeezed to 1 um (a monotone map of each axis, so nothing
+/// crosses). Every hole point a hundredth of an inradius off the cube or the wall's inside would
+/// land past the gap, in the region on its other side.
+amSurfaceMesh SqueezedGap()
+{
+  const int n = 16;
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(n, n, n);
+  img->AllocateScalars(VTK_INT, 1);
+  auto* a = vtkIntArray::SafeDownCast(img->GetPointData()->GetScalars());
+  a->SetName("Labels");
+  auto box = [](int i, int j, int k, int lo, int hi) {
+    return i >= lo && i < hi && j >= lo && j < hi && k >= lo && k < hi;
+  };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        a->SetValue((k * n + j) * n + i,
+          box(i, j, k, 5, 11)     ? 1
+            : box(i, j, k, 4, 12) ? 2
+            : box(i, j, k, 3, 13) ? 3
+            : box(i, j, k, 1, 15) ? 2
+                                  : 0);
+  vtkNew<amLabelSurface> surface;
+  surface->SetInputData(img);
+  surface->SetComputeTopology(false);
+  surface->Update();
+  amSurfaceMesh mesh;
+  std::string why;
+  EXPECT_TRUE(mesh.Build(surface->GetOutput(), why)) << why;
+  // The wall's inside (3.5, 11.5) moves to 1 um from the cube (4.5, 10.5); the wall stretches.
+  const double gap = 1e-3;
+  auto squeeze = [gap](double x) {
+    if (x > 2.5 && x <= 3.5)
+      return 2.5 + (x - 2.5) * (4.5 - gap - 2.5);
+    if (x > 3.5 && x < 4.5)
+      return 4.5 - gap + (x - 3.5) * gap;
+    if (x > 10.5 && x < 11.5)
+      return 10.5 + (x - 10.5) * gap;
+    if (x >= 11.5 && x < 12.5)
+      return 10.5 + gap + (x - 11.5) * (12.5 - 10.5 - gap);
+    return x;
+  };
+  for (auto& p : mesh.Points)
+    for (double& x : p)
+      x = squeeze(x);
+  return mesh;
+}
+}
+
+TEST(TetGenParts, HolePointsStayOutOfARegionBeyondAThinGap)
+{
+  const amSurfaceMesh mesh = SqueezedGap();
+  const auto groups = amTetGenParts::Groups(mesh, 0);
+  ASSERT_EQ(groups.size(), 2u);
+  ASSERT_EQ(groups[0], std::vector<int>({ 2 })); // the cube and the wall together, the gap's region apart
+  amGradedSizeField field;
+  std::string why;
+  const double bounds[6] = { 0, 16, 0, 16, 0, 16 };
+  ASSERT_TRUE(field.Build(mesh.Points, std::vector<double>(mesh.Points.size(), 1.0), 1.5, 10.0, bounds, why)) << why;
+  // No quality refinement: a 1 um gap has no good tetrahedron.
+  const std::string switches = "pzQnMY";
+  amTetGenRun::Result parts, whole;
+  int used = 0;
+  ASSERT_TRUE(amTetGenParts::Run(mesh, field, switches, 0, true, parts, &used).empty());
+  EXPECT_EQ(used, 2); // not the one run the merge falls back to when a group's region was carved away
+  ASSERT_TRUE(amTetGenRun::Run(mesh, field, switches, whole).empty());
+  const auto volume = RegionVolumes(mesh, parts), reference = RegionVolumes(mesh, whole);
+  EXPECT_NEAR(volume.at(1), 216.0, 1e-9);
+  for (int label : { 1, 2, 3 })
+    EXPECT_NEAR(volume.at(label), reference.at(label), 1e-9) << "label " << label;
+  EXPECT_EQ(volume.count(0), 0u);
+}
