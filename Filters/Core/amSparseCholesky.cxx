@@ -12,8 +12,8 @@ namespace
 // The supernodal factor calls BLAS; a threaded OpenBLAS splits its sums differently for each
 // thread count, which changes the last bits of the result. For results that do not depend on
 // the machine's core count, OpenBLAS (when it is the BLAS in use) runs on a fixed number of
-// threads while CHOLMOD works (amSparseCholesky::BlasThreads), and gets its setting back
-// afterwards.
+// threads while CHOLMOD works (amSparseCholesky::BlasThreads, SolveBlasThreads), and gets its
+// setting back afterwards.
 
 // Free nodes from which METIS alone orders the matrix.
 constexpr long long LargeMatrix = 20000;
@@ -227,7 +227,7 @@ bool amSparseCholesky::Solve(const double* b, double* x, int count)
       rc[r] = s;
     }
   }
-  FixedBlasThreads blas(this->BlasThreads);
+  FixedBlasThreads blas(this->SolveBlasThreads);
   if (!cholmod_l_solve2(CHOLMOD_A, in.L, in.B, nullptr, &in.X, nullptr, &in.Y, &in.E, &in.Common))
     return false;
   const auto* solution = static_cast<const double*>(in.X->x);

@@ -45,11 +45,15 @@ public:
 
   const std::string& Error() const { return this->Message; }
 
-  /// OpenBLAS's threads while CHOLMOD works (a fixed number: the results do not depend on the
+  /// OpenBLAS's threads while CHOLMOD factors (a fixed number: the results do not depend on the
   /// machine's cores). Two suit a large factor, whose dense products are most of its time; one
-  /// suits a small system solved thousands of times, where waking a second thread at each
-  /// solve costs more than it gives (and its waiting thread spins on the other core).
+  /// suits a small system, where waking a second thread costs more than it gives.
   int BlasThreads = 2;
+  /// OpenBLAS's threads while CHOLMOD solves. One: the sweeps read the factor once and do little
+  /// arithmetic on what they read, and between solves a second thread would spin on the other
+  /// core (OpenBLAS's workers wait busily for a while after each call), taking it from the work
+  /// done between the solves (the next right-hand sides, the files being written).
+  int SolveBlasThreads = 1;
 
   /// Figures of the factorisation: non-zeros of L, floating-point operations, seconds, and
   /// whether the supernodal (BLAS) form was used; the ordering ("AMD", "METIS", "NESDIS", ...).

@@ -29,8 +29,7 @@ void amFitzHughNagumoStepper::Setup(const amP1Assembly& fem, const std::vector<s
   this->Solver.SetMatrix(&this->S);
   this->Solver.RelativeTolerance = this->P.SolverTolerance;
   this->Solver.MaximumIterations = this->P.MaximumIterations;
-  // One BLAS thread: at each step's small solve a second one would cost more than it gives, and
-  // would spin between steps on the core the other loops use.
+  // One BLAS thread for the small factor too (the solves have one by default).
   this->Factor.BlasThreads = 1;
   this->Factored = this->P.Direct && this->Factor.Factor(&this->S);
   const size_t n = fem.Points.size();

@@ -11,6 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -111,6 +114,13 @@ std::string Start(std::string& switches, tetgenio& in, Child& child)
     ::close(msg[0]);
     ::dup2(msg[1], STDOUT_FILENO); // TetGen prints its diagnostics on stdout
     ::close(msg[1]);
+#ifdef __GLIBC__
+    // The child shares the parent's heap, free blocks included (the anatomesh command keeps
+    // freed memory instead of returning it to the kernel), copy on write: TetGen's blocks there
+    // would each copy a page of the parent's first, and the parent writing to its own pages would
+    // copy them too while the child lives. Handed back here, the child's free pages come new.
+    ::malloc_trim(0);
+#endif
     int code = 0;
     tetgenio out;
     try

@@ -358,7 +358,9 @@ class ThoraxJob(unittest.TestCase):
             </AnatomeshPipeline>""")
         out = os.path.join(TMP, "allocator_out")
         plain = {k: v for k, v in os.environ.items() if k != "GLIBC_TUNABLES"}
-        for tunables, expected in ((None, "glibc.malloc.hugetlb=1:glibc.malloc.mmap_max=0"),
+        ours = ("glibc.malloc.hugetlb=1:glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=68719476736:"
+                "glibc.malloc.arena_max=2")
+        for tunables, expected in ((None, ours),
                                    ("glibc.malloc.tcache_count=6", "glibc.malloc.tcache_count=6")):
             env = dict(plain)
             if tunables is not None:
