@@ -179,29 +179,22 @@ void FirstTouch(benchmark::State& state)
 {
   const size_t bytes = size_t(1) << 30;
   const bool again = state.range(0) == 1;
-  char* kept = nullptr;
-  if (again)
-  {
-    kept = static_cast<char*>(mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
-    if (kept == MAP_FAILED)
-    {
+  auto map = [&]() {
+    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED)
       state.SkipWithError("cannot map 1 GB");
-      return;
-    }
+    return p == MAP_FAILED ? nullptr : static_cast<char*>(p);
+  };
+  char* kept = again ? map() : nullptr;
+  if (again && !kept)
+    return;
+  if (kept)
     std::memset(kept, 1, bytes);
-  }
   for (auto _ : state)
   {
-    char* p = kept;
-    if (!again)
-    {
-      p = static_cast<char*>(mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
-      if (p == MAP_FAILED)
-      {
-        state.SkipWithError("cannot map 1 GB");
-        return;
-      }
-    }
+    char* p = again ? kept : map();
+    if (!p)
+      return;
     std::memset(p, 2, bytes);
     benchmark::DoNotOptimize(p[bytes - 1]);
     if (!again)
