@@ -263,6 +263,8 @@ double amTriangleLocator::Closest(
               continue; // no point of this triangle can be closer than the best so far
             if (normal && !Faces(tri, normal))
               continue; // facing the other way: the other side of a thin part
+            if (best < std::numeric_limits<double>::infinity() && PlaneBeyond(tri, x, best))
+              continue; // its plane is farther than the best so far
             const double d2 = ClosestPointOn(x, tri, q);
             if (d2 < best)
             {
@@ -331,7 +333,7 @@ bool amTriangleLocator::WithinDistance(const double x[3], double r2, const doubl
     for (vtkIdType s = this->BinStart[b]; s < this->BinStart[b + 1]; ++s)
     {
       const Record& tri = this->Triangles[this->BinTriangles[s]];
-      if (this->SphereBeyond(tri, x, r) || (normal && !Faces(tri, normal)))
+      if (this->SphereBeyond(tri, x, r) || (normal && !Faces(tri, normal)) || PlaneBeyond(tri, x, r2))
         continue;
       if (ClosestPointOn(x, tri, q) <= r2)
       {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace
@@ -76,4 +77,34 @@ TEST(TriangleLocator, WithinDistanceAgreesWithClosestPointWhateverTheHint)
   EXPECT_TRUE(locator.WithinDistance(x, 4.0, up, &hint));
   EXPECT_GE(hint, 0);
   EXPECT_FALSE(locator.WithinDistance(x, 4.0, down, &hint)); // every triangle faces up
+}
+
+// ClosestPoint finds the distance every triangle's closest point gives at least (the bins and
+// the pruning by bounding spheres and planes skip no nearer triangle), exactly: the brute-force
+// minimum, bit for bit, near the terrain and far from it.
+TEST(TriangleLocator, ClosestPointIsTheBruteForceMinimum)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<vtkIdType, 3>> tris;
+  Terrain(30, points, tris);
+  amTriangleLocator locator;
+  locator.Build(points, tris);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> xy(-3.0, 13.0), z(-4.0, 4.0);
+  for (int q = 0; q < 1500; ++q)
+  {
+    const double x[3] = { xy(random), xy(random), q % 3 == 0 ? 0.01 * z(random) : z(random) };
+    double best = std::numeric_limits<double>::infinity(), c[3], closest[3];
+    for (const auto& tri : tris)
+      best = std::min(best,
+        amTriangleLocator::ClosestPointOnTriangle(
+          x, points[tri[0]].data(), points[tri[1]].data(), points[tri[2]].data(), c));
+    vtkIdType t;
+    ASSERT_EQ(best, locator.ClosestPoint(x, closest, t)) << "query " << q;
+    ASSERT_GE(t, 0);
+    // Within a bound above the distance: the same answer; below it: none.
+    ASSERT_EQ(best, locator.ClosestPointWithin(x, 1.0001 * best + 1e-12, closest, t));
+    ASSERT_EQ(locator.ClosestPointWithin(x, 0.9999 * best, closest, t), 0.9999 * best);
+    ASSERT_EQ(t, -1);
+  }
 }
