@@ -25,6 +25,9 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 
 import anatomesh
 
+# Large arrays reused from filter to filter, as the anatomesh command has them (glibc only).
+anatomesh.keep_freed_memory()
+
 out = sys.argv[1] if len(sys.argv) > 1 else "out/simulation_phantom"
 spacing = float(sys.argv[2]) if len(sys.argv) > 2 else 2.0
 end_time = float(sys.argv[3]) if len(sys.argv) > 3 else 500.0

@@ -15,7 +15,8 @@ def labels_of(image):
 
 
 class ExplicitExports(unittest.TestCase):
-    """The package names every wrapped filter in __all__ (so IDEs and linters see them), and no more."""
+    """The package names every wrapped filter in __all__ (so IDEs and linters see them) and its one
+    function, and no more."""
 
     def test_all_lists_every_wrapped_class(self):
         import importlib
@@ -26,9 +27,57 @@ class ExplicitExports(unittest.TestCase):
             if info.name.startswith("Anatomesh"):
                 module = importlib.import_module("anatomesh." + info.name)
                 wrapped |= {n for n in dir(module) if n.startswith("am")}
-        self.assertEqual(set(anatomesh.__all__), wrapped)
+        self.assertEqual(set(anatomesh.__all__), wrapped | {"keep_freed_memory"})
         for name in anatomesh.__all__:
             self.assertTrue(callable(getattr(anatomesh, name)), name)
+
+
+class KeepFreedMemory(unittest.TestCase):
+    """anatomesh.keep_freed_memory() in a fresh interpreter without GLIBC_TUNABLES: a large block
+    freed stays with the process for the next one (glibc's default maps it afresh and hands it
+    back); with GLIBC_TUNABLES set it leaves the allocator as it is."""
+
+    PROBE = """
+import ctypes, sys
+import anatomesh
+libc = ctypes.CDLL(None)
+libc.malloc.restype = ctypes.c_void_p
+libc.malloc.argtypes = (ctypes.c_size_t,)
+libc.free.argtypes = (ctypes.c_void_p,)
+def resident():
+    with open("/proc/self/statm") as f:
+        return int(f.read().split()[1]) * 4096
+kept = anatomesh.keep_freed_memory() if sys.argv[1] == "1" else False
+size = 256 << 20
+block = libc.malloc(size)
+ctypes.memset(block, 1, size)
+before = resident()
+libc.free(block)
+print(kept, (before - resident()) >> 20)
+"""
+
+    def probe(self, call, tunables=None):
+        import subprocess
+        import sys
+        env = {k: v for k, v in os.environ.items() if k != "GLIBC_TUNABLES"}
+        if tunables is not None:
+            env["GLIBC_TUNABLES"] = tunables
+        out = subprocess.run([sys.executable, "-c", self.PROBE, "1" if call else "0"], env=env, capture_output=True,
+                             text=True, check=True).stdout.split()
+        return out[0] == "True", int(out[1])
+
+    @unittest.skipUnless(os.path.exists("/proc/self/statm") and hasattr(os, "confstr")
+                         and "glibc" in (os.confstr("CS_GNU_LIBC_VERSION") or "").lower(), "glibc on Linux only")
+    def test_freed_block_stays(self):
+        kept, returned = self.probe(False)
+        self.assertFalse(kept)
+        self.assertGreater(returned, 200)  # glibc's default: the 256 MB go back to the kernel
+        kept, returned = self.probe(True)
+        self.assertTrue(kept)
+        self.assertLess(returned, 16)  # kept for the next block
+        kept, returned = self.probe(True, tunables="glibc.malloc.mmap_max=65536")
+        self.assertFalse(kept)  # the user's own setting stays
+        self.assertGreater(returned, 200)
 
 
 class SyntheticAtlasFromPython(unittest.TestCase):

@@ -11,6 +11,9 @@ pipelines::
 
 ``anatomesh.pipeline`` runs pipeline XML files (also the ``anatomesh`` command), and
 ``anatomesh.catalogue`` reads the filter catalogue (the ParaView server-manager XML).
+``anatomesh.keep_freed_memory()``, called first, gives a script the allocator setting the command
+starts with (large arrays reused from filter to filter instead of mapped afresh: see
+``anatomesh.allocator``).
 """
 # The wrapped modules import ParaView's (or VTK's) vtkmodules themselves.
 from .AnatomeshFiltersCleaning import amMorphologyCleaning
@@ -28,6 +31,7 @@ from .AnatomeshFiltersSurface import (
 from .AnatomeshFiltersVolume import amLabelMapTetrahedralize, amMeshQuality, amTetrahedralize
 from .AnatomeshIOImage import amImageReader, amImageWriter
 from .AnatomeshIOMesh import amConcurrentXMLWriter, amGmshWriter, amMeditReader, amMeditWriter
+from .allocator import keep_freed_memory
 
 __version__ = "0.1.0"
 
@@ -56,4 +60,5 @@ __all__ = [
     "amThoraxPhantomSource",
     "amTorsoPotential",
     "amTorsoSegmentation",
+    "keep_freed_memory",
 ]
