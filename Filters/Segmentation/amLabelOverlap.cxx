@@ -11,6 +11,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
@@ -86,12 +87,10 @@ int amLabelOverlap::RequestData(vtkInformation*, vtkInformationVector** inputVec
   int ea[6];
   a->GetExtent(ea);
   const double voxel = a->GetSpacing()[0] * a->GetSpacing()[1] * a->GetSpacing()[2];
-  const vtkIdType n = la->GetNumberOfTuples();
 
   // Reference label at each voxel centre of the evaluated map (nearest voxel, 0 outside). On the
   // same grid that voxel is the one of the same index (the transforms' rounding stays far below
   // half a voxel), read directly.
-  std::vector<int> ref(static_cast<size_t>(n));
   bool sameGrid = true;
   for (int d = 0; d < 6; ++d)
     sameGrid = sameGrid && ea[d] == eb[d];
@@ -100,56 +99,74 @@ int amLabelOverlap::RequestData(vtkInformation*, vtkInformationVector** inputVec
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c)
       sameGrid = sameGrid && a->GetDirectionMatrix()->GetElement(r, c) == b->GetDirectionMatrix()->GetElement(r, c);
-  if (sameGrid)
-    vtkSMPTools::For(0, n, [&](vtkIdType i0, vtkIdType i1) {
-      for (vtkIdType i = i0; i < i1; ++i)
-        ref[i] = static_cast<int>(lb->GetComponent(i, 0));
-    });
-  else
-    vtkSMPTools::For(0, da[2], [&](vtkIdType k0, vtkIdType k1) {
-      for (vtkIdType k = k0; k < k1; ++k)
-        for (int j = 0; j < da[1]; ++j)
-          for (int i = 0; i < da[0]; ++i)
-          {
-            double x[3], c[3];
-            a->TransformContinuousIndexToPhysicalPoint(i + ea[0], j + ea[2], k + ea[4], x);
-            b->TransformPhysicalPointToContinuousIndex(x, c);
-            int ijk[3];
-            bool inside = true;
-            for (int d = 0; d < 3; ++d)
-            {
-              ijk[d] = static_cast<int>(std::floor(c[d] + 0.5)) - eb[2 * d];
-              inside = inside && ijk[d] >= 0 && ijk[d] < db[d];
-            }
-            const vtkIdType id = (k * da[1] + j) * static_cast<vtkIdType>(da[0]) + i;
-            ref[id] = inside ? static_cast<int>(lb->GetComponent(
-                                 (static_cast<vtkIdType>(ijk[2]) * db[1] + ijk[1]) * db[0] + ijk[0], 0))
-                             : 0;
-          }
-    });
+  auto reference = [&](vtkIdType id, int i, int j, int k) {
+    if (sameGrid)
+      return static_cast<int>(lb->GetComponent(id, 0));
+    double x[3], c[3];
+    a->TransformContinuousIndexToPhysicalPoint(i + ea[0], j + ea[2], k + ea[4], x);
+    b->TransformPhysicalPointToContinuousIndex(x, c);
+    int ijk[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      ijk[d] = static_cast<int>(std::floor(c[d] + 0.5)) - eb[2 * d];
+      if (ijk[d] < 0 || ijk[d] >= db[d])
+        return 0;
+    }
+    return static_cast<int>(lb->GetComponent((static_cast<vtkIdType>(ijk[2]) * db[1] + ijk[1]) * db[0] + ijk[0], 0));
+  };
 
-  std::array<double, 257> na{}, nb{}, both{};
-  double fa = 0, fb = 0, fboth = 0;
-  for (vtkIdType i = 0; i < n; ++i)
+  // Voxel counts per label, slab by slab on the threads: whole numbers, so their sum is the same
+  // whatever the number of threads and the order the slabs are added in.
+  struct Counts
   {
-    const int p = static_cast<int>(la->GetComponent(i, 0)), q = ref[i];
-    const int pa = std::min(256, std::max(0, p)), qb = std::min(256, std::max(0, q));
-    na[pa] += 1;
-    if (this->BinaryReference)
+    std::array<long long, 257> A{}, B{}, Both{};
+    long long FA = 0, FB = 0, FBoth = 0;
+  };
+  vtkSMPThreadLocal<Counts> local;
+  vtkSMPTools::For(0, da[2], [&](vtkIdType k0, vtkIdType k1) {
+    Counts& n = local.Local();
+    for (vtkIdType k = k0; k < k1; ++k)
+      for (int j = 0; j < da[1]; ++j)
+        for (int i = 0; i < da[0]; ++i)
+        {
+          const vtkIdType id = (k * da[1] + j) * static_cast<vtkIdType>(da[0]) + i;
+          const int p = static_cast<int>(la->GetComponent(id, 0)), q = reference(id, i, j, static_cast<int>(k));
+          const int pa = std::min(256, std::max(0, p)), qb = std::min(256, std::max(0, q));
+          ++n.A[pa];
+          if (this->BinaryReference)
+            n.Both[pa] += q != 0 && p != 0;
+          else
+          {
+            ++n.B[qb];
+            n.Both[pa] += p == q;
+          }
+          n.FA += p != 0;
+          n.FB += q != 0;
+          n.FBoth += p != 0 && q != 0;
+        }
+  });
+  Counts sum;
+  for (const Counts& n : local)
+  {
+    for (int l = 0; l < 257; ++l)
     {
-      if (q != 0 && p != 0)
-        both[pa] += 1;
+      sum.A[l] += n.A[l];
+      sum.B[l] += n.B[l];
+      sum.Both[l] += n.Both[l];
     }
-    else
-    {
-      nb[qb] += 1;
-      if (p == q)
-        both[pa] += 1;
-    }
-    fa += p != 0;
-    fb += q != 0;
-    fboth += p != 0 && q != 0;
+    sum.FA += n.FA;
+    sum.FB += n.FB;
+    sum.FBoth += n.FBoth;
   }
+  std::array<double, 257> na{}, nb{}, both{};
+  for (int l = 0; l < 257; ++l)
+  {
+    na[l] = static_cast<double>(sum.A[l]);
+    nb[l] = static_cast<double>(sum.B[l]);
+    both[l] = static_cast<double>(sum.Both[l]);
+  }
+  const double fa = static_cast<double>(sum.FA), fb = static_cast<double>(sum.FB),
+               fboth = static_cast<double>(sum.FBoth);
   if (this->BinaryReference)
     for (int l = 1; l < 257; ++l)
       nb[l] = na[l] ? fb : 0;
