@@ -1,6 +1,6 @@
 #include "amTetraFaces.h"
 
-#include "amThreading.h"
+#include "vtkSMPTools.h"
 
 #include <algorithm>
 
@@ -9,24 +9,31 @@ namespace
 // Faces of tetrahedron (0 1 2 3), each outward when the tetrahedron is positive.
 const int FaceOf[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
 
+/// A face of a tetrahedron, its nodes sorted: the lowest is its bucket's (not kept here).
 struct Entry
 {
-  std::array<vtkIdType, 3> Sorted;
+  vtkIdType Middle, High;
   vtkIdType Tetra;
   int Side;
-  // Element by element (std::array's operators compare through memcmp, most of the sort's time).
   bool operator<(const Entry& o) const
   {
-    for (int k = 0; k < 3; ++k)
-      if (this->Sorted[k] != o.Sorted[k])
-        return this->Sorted[k] < o.Sorted[k];
-    return this->Tetra < o.Tetra;
+    return this->Middle != o.Middle ? this->Middle < o.Middle
+                                    : (this->High != o.High ? this->High < o.High : this->Tetra < o.Tetra);
   }
-  bool SameFace(const Entry& o) const
-  {
-    return this->Sorted[0] == o.Sorted[0] && this->Sorted[1] == o.Sorted[1] && this->Sorted[2] == o.Sorted[2];
-  }
+  bool SameFace(const Entry& o) const { return this->Middle == o.Middle && this->High == o.High; }
 };
+
+std::array<vtkIdType, 3> SortedFace(const std::array<vtkIdType, 4>& tet, int f)
+{
+  std::array<vtkIdType, 3> v = { tet[FaceOf[f][0]], tet[FaceOf[f][1]], tet[FaceOf[f][2]] };
+  if (v[0] > v[1])
+    std::swap(v[0], v[1]);
+  if (v[1] > v[2])
+    std::swap(v[1], v[2]);
+  if (v[0] > v[1])
+    std::swap(v[0], v[1]);
+  return v;
+}
 
 bool Positive(const double* points, const std::array<vtkIdType, 4>& t)
 {
@@ -43,47 +50,62 @@ bool Positive(const double* points, const std::array<vtkIdType, 4>& t)
 std::vector<amTetraFaces::Face> amTetraFaces::Find(
   const double* points, const std::vector<std::array<vtkIdType, 4>>& tetrahedra, const int* labels)
 {
-  std::vector<Entry> entries;
-  entries.reserve(4 * tetrahedra.size());
-  for (std::size_t t = 0; t < tetrahedra.size(); ++t)
+  // The faces in the order of their sorted node triples (then of their tetrahedra): bucketed by
+  // their lowest node (a counting sort), then each bucket, a few dozen faces, sorted on the
+  // threads. No two faces compare equal, so the order is the one a sort of the whole would give.
+  vtkIdType nodes = 0;
+  for (const auto& tet : tetrahedra)
+    for (vtkIdType v : tet)
+      nodes = std::max(nodes, v + 1);
+  std::vector<vtkIdType> start(static_cast<std::size_t>(nodes) + 1, 0);
+  for (const auto& tet : tetrahedra)
     for (int f = 0; f < 4; ++f)
-    {
-      const auto& tet = tetrahedra[t];
-      Entry e{ { tet[FaceOf[f][0]], tet[FaceOf[f][1]], tet[FaceOf[f][2]] }, static_cast<vtkIdType>(t), f };
-      std::sort(e.Sorted.begin(), e.Sorted.end());
-      entries.push_back(e);
-    }
-  // No two entries compare equal (a tetrahedron's faces differ), so the threads' sort gives the
-  // one order.
-  amThreading::Sort(entries.begin(), entries.end());
+      ++start[SortedFace(tet, f)[0] + 1];
+  for (vtkIdType v = 0; v < nodes; ++v)
+    start[v + 1] += start[v];
+  std::vector<Entry> entries(4 * tetrahedra.size());
+  {
+    std::vector<vtkIdType> fill(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < tetrahedra.size(); ++t)
+      for (int f = 0; f < 4; ++f)
+      {
+        const std::array<vtkIdType, 3> v = SortedFace(tetrahedra[t], f);
+        entries[fill[v[0]]++] = { v[1], v[2], static_cast<vtkIdType>(t), f };
+      }
+  }
+  vtkSMPTools::For(0, nodes, 4096, [&](vtkIdType v0, vtkIdType v1) {
+    for (vtkIdType v = v0; v < v1; ++v)
+      std::sort(entries.begin() + start[v], entries.begin() + start[v + 1]);
+  });
 
   auto labelOf = [&](vtkIdType t) { return labels ? labels[t] : 0; };
   std::vector<Face> faces;
-  for (std::size_t k = 0; k < entries.size();)
-  {
-    std::size_t e = k + 1;
-    while (e < entries.size() && entries[e].SameFace(entries[k]))
-      ++e;
-    const Entry* first = &entries[k];
-    const Entry* second = e - k == 2 ? &entries[k + 1] : nullptr; // > 2: non-manifold, taken as boundary
-    const int a = labelOf(first->Tetra);
-    const int b = second ? labelOf(second->Tetra) : Outside();
-    if (!second || a != b)
+  for (vtkIdType v = 0; v < nodes; ++v)
+    for (vtkIdType k = start[v]; k < start[v + 1];)
     {
-      if (second && b > a)
-        std::swap(first, second);
-      const auto& tet = tetrahedra[first->Tetra];
-      Face face;
-      face.Points = { tet[FaceOf[first->Side][0]], tet[FaceOf[first->Side][1]], tet[FaceOf[first->Side][2]] };
-      if (!Positive(points, tet))
-        std::swap(face.Points[1], face.Points[2]); // a negative tetrahedron's FaceOf faces point inwards
-      face.FirstTetra = first->Tetra;
-      face.SecondTetra = second ? second->Tetra : -1;
-      face.First = std::max(a, b);
-      face.Second = std::min(a, b);
-      faces.push_back(face);
+      vtkIdType e = k + 1;
+      while (e < start[v + 1] && entries[e].SameFace(entries[k]))
+        ++e;
+      const Entry* first = &entries[k];
+      const Entry* second = e - k == 2 ? &entries[k + 1] : nullptr; // > 2: non-manifold, taken as boundary
+      const int a = labelOf(first->Tetra);
+      const int b = second ? labelOf(second->Tetra) : Outside();
+      if (!second || a != b)
+      {
+        if (second && b > a)
+          std::swap(first, second);
+        const auto& tet = tetrahedra[first->Tetra];
+        Face face;
+        face.Points = { tet[FaceOf[first->Side][0]], tet[FaceOf[first->Side][1]], tet[FaceOf[first->Side][2]] };
+        if (!Positive(points, tet))
+          std::swap(face.Points[1], face.Points[2]); // a negative tetrahedron's FaceOf faces point inwards
+        face.FirstTetra = first->Tetra;
+        face.SecondTetra = second ? second->Tetra : -1;
+        face.First = std::max(a, b);
+        face.Second = std::min(a, b);
+        faces.push_back(face);
+      }
+      k = e;
     }
-    k = e;
-  }
   return faces;
 }
