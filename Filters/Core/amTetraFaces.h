@@ -41,6 +41,10 @@ public:
   /// tetrahedron, or null (all equal: only the boundary is returned).
   static std::vector<Face> Find(const double* points, const std::vector<std::array<vtkIdType, 4>>& tetrahedra,
     const int* labels);
+
+  /// The faces of one tetrahedron only (the mesh's boundary), each as its sorted node triple, in
+  /// the order of those triples.
+  static std::vector<std::array<int, 3>> Boundary(const std::vector<std::array<int, 4>>& tetrahedra);
 };
 
 #endif

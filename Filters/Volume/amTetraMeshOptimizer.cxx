@@ -1,9 +1,9 @@
 #include "amTetraMeshOptimizer.h"
 
 #include "amMeshQuality.h"
-#include "amTetraInterfaceUpdate.h"
+#include "amTetraFaces.h"
 #include "amTetraImproveMesh.h"
-#include "amThreading.h"
+#include "amTetraInterfaceUpdate.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -118,25 +118,8 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
   // Fixed: the given faces and the mesh's own boundary (faces of one tetrahedron only).
   for (const Tri& f : fixedFaces)
     m.FixedFaces.insert(Sorted(f[0], f[1], f[2]));
-  {
-    // A face of one tetrahedron only: every face sorted, then the faces seen once kept (a hash
-    // map of four million faces took seconds).
-    std::vector<Tri> faces;
-    faces.reserve(4 * tets.size());
-    for (const Tet& t : tets)
-      for (int i = 0; i < 4; ++i)
-        faces.push_back(Sorted(t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]));
-    amThreading::Sort(faces.begin(), faces.end());
-    for (size_t i = 0; i < faces.size();)
-    {
-      size_t j = i + 1;
-      while (j < faces.size() && faces[j] == faces[i])
-        ++j;
-      if (j == i + 1)
-        m.FixedFaces.insert(faces[i]);
-      i = j;
-    }
-  }
+  for (const Tri& f : amTetraFaces::Boundary(tets))
+    m.FixedFaces.insert(f);
   auto fixEdges = [&m]() {
     m.FixedEdges.clear();
     for (const Tri& f : m.FixedFaces)

@@ -118,3 +118,46 @@ TEST(TetraFaces, EveryBoundaryAndInterfaceFaceOnceInOrder)
   // Without labels: the boundary alone.
   EXPECT_EQ(amTetraFaces::Find(points.data(), tets, nullptr).size(), boundary);
 }
+
+// Boundary: the faces of one tetrahedron only, as sorted triples in their order; the same as
+// Find without labels.
+TEST(TetraFaces, BoundaryIsTheFacesOfOneTetrahedron)
+{
+  // Two cubes side by side, six tetrahedra each (Kuhn's split: the same diagonal on the shared side).
+  std::vector<double> points;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i)
+        points.insert(points.end(), { double(i), double(j), double(k) });
+  auto node = [](int i, int j, int k) { return (k * 2 + j) * 3 + i; };
+  static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  std::vector<std::array<int, 4>> tets;
+  std::vector<std::array<vtkIdType, 4>> wide;
+  for (int i = 0; i < 2; ++i)
+    for (const auto& ax : axes)
+    {
+      int c[3] = { i, 0, 0 };
+      std::array<int, 4> t;
+      t[0] = node(c[0], c[1], c[2]);
+      for (int s = 0; s < 3; ++s)
+      {
+        ++c[ax[s]];
+        t[s + 1] = node(c[0], c[1], c[2]);
+      }
+      tets.push_back(t);
+      wide.push_back({ t[0], t[1], t[2], t[3] });
+    }
+  const std::vector<std::array<int, 3>> boundary = amTetraFaces::Boundary(tets);
+  EXPECT_EQ(boundary.size(), 20u); // the box's ten squares, two triangles each
+  EXPECT_TRUE(std::is_sorted(boundary.begin(), boundary.end()));
+  const std::vector<amTetraFaces::Face> faces = amTetraFaces::Find(points.data(), wide, nullptr);
+  ASSERT_EQ(faces.size(), boundary.size());
+  for (size_t i = 0; i < faces.size(); ++i)
+  {
+    std::array<vtkIdType, 3> key = faces[i].Points;
+    std::sort(key.begin(), key.end());
+    EXPECT_EQ(key[0], boundary[i][0]);
+    EXPECT_EQ(key[1], boundary[i][1]);
+    EXPECT_EQ(key[2], boundary[i][2]);
+  }
+}
