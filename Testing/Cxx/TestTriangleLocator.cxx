@@ -25,17 +25,29 @@ void Terrain(int n, std::vector<std::array<double, 3>>& points, std::vector<std:
       tris.push_back({ a, d, c });
     }
 }
+
+/// The terrain of n x n quads and its locator.
+struct TerrainLocator
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<vtkIdType, 3>> tris;
+  amTriangleLocator locator;
+  explicit TerrainLocator(int n)
+  {
+    Terrain(n, this->points, this->tris);
+    this->locator.Build(this->points, this->tris);
+  }
+};
 }
 
 // WithinDistance answers as ClosestPoint does, with or without a hint (a good one, a stale one,
 // one out of range), and a hint it is given comes back as a triangle within reach.
 TEST(TriangleLocator, WithinDistanceAgreesWithClosestPointWhateverTheHint)
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<vtkIdType, 3>> tris;
-  Terrain(40, points, tris);
-  amTriangleLocator locator;
-  locator.Build(points, tris);
+  TerrainLocator terrain(40);
+  const auto& points = terrain.points;
+  const auto& tris = terrain.tris;
+  const amTriangleLocator& locator = terrain.locator;
   std::mt19937 random(7);
   std::uniform_real_distribution<double> xy(-0.5, 10.5), z(-0.6, 0.6), radius(0.0, 0.3);
   vtkIdType hint = -1;
@@ -84,11 +96,10 @@ TEST(TriangleLocator, WithinDistanceAgreesWithClosestPointWhateverTheHint)
 // minimum, bit for bit, near the terrain and far from it.
 TEST(TriangleLocator, ClosestPointIsTheBruteForceMinimum)
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<vtkIdType, 3>> tris;
-  Terrain(30, points, tris);
-  amTriangleLocator locator;
-  locator.Build(points, tris);
+  TerrainLocator terrain(30);
+  const auto& points = terrain.points;
+  const auto& tris = terrain.tris;
+  const amTriangleLocator& locator = terrain.locator;
   std::mt19937 random(11);
   std::uniform_real_distribution<double> xy(-3.0, 13.0), z(-4.0, 4.0);
   for (int q = 0; q < 1500; ++q)
