@@ -96,26 +96,23 @@ TEST(TriangleLocator, WithinDistanceAgreesWithClosestPointWhateverTheHint)
 // minimum, bit for bit, near the terrain and far from it.
 TEST(TriangleLocator, ClosestPointIsTheBruteForceMinimum)
 {
-  TerrainLocator terrain(30);
-  const auto& points = terrain.points;
-  const auto& tris = terrain.tris;
-  const amTriangleLocator& locator = terrain.locator;
+  const TerrainLocator terrain(30);
   std::mt19937 random(11);
   std::uniform_real_distribution<double> xy(-3.0, 13.0), z(-4.0, 4.0);
   for (int q = 0; q < 1500; ++q)
   {
     const double x[3] = { xy(random), xy(random), q % 3 == 0 ? 0.01 * z(random) : z(random) };
     double best = std::numeric_limits<double>::infinity(), c[3], closest[3];
-    for (const auto& tri : tris)
+    for (const auto& tri : terrain.tris)
       best = std::min(best,
         amTriangleLocator::ClosestPointOnTriangle(
-          x, points[tri[0]].data(), points[tri[1]].data(), points[tri[2]].data(), c));
+          x, terrain.points[tri[0]].data(), terrain.points[tri[1]].data(), terrain.points[tri[2]].data(), c));
     vtkIdType t;
-    ASSERT_EQ(best, locator.ClosestPoint(x, closest, t)) << "query " << q;
+    ASSERT_EQ(best, terrain.locator.ClosestPoint(x, closest, t)) << "query " << q;
     ASSERT_GE(t, 0);
     // Within a bound above the distance: the same answer; below it: none.
-    ASSERT_EQ(best, locator.ClosestPointWithin(x, 1.0001 * best + 1e-12, closest, t));
-    ASSERT_EQ(locator.ClosestPointWithin(x, 0.9999 * best, closest, t), 0.9999 * best);
+    ASSERT_EQ(best, terrain.locator.ClosestPointWithin(x, 1.0001 * best + 1e-12, closest, t));
+    ASSERT_EQ(terrain.locator.ClosestPointWithin(x, 0.9999 * best, closest, t), 0.9999 * best);
     ASSERT_EQ(t, -1);
   }
 }
