@@ -72,7 +72,6 @@ private:
   bool SphereBeyond(const Record& t, const double x[3], double r) const;
   /// Closest point on the triangle of a record.
   static double ClosestPointOn(const double x[3], const Record& t, double closest[3]);
-  /// Whether the triangle's orientation has a positive component along 'normal'.
   /// Whether x lies farther than sqrt(r2) from t's plane, by a relative margin far above
   /// rounding: then no point of t is that close (a cheaper test than the closest point).
   static bool PlaneBeyond(const Record& t, const double x[3], double r2)
@@ -82,6 +81,7 @@ private:
     const double d = n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2]);
     return d * d > r2 * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * (1 + 1e-9);
   }
+  /// Whether the triangle's orientation has a positive component along 'normal'.
   static bool Faces(const Record& t, const double normal[3])
   {
     return t.Normal[0] * normal[0] + t.Normal[1] * normal[1] + t.Normal[2] * normal[2] > 0;
