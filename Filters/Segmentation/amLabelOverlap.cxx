@@ -158,18 +158,10 @@ int amLabelOverlap::RequestData(vtkInformation*, vtkInformationVector** inputVec
     sum.FB += n.FB;
     sum.FBoth += n.FBoth;
   }
-  std::array<double, 257> na{}, nb{}, both{};
-  for (int l = 0; l < 257; ++l)
-  {
-    na[l] = static_cast<double>(sum.A[l]);
-    nb[l] = static_cast<double>(sum.B[l]);
-    both[l] = static_cast<double>(sum.Both[l]);
-  }
-  const double fa = static_cast<double>(sum.FA), fb = static_cast<double>(sum.FB),
-               fboth = static_cast<double>(sum.FBoth);
+  // A binary reference: every label is compared with the reference's whole foreground.
   if (this->BinaryReference)
     for (int l = 1; l < 257; ++l)
-      nb[l] = na[l] ? fb : 0;
+      sum.B[l] = sum.A[l] ? sum.FB : 0;
 
   vtkNew<vtkIntArray> label;
   label->SetName("Label");
@@ -186,9 +178,9 @@ int amLabelOverlap::RequestData(vtkInformation*, vtkInformationVector** inputVec
     jaccard->InsertNextValue(x + y - z > 0 ? z / (x + y - z) : 1.0);
   };
   for (int l = 1; l < 257; ++l)
-    if (na[l] > 0 || nb[l] > 0)
-      row(l, na[l], nb[l], both[l]);
-  row(-1, fa, fb, fboth);
+    if (sum.A[l] > 0 || sum.B[l] > 0)
+      row(l, static_cast<double>(sum.A[l]), static_cast<double>(sum.B[l]), static_cast<double>(sum.Both[l]));
+  row(-1, static_cast<double>(sum.FA), static_cast<double>(sum.FB), static_cast<double>(sum.FBoth));
   output->AddColumn(label);
   output->AddColumn(volume);
   output->AddColumn(refVolume);
