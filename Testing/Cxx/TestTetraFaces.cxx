@@ -11,6 +11,28 @@ namespace
 // Faces of tetrahedron (0 1 2 3), each outward when the tetrahedron is positive (amTetraFaces').
 const int FaceOf[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
 
+/// The six tetrahedra of the cube at (i, j, k), each the path from its lowest corner to its
+/// highest along the three axes in one order (Kuhn's split: neighbouring cubes share diagonals).
+template<typename Id, typename Node>
+std::vector<std::array<Id, 4>> CubeTetrahedra(int i, int j, int k, Node&& node)
+{
+  static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  std::vector<std::array<Id, 4>> tets;
+  for (const auto& ax : axes)
+  {
+    int c[3] = { i, j, k };
+    std::array<Id, 4> t;
+    t[0] = static_cast<Id>(node(c[0], c[1], c[2]));
+    for (int s = 0; s < 3; ++s)
+    {
+      ++c[ax[s]];
+      t[s + 1] = static_cast<Id>(node(c[0], c[1], c[2]));
+    }
+    tets.push_back(t);
+  }
+  return tets;
+}
+
 double Orientation(const double* p, vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType d)
 {
   double e[3][3];
@@ -48,24 +70,14 @@ TEST(TetraFaces, EveryBoundaryAndInterfaceFaceOnceInOrder)
         points[3 * v + 1] = j;
         points[3 * v + 2] = k;
       }
-  static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
   std::vector<std::array<vtkIdType, 4>> tets;
   std::vector<int> labels;
   std::uniform_int_distribution<int> label(1, 3);
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        for (const auto& ax : axes)
+        for (std::array<vtkIdType, 4> t : CubeTetrahedra<vtkIdType>(i, j, k, node))
         {
-          // The path from the cube's lowest corner to its highest along the three axes in turn.
-          int c[3] = { i, j, k };
-          std::array<vtkIdType, 4> t;
-          t[0] = node(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s)
-          {
-            ++c[ax[s]];
-            t[s + 1] = node(c[0], c[1], c[2]);
-          }
           if (random() % 2)
             std::swap(t[2], t[3]); // either handedness
           tets.push_back(t);
@@ -130,20 +142,11 @@ TEST(TetraFaces, BoundaryIsTheFacesOfOneTetrahedron)
       for (int i = 0; i < 3; ++i)
         points.insert(points.end(), { double(i), double(j), double(k) });
   auto node = [](int i, int j, int k) { return (k * 2 + j) * 3 + i; };
-  static const int axes[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
   std::vector<std::array<int, 4>> tets;
   std::vector<std::array<vtkIdType, 4>> wide;
   for (int i = 0; i < 2; ++i)
-    for (const auto& ax : axes)
+    for (const std::array<int, 4>& t : CubeTetrahedra<int>(i, 0, 0, node))
     {
-      int c[3] = { i, 0, 0 };
-      std::array<int, 4> t;
-      t[0] = node(c[0], c[1], c[2]);
-      for (int s = 0; s < 3; ++s)
-      {
-        ++c[ax[s]];
-        t[s + 1] = node(c[0], c[1], c[2]);
-      }
       tets.push_back(t);
       wide.push_back({ t[0], t[1], t[2], t[3] });
     }
