@@ -1,15 +1,9 @@
 """glibc's allocator set, inside a Python process already running, as the ``anatomesh`` command sets
-it when it starts (see docs/benchmarks.md#main-job).
-
-A run allocates and frees arrays of tens to hundreds of megabytes filter after filter. By default
-glibc maps each large block afresh and hands it back to the kernel when it is freed, so every page
-of the next block costs a page fault, which on a virtual machine costs microseconds. The command
-starts itself with ``GLIBC_TUNABLES``; a Python script or notebook is already running when it
-imports anatomesh, so it sets the same through ``mallopt``: large blocks from the heap
-(``M_MMAP_MAX`` 0), freed space kept for the next filter (``M_TRIM_THRESHOLD`` at its largest, 2 GB
-of free space at the heap's top), one heap shared by the worker threads (``M_ARENA_MAX`` 2). Only
-huge pages (``glibc.malloc.hugetlb``) have no ``mallopt`` form. The price: the process keeps the
-memory of its largest run until it ends.
+it through ``GLIBC_TUNABLES`` when it starts (why: the comment in Wrapping/anatomesh, and
+docs/benchmarks.md#main-job). ``mallopt`` gives all of that setting but the huge pages: large blocks
+from the heap (``M_MMAP_MAX`` 0), up to 2 GB of freed space kept for the next filter
+(``M_TRIM_THRESHOLD``, an int), two arenas (``M_ARENA_MAX``). The price: the process keeps the memory
+of its largest run until it ends.
 """
 import ctypes
 import os
