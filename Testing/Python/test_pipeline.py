@@ -410,6 +410,52 @@ class ProgressLog(unittest.TestCase):
         self.assertNotIn("never started", clock.seconds)
 
 
+class ReleasedData(unittest.TestCase):
+    def test_an_output_used_once_is_released_after_its_filter_ran(self):
+        # The label map and the raw surface each feed one filter: freed once it has run (their
+        # memory goes to the later stages), without running anything twice. What is written,
+        # or feeds two steps, stays.
+        from anatomesh.pipeline import Pipeline
+        path = pipeline_file("release.xml", """
+            <AnatomeshPipeline version="1">
+              <Variable name="output" default="x"/>
+              <Filter name="phantom" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="6 6 6"/>
+              </Filter>
+              <Filter name="surface" type="LabelSurface">
+                <Input from="phantom" port="Labels"/>
+              </Filter>
+              <Filter name="smooth" type="SurfaceSmoothing">
+                <Input from="surface" port="Surface"/>
+              </Filter>
+              <Filter name="save_ct" type="ImageWriter">
+                <Input from="phantom" port="CT"/>
+                <Property name="FileName" value="${output}/ct.nii.gz"/>
+              </Filter>
+              <Output from="smooth" file="${output}/smooth.vtp"/>
+            </AnatomeshPipeline>""")
+        p = Pipeline(path, {"output": os.path.join(TMP, "release_out")})
+        p.run()
+        steps = {s.name: s.algorithm for s in p.steps}
+        self.assertEqual({k: v for k, v in p.clock.runs.items() if k in steps}, {"phantom": 1, "surface": 1, "smooth": 1})
+        labels, surface = steps["phantom"].GetOutputDataObject(1), steps["surface"].GetOutputDataObject(0)
+        self.assertTrue(labels.GetDataReleased())
+        self.assertEqual(labels.GetNumberOfPoints(), 0)
+        self.assertTrue(surface.GetDataReleased())
+        self.assertEqual(surface.GetNumberOfCells(), 0)
+        ct, smooth = steps["phantom"].GetOutputDataObject(0), steps["smooth"].GetOutputDataObject(0)
+        self.assertFalse(ct.GetDataReleased())
+        self.assertGreater(ct.GetNumberOfPoints(), 0)
+        self.assertFalse(smooth.GetDataReleased())
+        self.assertGreater(smooth.GetNumberOfCells(), 0)
+        self.assertGreater(os.path.getsize(os.path.join(TMP, "release_out", "smooth.vtp")), 0)
+        # build() alone releases nothing.
+        algorithms = Pipeline(path, {"output": os.path.join(TMP, "release_out2")}).build()
+        algorithms["smooth"].Update()
+        self.assertFalse(algorithms["surface"].GetOutputDataObject(0).GetDataReleased())
+        self.assertGreater(algorithms["surface"].GetOutputDataObject(0).GetNumberOfCells(), 0)
+
+
 class DeprecatedNames(unittest.TestCase):
     def test_british_property_names_still_read_with_a_warning(self):
         path = pipeline_file("deprecated.xml", """

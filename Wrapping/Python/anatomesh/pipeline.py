@@ -382,8 +382,12 @@ class Pipeline:
             culprit.name, culprit.proxy.name, errors[0][1] if errors else fallback))
 
     def run(self, progress=None, log=None):
-        """Build and execute; write every writer and <Output>. Returns a list of written files."""
+        """Build and execute; write every writer and <Output>. Returns a list of written files.
+        An output that feeds one filter and nothing else (no writer, no <Output>) is released once
+        that filter has run, so the later stages reuse its memory (the surfaces between the label
+        map and the remeshing are most of the main job's). build() alone keeps every output."""
         algorithms = self.build()
+        self._release_single_use()
         errors = []
         watcher = _Watcher(errors, progress)
         for step in self.steps:
@@ -450,6 +454,22 @@ class Pipeline:
                 commit()
         watcher.finish()
         return written
+
+    def _release_single_use(self):
+        """VTK's release-data flag on each output port whose one consumer is a filter: the executive
+        frees the data after that filter's execution (and would run the producer again if asked)."""
+        by_name = {s.name: s for s in self.steps}
+        consumers = {}
+        for step in self.steps:
+            for _, upstream, port, line in step.inputs:
+                key = (upstream, self._port_index(by_name[upstream], port, line))
+                consumers.setdefault(key, []).append(step)
+        for upstream, port, _, line in self.outputs:
+            key = (upstream, self._port_index(by_name[upstream], port, line))
+            consumers.setdefault(key, []).append(None)
+        for (upstream, index), users in consumers.items():
+            if len(users) == 1 and users[0] is not None and not users[0].proxy.is_writer:
+                by_name[upstream].algorithm.GetExecutive().SetReleaseDataFlag(index, 1)
 
     def _writer_failure(self, writers, files):
         """The queue's first failure: named after its writer step when a writer failed."""
