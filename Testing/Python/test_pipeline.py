@@ -449,6 +449,36 @@ class ReleasedData(unittest.TestCase):
         self.assertFalse(smooth.GetDataReleased())
         self.assertGreater(smooth.GetNumberOfCells(), 0)
         self.assertGreater(os.path.getsize(os.path.join(TMP, "release_out", "smooth.vtp")), 0)
+        # A filter run once per frame (the heart's time series) keeps its input: the mesh is made once.
+        frames = pipeline_file("release_frames.xml", """
+            <AnatomeshPipeline version="1">
+              <Variable name="output" default="x"/>
+              <Filter name="phantom" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="4 4 4"/>
+              </Filter>
+              <Filter name="surface" type="LabelSurface">
+                <Input from="phantom" port="Labels"/>
+              </Filter>
+              <Filter name="tets" type="Tetrahedralize">
+                <Input from="surface"/>
+                <Property name="ImproveQuality" value="0"/>
+              </Filter>
+              <Filter name="heart" type="FitzHughNagumoSolver">
+                <Input from="tets" port="Mesh"/>
+                <Property name="HeartRegions" value="5"/>
+                <Property name="StimulusCenter" value="61 -51.5 -25"/>
+                <Property name="EndTime" value="20"/>
+                <Property name="OutputInterval" value="5"/>
+              </Filter>
+              <Output from="heart" file="${output}/heart.pvd"/>
+            </AnatomeshPipeline>""")
+        p = Pipeline(frames, {"output": os.path.join(TMP, "release_frames_out")})
+        p.run()
+        steps = {s.name: s.algorithm for s in p.steps}
+        self.assertEqual(p.clock.runs["tets"], 1)
+        self.assertGreater(p.clock.runs["heart"], 1)
+        self.assertFalse(steps["tets"].GetOutputDataObject(0).GetDataReleased())
+        self.assertTrue(steps["surface"].GetOutputDataObject(0).GetDataReleased())
         # build() alone releases nothing.
         algorithms = Pipeline(path, {"output": os.path.join(TMP, "release_out2")}).build()
         algorithms["smooth"].Update()

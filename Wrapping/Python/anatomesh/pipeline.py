@@ -385,13 +385,14 @@ class Pipeline:
         """Build and execute; write every writer and <Output>. Returns a list of written files.
         An output that feeds one filter and nothing else (no writer, no <Output>) is released once
         that filter has run, so the later stages reuse its memory (the surfaces between the label
-        map and the remeshing are most of the main job's). build() alone keeps every output."""
+        map and the remeshing are most of the main job's), unless that filter runs once per frame
+        of a time series. build() alone keeps every output."""
         algorithms = self.build()
-        self._release_single_use()
         errors = []
         watcher = _Watcher(errors, progress)
         for step in self.steps:
             watcher.watch(step.name, step.algorithm)
+        self._release_single_use()  # after the watcher: its information requests report like the run's
         written = []
         self.written_data = {}
         self.clock = watcher.clock  # each filter's own execution time, and the <Output> files'
@@ -456,9 +457,21 @@ class Pipeline:
         return written
 
     def _release_single_use(self):
-        """VTK's release-data flag on each output port whose one consumer is a filter: the executive
-        frees the data after that filter's execution (and would run the producer again if asked)."""
+        """VTK's release-data flag on each output port whose one consumer is a filter that runs once:
+        the executive frees the data after that filter's execution (and would run the producer again
+        if asked). A filter whose output has time steps runs once per frame and asks for its inputs
+        each time: its inputs are kept."""
+        from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
         by_name = {s.name: s for s in self.steps}
+
+        def per_frame(step):
+            step.algorithm.UpdateInformation()
+            for port in range(step.algorithm.GetNumberOfOutputPorts()):
+                info = step.algorithm.GetOutputInformation(port)
+                if info.Has(sddp.TIME_STEPS()) or info.Has(sddp.TIME_RANGE()):
+                    return True
+            return False
+
         consumers = {}
         for step in self.steps:
             for _, upstream, port, line in step.inputs:
@@ -468,7 +481,7 @@ class Pipeline:
             key = (upstream, self._port_index(by_name[upstream], port, line))
             consumers.setdefault(key, []).append(None)
         for (upstream, index), users in consumers.items():
-            if len(users) == 1 and users[0] is not None and not users[0].proxy.is_writer:
+            if len(users) == 1 and users[0] is not None and not users[0].proxy.is_writer and not per_frame(users[0]):
                 by_name[upstream].algorithm.GetExecutive().SetReleaseDataFlag(index, 1)
 
     def _writer_failure(self, writers, files):
