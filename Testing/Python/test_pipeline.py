@@ -411,29 +411,35 @@ class ProgressLog(unittest.TestCase):
 
 
 class ReleasedData(unittest.TestCase):
+    @staticmethod
+    def pipeline(name, spacing, rest):
+        """A pipeline of the phantom at 'spacing' mm and its label surface, then 'rest'."""
+        return pipeline_file(name, """
+            <AnatomeshPipeline version="1">
+              <Variable name="output" default="x"/>
+              <Filter name="phantom" type="ThoraxPhantomSource">
+                <Property name="Spacing" value="%d %d %d"/>
+              </Filter>
+              <Filter name="surface" type="LabelSurface">
+                <Input from="phantom" port="Labels"/>
+              </Filter>
+            """.rstrip(" ") % (spacing, spacing, spacing) + textwrap.indent(textwrap.dedent(rest).strip(), " " * 14)
+                             + "\n            </AnatomeshPipeline>")
+
     def test_an_output_used_once_is_released_after_its_filter_ran(self):
         # The label map and the raw surface each feed one filter: freed once it has run (their
         # memory goes to the later stages), without running anything twice. What is written,
         # or feeds two steps, stays.
         from anatomesh.pipeline import Pipeline
-        path = pipeline_file("release.xml", """
-            <AnatomeshPipeline version="1">
-              <Variable name="output" default="x"/>
-              <Filter name="phantom" type="ThoraxPhantomSource">
-                <Property name="Spacing" value="6 6 6"/>
-              </Filter>
-              <Filter name="surface" type="LabelSurface">
-                <Input from="phantom" port="Labels"/>
-              </Filter>
-              <Filter name="smooth" type="SurfaceSmoothing">
-                <Input from="surface" port="Surface"/>
-              </Filter>
-              <Filter name="save_ct" type="ImageWriter">
-                <Input from="phantom" port="CT"/>
-                <Property name="FileName" value="${output}/ct.nii.gz"/>
-              </Filter>
-              <Output from="smooth" file="${output}/smooth.vtp"/>
-            </AnatomeshPipeline>""")
+        path = self.pipeline("release.xml", 6, """
+            <Filter name="smooth" type="SurfaceSmoothing">
+              <Input from="surface" port="Surface"/>
+            </Filter>
+            <Filter name="save_ct" type="ImageWriter">
+              <Input from="phantom" port="CT"/>
+              <Property name="FileName" value="${output}/ct.nii.gz"/>
+            </Filter>
+            <Output from="smooth" file="${output}/smooth.vtp"/>""")
         p = Pipeline(path, {"output": os.path.join(TMP, "release_out")})
         p.run()
         steps = {s.name: s.algorithm for s in p.steps}
@@ -450,28 +456,19 @@ class ReleasedData(unittest.TestCase):
         self.assertGreater(smooth.GetNumberOfCells(), 0)
         self.assertGreater(os.path.getsize(os.path.join(TMP, "release_out", "smooth.vtp")), 0)
         # A filter run once per frame (the heart's time series) keeps its input: the mesh is made once.
-        frames = pipeline_file("release_frames.xml", """
-            <AnatomeshPipeline version="1">
-              <Variable name="output" default="x"/>
-              <Filter name="phantom" type="ThoraxPhantomSource">
-                <Property name="Spacing" value="4 4 4"/>
-              </Filter>
-              <Filter name="surface" type="LabelSurface">
-                <Input from="phantom" port="Labels"/>
-              </Filter>
-              <Filter name="tets" type="Tetrahedralize">
-                <Input from="surface"/>
-                <Property name="ImproveQuality" value="0"/>
-              </Filter>
-              <Filter name="heart" type="FitzHughNagumoSolver">
-                <Input from="tets" port="Mesh"/>
-                <Property name="HeartRegions" value="5"/>
-                <Property name="StimulusCenter" value="61 -51.5 -25"/>
-                <Property name="EndTime" value="20"/>
-                <Property name="OutputInterval" value="5"/>
-              </Filter>
-              <Output from="heart" file="${output}/heart.pvd"/>
-            </AnatomeshPipeline>""")
+        frames = self.pipeline("release_frames.xml", 4, """
+            <Filter name="tets" type="Tetrahedralize">
+              <Input from="surface"/>
+              <Property name="ImproveQuality" value="0"/>
+            </Filter>
+            <Filter name="heart" type="FitzHughNagumoSolver">
+              <Input from="tets" port="Mesh"/>
+              <Property name="HeartRegions" value="5"/>
+              <Property name="StimulusCenter" value="61 -51.5 -25"/>
+              <Property name="EndTime" value="20"/>
+              <Property name="OutputInterval" value="5"/>
+            </Filter>
+            <Output from="heart" file="${output}/heart.pvd"/>""")
         p = Pipeline(frames, {"output": os.path.join(TMP, "release_frames_out")})
         p.run()
         steps = {s.name: s.algorithm for s in p.steps}
