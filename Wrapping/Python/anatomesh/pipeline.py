@@ -392,12 +392,12 @@ class Pipeline:
         watcher = _Watcher(errors, progress)
         for step in self.steps:
             watcher.watch(step.name, step.algorithm)
-        self._release_single_use()  # after the watcher: its information requests report like the run's
+        by_name = {s.name: s for s in self.steps}
+        self._release_single_use(by_name)  # after the watcher: its information requests report like the run's
         written = []
         self.written_data = {}
         self.clock = watcher.clock  # each filter's own execution time, and the <Output> files'
         self.clock.seconds.update((s.name, 0.0) for s in self.steps)
-        by_name = {s.name: s for s in self.steps}
         # The writers and the <Output> VTK XML files run on worker threads while the next filters
         # run: a writer's input is updated here, then the writer takes a copy of it to a worker.
         from anatomesh import amConcurrentXMLWriter
@@ -456,13 +456,12 @@ class Pipeline:
         watcher.finish()
         return written
 
-    def _release_single_use(self):
+    def _release_single_use(self, by_name):
         """VTK's release-data flag on each output port whose one consumer is a filter that runs once:
         the executive frees the data after that filter's execution (and would run the producer again
         if asked). A filter whose output has time steps runs once per frame and asks for its inputs
         each time: its inputs are kept."""
         from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
-        by_name = {s.name: s for s in self.steps}
 
         def per_frame(step):
             step.algorithm.UpdateInformation()
