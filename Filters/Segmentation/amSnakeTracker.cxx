@@ -113,6 +113,7 @@ bool amSnakeTracker::Segment(
   this->Abort = abort;
   this->Error.clear();
   this->Elapsed = 0;
+  this->Boxed = 0;
   double tlo = this->P.LowerThreshold, thi = this->P.UpperThreshold;
   if (this->P.AutomaticThresholds)
   {
@@ -259,6 +260,17 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
     pa += 0.3 * pb;
     pb *= 0.7;
   }
+  const Parameters& p = this->P;
+  const int iterations = initial && !fromCoarse ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations;
+  std::function<void(double)> progress;
+  if (this->Progress)
+    progress = [this, pa, pb](double f) { this->Progress(pa + pb * f); };
+  if (initial)
+  {
+    const int box = this->EvolveInBox(lo, hi, *initial, iterations, progress);
+    if (box != BoxTooSmall)
+      return box == BoxDone;
+  }
   FloatImage<3>::Pointer phi;
   if (initial)
   {
@@ -282,17 +294,11 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
   }
   auto feature = NewImage<FloatImage<3>>(rd, this->Spacing);
   std::copy(this->Feature.begin(), this->Feature.end(), feature->GetBufferPointer());
-  const Parameters& p = this->P;
   const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
     p.StopOnStall };
-  std::function<void(double)> progress;
-  if (this->Progress)
-    progress = [this, pa, pb](double f) { this->Progress(pa + pb * f); };
   try
   {
-    auto mask = Evolve<3>(
-      feature, phi, lo, hi, lsp, initial && !fromCoarse ? std::min(200, p.NumberOfIterations) : p.NumberOfIterations,
-      progress, &this->Elapsed);
+    auto mask = Evolve<3>(feature, phi, lo, hi, lsp, iterations, progress, &this->Elapsed);
     std::copy(mask->GetBufferPointer(), mask->GetBufferPointer() + this->InsideMask.size(), this->InsideMask.begin());
   }
   catch (const itk::ExceptionObject& e)

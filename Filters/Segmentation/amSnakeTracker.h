@@ -60,6 +60,9 @@ public:
     // 3-D only: the first evolution runs on the region at twice the voxel size, the full
     // resolution continuing from its contour.
     bool CoarseToFine = true;
+    // 3-D only: the full resolution evolves on the box of its initial contour grown by this many
+    // voxels (EvolveInBox); 6 or fewer: on the whole region.
+    int BoxMargin = 12;
     bool AdaptiveSliceStatistics = false;
     // Polar contours.
     double OutsideThreshold = -30.0, EdgeContrast = 40.0, MaximumRadius = 30.0, MaximumGrowth = 2.0;
@@ -90,15 +93,35 @@ public:
   double Upper() const { return this->High; }
   /// The level-set iterations the last Segment ran, over all its evolutions.
   long long Iterations() const { return this->Elapsed; }
+  /// The full-resolution evolutions the last Segment ran in a box (EvolveInBox), not on the whole
+  /// region.
+  int BoxEvolutions() const { return this->Boxed; }
   std::string Error;
 
 private:
   long long Elapsed = 0;
+  int Boxed = 0;
   bool Run(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb);
   bool RunThreeD(double lo, double hi, const std::vector<unsigned char>* initial, double pa, double pb);
   /// The first 3-D evolution on the region at twice the voxel size (2x2x2 means of the smoothed
   /// intensities), its inside given back on the full grid. False when the level set failed.
   bool RunCoarse(double lo, double hi, std::vector<unsigned char>& inside);
+  /// The full-resolution evolution from 'initial' on the box of its inside grown by BoxMargin
+  /// voxels (amSnakeTrackerBox.cxx): the region spans MaximumDistance around the seeds, mostly
+  /// far from the organ, and each whole-image step of the level set (its speed image, its first
+  /// front, the counts of its inside) then covers the box only. The sparse field reads and moves
+  /// its values next to the front alone, so a front that stays clear of the box's sides evolves
+  /// as on the whole region, voxel for voxel. BoxTooSmall: the box is the region, or the front
+  /// ended within six voxels of a side of the box that is not the region's (the caller evolves on the whole
+  /// region); BoxFailed: the level set failed (Error says why).
+  enum BoxOutcome
+  {
+    BoxDone,
+    BoxTooSmall,
+    BoxFailed
+  };
+  int EvolveInBox(double lo, double hi, const std::vector<unsigned char>& initial, int iterations,
+    const std::function<void(double)>& progress);
   bool RunSlices(double lo, double hi);
   bool RunPolar();
   /// Distance (mm) from voxel (i, j, k) of the region to seed s's centre.

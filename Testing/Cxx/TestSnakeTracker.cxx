@@ -185,3 +185,60 @@ TEST(SnakeTracker, CoarseToFineFindsTheSameOrgan)
   EXPECT_LT(differ, Count(fine) / 50);
   EXPECT_EQ(rod, 6u);
 }
+
+// The full resolution evolved in a box around its initial contour: the same organ voxel for voxel
+// as on the whole region. A ball in a region much larger than itself: the box is kept. The same
+// ball with a rod too thin for the coarse grid along x to the region's far side: the front
+// leaves the coarse contour's box along the rod, and the whole region is evolved instead.
+TEST(SnakeTracker, EvolvesInABoxAsOnTheWholeRegion)
+{
+  const int lo[3] = { 3, 2, 1 }, size[3] = { 96, 64, 64 };
+  const double spacing[3] = { 1, 1, 1 };
+  for (const double rodRadius : { 0.0, 2.0 })
+  {
+    // A ball of radius 10 mm at (30, 32, 32), noisy.
+    std::vector<float> values(static_cast<size_t>(size[0]) * size[1] * size[2]);
+    std::mt19937 random(5);
+    std::normal_distribution<float> noise(0.0f, 20.0f);
+    for (int k = 0; k < size[2]; ++k)
+      for (int j = 0; j < size[1]; ++j)
+        for (int i = 0; i < size[0]; ++i)
+        {
+          const double x = i - 30, y = j - 32, z = k - 32;
+          const bool inside = x * x + y * y + z * z <= 100 || (x > 0 && y * y + z * z <= rodRadius * rodRadius);
+          values[(static_cast<size_t>(k) * size[1] + j) * size[0] + i] = (inside ? 200.0f : 0.0f) + noise(random);
+        }
+    auto segment = [&](int margin, int& boxed) {
+      amSnakeTracker::Parameters p;
+      p.BoxMargin = margin;
+      amSnakeTracker tracker(p, spacing);
+      tracker.SetRegion(lo, size, values);
+      tracker.MeasureSeeds({ { lo[0] + 30.0, lo[1] + 32.0, lo[2] + 32.0 } });
+      EXPECT_TRUE(tracker.Segment(300.0, nullptr, nullptr)) << margin << tracker.Error;
+      boxed = tracker.BoxEvolutions();
+      return tracker.Inside();
+    };
+    // Margin 0: the whole region; 12: the default; 7: a box one voxel wider than the guard.
+    int wholeBoxed, boxBoxed, tightBoxed;
+    const std::vector<unsigned char> whole = segment(0, wholeBoxed), box = segment(12, boxBoxed),
+                                     tight = segment(7, tightBoxed);
+    size_t rod = 0;
+    for (int i = 88; i < 94; ++i) // the rod's far end
+      rod += box[(32 * 64 + 32) * 96 + i];
+    std::printf("rod radius %.0f: %zu voxels inside; evolutions in a box: %d (margin 12), %d (margin 7); rod end %zu\n",
+      rodRadius, Count(whole), boxBoxed, tightBoxed, rod);
+    EXPECT_EQ(wholeBoxed, 0);
+    EXPECT_EQ(box, whole) << rodRadius;
+    EXPECT_EQ(tight, whole) << rodRadius;
+    if (rodRadius == 0)
+    {
+      EXPECT_GE(boxBoxed, 1);
+      EXPECT_NEAR(static_cast<double>(Count(box)) / (4.0 / 3.0 * M_PI * 1000.0), 1.0, 0.12);
+    }
+    else
+    {
+      EXPECT_EQ(boxBoxed, 0);
+      EXPECT_EQ(rod, 6u);
+    }
+  }
+}
