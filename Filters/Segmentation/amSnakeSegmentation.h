@@ -22,7 +22,9 @@
  *    iterations that leave the number of voxels inside unchanged (on a noisy scan the front
  *    settles into a two-state cycle whose RMS change never falls below the bound); in 3-D with
  *    CoarseToFine, the contour first evolves on the image at twice the voxel size, and the full
- *    resolution continues from there;
+ *    resolution continues from there; in 3-D a full-resolution evolution runs on the box of its
+ *    starting contour grown by 12 voxels (the same front as on the whole region, which it takes
+ *    instead when the front ends within 6 voxels of the box's side);
  * 4. with RefineToHalfContrast, the intensity of a 2-voxel shell outside the contour (beyond
  *    twice SmoothingSigma) gives the
  *    surroundings' level; the threshold facing it moves half-way (the partial-volume boundary)
