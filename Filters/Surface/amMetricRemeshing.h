@@ -18,17 +18,16 @@
  * and no new triangle crossing or folding onto a live one (CGAL's exact predicates). The output
  * is therefore as free of self-intersections as the input, which a tetrahedral mesher needs.
  *
- * Then the two-sided Hausdorff distance to the input is measured per interface (amSurfaceDistance's
- * sampling), and wherever it exceeds Tolerance the offending triangle is bisected towards the input
- * (a junction edge at the input curve vertex halfway along the curve), or the far point inserted;
- * an insertion refused because something is in the way refines that instead, up to 30 rounds.
- * With PreserveVolumes (on by default), each region then gets back the volume it has in the input: the
- * vertices inside each interface move along their normals by one offset per interface, the
+ * With PreserveVolumes (on by default), each region then gets back the volume it has in the input:
+ * the vertices inside each interface move along their normals by one offset per interface, the
  * smallest that restores every region's volume to first order (label 0, the outside, takes up the
- * rest), under the same guards, three rounds; where the measure then finds a triangle beyond the
- * tolerance its vertices move back, and the step is undone if the distance would still end above
- * it. Last, triangles with an angle under 10 degrees that the insertions left are flipped or
- * collapsed away under the same guards, kept only if the bound and the angles end no worse.
+ * rest), under the same guards, three rounds. Then the two-sided Hausdorff distance to the input is
+ * measured per interface (amSurfaceDistance's sampling), and wherever it exceeds Tolerance the
+ * offending triangle is bisected towards the input (a junction edge at the input curve vertex
+ * halfway along the curve), or the far point inserted; an insertion refused because something is
+ * in the way refines that instead, up to 30 rounds. Last, triangles with an angle under 10 degrees
+ * that the insertions left are flipped or collapsed away under the same guards, kept only if the
+ * bound and the angles end no worse.
  *
  * The achieved distance is in field data "Hausdorff" (and "HausdorffUpperBound", with the
  * sampling gap); per triangle in cell data "HausdorffDistance" (the largest distance measured on
@@ -80,10 +79,10 @@ public:
   ///@}
 
   ///@{
-  /// Give each region the volume it has in the input (default on): at the end, the vertices of
-  /// each interface move along their normals by one offset per interface (the smallest that
-  /// restores every region's volume, junction curves kept, within the tolerance and without
-  /// crossings or passing through another part of the surface). A coarser triangulation of a
+  /// Give each region the volume it has in the input (default on): before the bound is
+  /// enforced, the vertices of each interface move along their normals by one offset per
+  /// interface (the smallest that restores every region's volume, junction curves kept, within
+  /// the tolerance and without crossings or passing through another part of the surface). A coarser triangulation of a
   /// convex part lies inside it: without this, a thin part (a rib) loses several per cent of its
   /// volume. Off keeps the surface the remeshing left (a few seconds less).
   vtkSetMacro(PreserveVolumes, vtkTypeBool);

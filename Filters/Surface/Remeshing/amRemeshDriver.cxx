@@ -29,6 +29,11 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
     report(0.05 + 0.75 * (it + 1) / iterations);
   }
   this->FlipPass();
+  // The regions' volumes given back (amRemeshVolumes) before the bound is enforced: the guards
+  // keep each moved star near the input, and the measure that follows sees the moved surface
+  // once, finding and refining whatever still lies beyond the tolerance.
+  if (this->KeepVolumes)
+    this->PreserveVolumes(this->InputVolumes, 3);
   Result result;
   double& h = result.Hausdorff;
   double& upper = result.UpperBound;
@@ -36,10 +41,6 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
   h = this->Enforce(upper, inserted);
   bool measured = true; // the last Measure saw the surface as it is (its per-triangle distances)
   report(0.85);
-  // The regions' volumes given back (amRemeshVolumes), before the cleanups below; either way the
-  // per-triangle distances stay those of the surface as it is.
-  if (this->KeepVolumes)
-    this->KeepInputVolumes(h, upper);
   // Triangles with small angles that the insertions left (no tetrahedron on them can be good):
   // removed where a flip or collapse allows it (junction vertices closing the strips of an
   // interface that narrows to nothing between two curves too), then the bound enforced again.

@@ -130,8 +130,9 @@ public:
   /// The bound enforced: measure, insert where it is exceeded, measure again (at most 30 rounds).
   double Enforce(double& upper, long long& inserted);
 
-  /// The volumes of the input's regions (Setup), given back in Run once the bound is enforced,
-  /// when KeepVolumes.
+  /// The volumes of the input's regions (Setup), given back in Run before the bound is enforced,
+  /// when KeepVolumes (a coarser triangulation of a convex part lies inside it: the chords of a
+  /// thin rib take several per cent of its volume).
   std::map<int, double> InputVolumes;
   bool KeepVolumes = false;
   /// The volume of each region of the surface as it is.
@@ -139,9 +140,6 @@ public:
   /// Moves interface vertices along their normals towards each region's target volume, within
   /// the guards; returns the number of vertices moved.
   int PreserveVolumes(const std::map<int, double>& target, int rounds);
-  /// PreserveVolumes towards InputVolumes, kept only if the distance ends within max(h, Eps);
-  /// then h and upper are the new distance. Returns whether the surface changed.
-  bool KeepInputVolumes(double& h, double& upper);
 
   /// The state the operations change, for an undo: the input, the bins and the measure's cache
   /// are not copied (the input never changes; Restore rebuilds the bins, and the measure's cache
