@@ -30,6 +30,31 @@ struct Parameters
   bool StopOnStall = true; // see Evolve
 };
 
+/// The level-set weights and stops of a tracker's parameters (amSnakeTracker::Parameters).
+template<typename TrackerParameters>
+Parameters LevelSetParameters(const TrackerParameters& p)
+{
+  return { p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError, p.StopOnStall };
+}
+
+/// A 3-D ITK image of the given size and spacing, origin 0.
+template<typename Image>
+typename Image::Pointer NewImage(const int size[3], const double spacing[3])
+{
+  auto image = Image::New();
+  typename Image::RegionType region;
+  typename Image::SizeType s = { { static_cast<itk::SizeValueType>(size[0]), static_cast<itk::SizeValueType>(size[1]),
+    static_cast<itk::SizeValueType>(size[2]) } };
+  region.SetSize(s);
+  image->SetRegions(region);
+  typename Image::SpacingType sp;
+  for (int a = 0; a < 3; ++a)
+    sp[a] = spacing[a];
+  image->SetSpacing(sp);
+  image->Allocate();
+  return image;
+}
+
 /// Iterations between two counts of the inside: the evolution stops when two counts in a row
 /// are equal. Even: a front cycling between two states is compared with itself, and stops in the
 /// state an even iteration limit would have ended in.
@@ -152,6 +177,15 @@ typename FloatImage<D>::Pointer SignedDistanceNear(MaskImage<D>* mask, int margi
   auto dist = SignedDistance<D>(sub);
   itk::ImageAlgorithm::Copy(dist.GetPointer(), out.GetPointer(), box, box);
   return out;
+}
+
+/// The level set's starting function from a contour's inside: the signed distance next to the
+/// contour (four voxels), five voxels beyond (the level set reads it only next to the contour).
+inline FloatImage<3>::Pointer PhiFromMask(MaskImage<3>* mask)
+{
+  const auto& sp = mask->GetSpacing();
+  const double voxel = std::max(sp[0], std::max(sp[1], sp[2]));
+  return SignedDistanceNear<3>(mask, 4, static_cast<float>(5 * voxel));
 }
 
 template<unsigned D>

@@ -10,27 +10,6 @@
 
 using namespace amSnakeLevelSet;
 
-namespace
-{
-/// An ITK image of the region's size and spacing.
-template<typename Image>
-typename Image::Pointer NewImage(const int size[3], const double spacing[3])
-{
-  auto image = Image::New();
-  typename Image::RegionType region;
-  typename Image::SizeType s = { { static_cast<itk::SizeValueType>(size[0]), static_cast<itk::SizeValueType>(size[1]),
-    static_cast<itk::SizeValueType>(size[2]) } };
-  region.SetSize(s);
-  image->SetRegions(region);
-  typename Image::SpacingType sp;
-  for (int a = 0; a < 3; ++a)
-    sp[a] = spacing[a];
-  image->SetSpacing(sp);
-  image->Allocate();
-  return image;
-}
-}
-
 amSnakeTracker::amSnakeTracker(const Parameters& parameters, const double spacing[3])
   : P(parameters)
 {
@@ -218,8 +197,7 @@ bool amSnakeTracker::RunCoarse(double lo, double hi, std::vector<unsigned char>&
         }
   });
   const Parameters& p = this->P;
-  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
-    p.StopOnStall };
+  const amSnakeLevelSet::Parameters lsp = LevelSetParameters(p);
   MaskImage<3>::Pointer mask;
   try
   {
@@ -276,9 +254,7 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
   {
     auto mask = NewImage<MaskImage<3>>(rd, this->Spacing);
     std::copy(initial->begin(), initial->end(), mask->GetBufferPointer());
-    // The level set reads the distance only next to the contour.
-    const double voxel = std::max(this->Spacing[0], std::max(this->Spacing[1], this->Spacing[2]));
-    phi = SignedDistanceNear<3>(mask, 4, static_cast<float>(5 * voxel));
+    phi = PhiFromMask(mask);
   }
   else
   {
@@ -294,8 +270,7 @@ bool amSnakeTracker::RunThreeD(double lo, double hi, const std::vector<unsigned 
   }
   auto feature = NewImage<FloatImage<3>>(rd, this->Spacing);
   std::copy(this->Feature.begin(), this->Feature.end(), feature->GetBufferPointer());
-  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
-    p.StopOnStall };
+  const amSnakeLevelSet::Parameters lsp = LevelSetParameters(p);
   try
   {
     auto mask = Evolve<3>(feature, phi, lo, hi, lsp, iterations, progress, &this->Elapsed);

@@ -112,8 +112,8 @@ private:
   /// front, the counts of its inside) then covers the box only. The sparse field reads and moves
   /// its values next to the front alone, so a front that stays clear of the box's sides evolves
   /// as on the whole region, voxel for voxel. BoxTooSmall: the box is the region, or the front
-  /// ended within six voxels of a side of the box that is not the region's (the caller evolves on the whole
-  /// region); BoxFailed: the level set failed (Error says why).
+  /// ended within six voxels of a side of the box that is not the region's (the caller evolves
+  /// on the whole region); BoxFailed: the level set failed (Error says why).
   enum BoxOutcome
   {
     BoxDone,

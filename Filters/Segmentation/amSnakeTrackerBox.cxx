@@ -93,35 +93,16 @@ int amSnakeTracker::EvolveInBox(double lo, double hi, const std::vector<unsigned
   if (n == this->InsideMask.size())
     return BoxTooSmall; // the box is the whole region
   const int origin[3] = { 0, 0, 0 };
-  auto feature = FloatImage<3>::New();
-  auto mask = MaskImage<3>::New();
-  {
-    FloatImage<3>::RegionType region;
-    FloatImage<3>::SizeType s = { { static_cast<itk::SizeValueType>(bsize[0]),
-      static_cast<itk::SizeValueType>(bsize[1]), static_cast<itk::SizeValueType>(bsize[2]) } };
-    region.SetSize(s);
-    FloatImage<3>::SpacingType sp;
-    for (int a = 0; a < 3; ++a)
-      sp[a] = this->Spacing[a];
-    feature->SetRegions(region);
-    feature->SetSpacing(sp);
-    feature->Allocate();
-    mask->SetRegions(region);
-    mask->SetSpacing(sp);
-    mask->Allocate();
-  }
+  auto feature = NewImage<FloatImage<3>>(bsize, this->Spacing);
+  auto mask = NewImage<MaskImage<3>>(bsize, this->Spacing);
   CopyBox(this->Feature.data(), this->Size, blo, feature->GetBufferPointer(), bsize, origin, bsize);
   CopyBox(initial.data(), this->Size, blo, mask->GetBufferPointer(), bsize, origin, bsize);
-  const double voxel = std::max(this->Spacing[0], std::max(this->Spacing[1], this->Spacing[2]));
-  auto phi = SignedDistanceNear<3>(mask, 4, static_cast<float>(5 * voxel));
-  const Parameters& p = this->P;
-  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
-    p.StopOnStall };
+  auto phi = PhiFromMask(mask);
   MaskImage<3>::Pointer inside;
   try
   {
     long long elapsed = 0;
-    inside = Evolve<3>(feature, phi, lo, hi, lsp, iterations, progress, &elapsed);
+    inside = Evolve<3>(feature, phi, lo, hi, LevelSetParameters(this->P), iterations, progress, &elapsed);
     // Counted only when kept: a box given up is evolved again on the whole region.
     int elo[3], esize[3];
     if (InsideBox(inside->GetBufferPointer(), bsize, 0, elo, esize))

@@ -17,8 +17,7 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
   const int* rd = this->Size;
   const float* fv = this->Feature.data();
   const Parameters& p = this->P;
-  const amSnakeLevelSet::Parameters lsp{ p.PropagationScaling, p.CurvatureScaling, p.EdgeWeight, p.MaximumRMSError,
-    p.StopOnStall };
+  const amSnakeLevelSet::Parameters lsp = amSnakeLevelSet::LevelSetParameters(p);
   const int ax = p.SliceAxis, u = ax == 0 ? 1 : 0, v = ax == 2 ? 1 : 2;
   const int nu = rd[u], nv = rd[v], ns = rd[ax];
   const double pixelArea = this->Spacing[u] * this->Spacing[v];

@@ -82,9 +82,10 @@ public:
   /// Give each region the volume it has in the input (default on): before the bound is
   /// enforced, the vertices of each interface move along their normals by one offset per
   /// interface (the smallest that restores every region's volume, junction curves kept, within
-  /// the tolerance and without crossings or passing through another part of the surface). A coarser triangulation of a
-  /// convex part lies inside it: without this, a thin part (a rib) loses several per cent of its
-  /// volume. Off keeps the surface the remeshing left (a few seconds less).
+  /// the tolerance and without crossings or passing through another part of the surface). A
+  /// coarser triangulation of a convex part lies inside it: without this, a thin part (a rib)
+  /// loses several per cent of its volume. Off keeps the surface the remeshing left (a few
+  /// seconds less).
   vtkSetMacro(PreserveVolumes, vtkTypeBool);
   vtkGetMacro(PreserveVolumes, vtkTypeBool);
   vtkBooleanMacro(PreserveVolumes, vtkTypeBool);
