@@ -554,6 +554,80 @@ TEST(RemeshUndo, RestoreGivesTheSavedSurface)
   EXPECT_EQ(r->Collapses(), 0);
 }
 
+TEST(RemeshCompact, DropsTheDeadAndKeepsTheOrder)
+{
+  // A bumpy patch collapsed once, then compacted: the live vertices and triangles renumbered in
+  // their order, stars and clusters following them, the bins exact, and what follows (flips,
+  // relaxation, the bound enforced) the same surface as on a copy that was not compacted.
+  const int n = 16;
+  amSurfaceMesh m = FlatGrid(n, 0.5, 1);
+  for (auto& p : m.Points)
+    p[2] = std::exp(-((p[0] - 4) * (p[0] - 4) + (p[1] - 4) * (p[1] - 4)) / 4.0);
+  m.BuildTopology();
+  auto a = Start(m, 0.05, 2.0), b = Start(m, 0.05, 2.0);
+  ASSERT_GT(a->CollapsePass(), 0);
+  ASSERT_EQ(b->CollapsePass(), a->Collapses());
+  std::vector<std::array<int, 3>> corners; // live triangles as old vertex ids
+  std::vector<int> liveVertices;
+  for (size_t v = 0; v < a->Mesh.P.size(); ++v)
+    if (a->Mesh.VAlive[v])
+      liveVertices.push_back(static_cast<int>(v));
+  for (const Triangle& t : a->Mesh.T)
+    if (t.Alive)
+      corners.push_back({ t.V[0], t.V[1], t.V[2] });
+  ASSERT_LT(liveVertices.size(), a->Mesh.P.size());
+  const Surface before = a->Mesh;
+  a->Compact();
+  const Surface& s = a->Mesh;
+  ASSERT_EQ(s.P.size(), liveVertices.size());
+  ASSERT_EQ(s.T.size(), corners.size());
+  for (size_t v = 0; v < s.P.size(); ++v)
+  {
+    const int old = liveVertices[v];
+    EXPECT_EQ(s.P[v], before.P[old]);
+    EXPECT_EQ(s.Kind[v], before.Kind[old]);
+    EXPECT_TRUE(s.VAlive[v]);
+    ASSERT_EQ(s.Cluster[v].size(), before.Cluster[old].size());
+    for (size_t i = 0; i < s.Cluster[v].size(); ++i)
+    {
+      EXPECT_EQ(s.Cluster[v][i].Point, before.Cluster[old][i].Point);
+      const int hint = before.Cluster[old][i].Hint;
+      if (hint >= 0 && before.T[hint].Alive)
+        EXPECT_EQ(s.T[s.Cluster[v][i].Hint].V[0], std::lower_bound(liveVertices.begin(), liveVertices.end(),
+                                                      before.T[hint].V[0]) - liveVertices.begin());
+      else
+        EXPECT_EQ(s.Cluster[v][i].Hint, -1);
+    }
+    ASSERT_EQ(s.VT[v].size(), before.VT[old].size());
+    for (int t : s.VT[v])
+      EXPECT_TRUE(s.T[t].V[0] == static_cast<int>(v) || s.T[t].V[1] == static_cast<int>(v) ||
+        s.T[t].V[2] == static_cast<int>(v));
+  }
+  for (size_t t = 0; t < s.T.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(liveVertices[s.T[t].V[k]], corners[t][k]);
+  ExpectOrientedManifold(s);
+  ExpectExactBins(*a);
+  // The rest of a run on both: the same surface, live vertex for live vertex.
+  for (Remesher* r : { a.get(), b.get() })
+  {
+    r->FlipPass();
+    r->RelaxPass();
+    double upper;
+    long long inserted = 0;
+    r->Enforce(upper, inserted);
+  }
+  std::vector<Vec3> pa, pb;
+  for (size_t v = 0; v < a->Mesh.P.size(); ++v)
+    if (a->Mesh.VAlive[v])
+      pa.push_back(a->Mesh.P[v]);
+  for (size_t v = 0; v < b->Mesh.P.size(); ++v)
+    if (b->Mesh.VAlive[v])
+      pb.push_back(b->Mesh.P[v]);
+  EXPECT_EQ(pa, pb);
+  EXPECT_EQ(LiveTriangles(a->Mesh), LiveTriangles(b->Mesh));
+}
+
 TEST(Remesher, RunMeetsTheBoundOnABumpyPatch)
 {
   // A grid of 0.5 mm squares over a smooth bump 2 mm high: remeshed to 2 mm edges within 0.05 mm.

@@ -143,6 +143,12 @@ void Bins::Rebuild()
     std::nth_element(along.begin(), along.begin() + along.size() / 2, along.end());
     this->SplitIndex = static_cast<long long>(std::floor(along[along.size() / 2] / this->Size));
   }
+  this->Rebin();
+}
+
+void Bins::Rebin()
+{
+  const auto& S = this->S;
   // Emptied and filled on two threads, one for the bins before the split plane and on it, one
   // for those after it (each bin lists its triangles in their order, as Add would one by one).
   this->BinnedIn.assign(S.T.size(), { 0, 0, 0, -1, -1, -1 });

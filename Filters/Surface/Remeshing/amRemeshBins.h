@@ -108,6 +108,9 @@ public:
   /// Every live triangle binned anew, at the size that fits the triangles now, with the split
   /// plane across the longest side of the bounding box at the median vertex.
   void Rebuild();
+  /// Every live triangle binned anew at the present size and split plane (the triangles were
+  /// renumbered: the zones stay where they were).
+  void Rebin();
   /// Rebuild where the bins no longer fit the triangles: their size off by more than a quarter.
   /// (The bins stay exact without it, and the split plane stays where it was.)
   void RebuildIfStale();

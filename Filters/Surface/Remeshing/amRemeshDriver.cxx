@@ -22,6 +22,9 @@ Remesher::Result Remesher::Run(int iterations, const std::function<void(double)>
       if (this->CollapsePass() == 0)
         break;
     }
+    // Most slots are dead after the collapses: the passes, measures and undo copies that follow
+    // read only the live ones.
+    this->Compact();
     for (int pass = 0; pass < 3; ++pass)
       if (this->FlipPass(pass > 0) == 0)
         break;

@@ -39,6 +39,13 @@ public:
   const std::vector<double>& TriangleDistances() const { return this->Local; }
   /// Back to the distances of an earlier state (the remesher restoring a surface it saved).
   void RestoreTriangleDistances(std::vector<double>&& local) { this->Local = std::move(local); }
+  /// Forgets what the last Measure saw (the surface's vertices and slots were renumbered): the
+  /// next Measure measures everything.
+  void Forget()
+  {
+    this->Cache = MeasureCache();
+    this->Local.clear();
+  }
 
 private:
   std::vector<double> Local;

@@ -152,6 +152,10 @@ public:
   Snapshot Save() const;
   void Restore(Snapshot&& snapshot);
 
+  /// The dead vertices and triangle slots dropped, the live ones renumbered in their order (the
+  /// bins filled again at the same size and split plane). After the collapse passes most slots
+  /// are dead: every later pass, measure and undo copy would read them.
+  void Compact();
   /// Triangle t removed (it dies; its slot stays).
   void Detach(int t);
   /// A new triangle (a, b, c) with the sheet and labels of 'like'; returns its id.
