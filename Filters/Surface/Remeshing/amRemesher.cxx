@@ -1,5 +1,7 @@
 #include "amRemesher.h"
 
+#include "vtkSMPTools.h"
+
 #include <map>
 #include <utility>
 
@@ -19,38 +21,47 @@ void Remesher::Setup(const amSurfaceMesh& mesh, const std::vector<Mat3>& metric,
   this->InputVolumes = amRemesh::RegionVolumes(mesh);
   const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
   S.P.resize(static_cast<size_t>(np));
-  for (vtkIdType v = 0; v < np; ++v)
-    S.P[v] = Vec3(mesh.Points[v].data());
   S.M = metric;
   S.Kind = mesh.Kind;
-  // Each vertex stands for itself; the interface is set below for surface vertices.
-  S.Cluster.resize(static_cast<size_t>(np));
-  for (vtkIdType v = 0; v < np; ++v)
-    S.Cluster[v].assign(1, { static_cast<int>(v), -1, -1 });
   S.VAlive.assign(static_cast<size_t>(np), 1);
-  S.VT.resize(static_cast<size_t>(np));
-  // One sheet per interface: per pair of labels (unordered).
+  // One sheet per interface: per pair of labels (unordered), numbered in the order they first
+  // appear.
   std::map<std::pair<int, int>, int> sheetIds;
   const bool labelled = !mesh.Labels.empty();
-  S.T.reserve(static_cast<size_t>(nt));
+  S.T.resize(static_cast<size_t>(nt));
+  std::pair<int, int> last(1, 0); // no pair: the lookup's first key
+  int lastSheet = -1;
   for (vtkIdType t = 0; t < nt; ++t)
   {
-    Triangle tri;
+    Triangle& tri = S.T[t];
     for (int k = 0; k < 3; ++k)
       tri.V[k] = static_cast<int>(mesh.Triangles[t][k]);
     tri.Labels[0] = labelled ? mesh.Labels[t][0] : 0;
     tri.Labels[1] = labelled ? mesh.Labels[t][1] : 0;
     const std::pair<int, int> key(std::min(tri.Labels[0], tri.Labels[1]), std::max(tri.Labels[0], tri.Labels[1]));
-    auto it = sheetIds.emplace(key, static_cast<int>(sheetIds.size())).first;
-    tri.Sheet = it->second;
+    if (key != last)
+    {
+      last = key;
+      lastSheet = sheetIds.emplace(key, static_cast<int>(sheetIds.size())).first->second;
+    }
+    tri.Sheet = lastSheet;
     tri.Alive = true;
-    S.T.push_back(tri);
-    for (int k = 0; k < 3; ++k)
-      S.VT[tri.V[k]].push_back(static_cast<int>(t));
   }
+  // Each vertex's star (its triangles in their order, as the input's topology lists them) and
+  // its cluster: itself, on its interface when it is a surface vertex.
+  S.VT.resize(static_cast<size_t>(np));
+  S.Cluster.resize(static_cast<size_t>(np));
+  vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+    for (vtkIdType v = v0; v < v1; ++v)
+    {
+      const vtkIdType r0 = mesh.VertexTriangleStart[v], r1 = mesh.VertexTriangleStart[v + 1];
+      S.VT[v].assign(mesh.VertexTriangles.begin() + r0, mesh.VertexTriangles.begin() + r1);
+      const int sheet = S.Kind[v] == amSurfaceMesh::Surface && r1 > r0 ? S.T[S.VT[v][0]].Sheet : -1;
+      S.Cluster[v].assign(1, { static_cast<int>(v), sheet, -1 });
+    }
+  });
   for (vtkIdType v = 0; v < np; ++v)
-    if (S.Kind[v] == amSurfaceMesh::Surface && !S.VT[v].empty())
-      S.Cluster[v][0].Sheet = S.T[S.VT[v][0]].Sheet;
+    S.P[v] = Vec3(mesh.Points[v].data());
   this->In.Build(mesh, S.T, static_cast<int>(sheetIds.size()));
   this->Curves.Build(mesh, S);
 }
