@@ -90,13 +90,13 @@ int amMetricRemeshing::RequestData(
   }
 
   amRemesh::Remesher r;
-  r.Setup(mesh, tensors, this->Tolerance);
+  r.Setup(mesh, std::move(tensors), this->Tolerance);
   r.KeepVolumes = this->PreserveVolumes != 0;
-  // The remesher keeps what it needs of the input (its points, interfaces and curves): the
-  // input's topology and the tensors (a quarter of the memory on a many-label input) go now.
+  // The remesher keeps what it needs of the input (its points, interfaces and curves; the
+  // tensors are moved into it): the input's topology (a quarter of the memory on a many-label
+  // input) goes now.
   const bool labelled = !mesh.Labels.empty();
   mesh = amSurfaceMesh();
-  std::vector<Mat3>().swap(tensors);
   this->UpdateProgress(0.05);
   const amRemesh::Remesher::Result result =
     r.Run(this->NumberOfIterations, [this](double fraction) { this->UpdateProgress(fraction); });

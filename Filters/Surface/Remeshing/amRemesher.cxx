@@ -14,14 +14,14 @@ Remesher::Remesher()
 {
 }
 
-void Remesher::Setup(const amSurfaceMesh& mesh, const std::vector<Mat3>& metric, double eps)
+void Remesher::Setup(const amSurfaceMesh& mesh, std::vector<Mat3> metric, double eps)
 {
   Surface& S = this->Mesh;
   this->In.Eps = eps;
   this->InputVolumes = amRemesh::RegionVolumes(mesh);
   const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
   S.P.resize(static_cast<size_t>(np));
-  S.M = metric;
+  S.M = std::move(metric);
   S.Kind = mesh.Kind;
   S.VAlive.assign(static_cast<size_t>(np), 1);
   // One sheet per interface: per pair of labels (unordered), numbered in the order they first

@@ -55,7 +55,7 @@ public:
 
   /// Starts from the input surface (its topology built; labels give the interfaces, none: one
   /// interface) with one metric tensor per vertex, and the tolerance eps (mm).
-  void Setup(const amSurfaceMesh& mesh, const std::vector<Mat3>& metric, double eps);
+  void Setup(const amSurfaceMesh& mesh, std::vector<Mat3> metric, double eps);
 
   struct Result
   {
