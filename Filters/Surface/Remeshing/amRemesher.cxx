@@ -21,6 +21,8 @@ void Remesher::Setup(const amSurfaceMesh& mesh, std::vector<Mat3> metric, double
   this->InputVolumes = amRemesh::RegionVolumes(mesh);
   const vtkIdType np = mesh.NumberOfPoints(), nt = mesh.NumberOfTriangles();
   S.P.resize(static_cast<size_t>(np));
+  for (vtkIdType v = 0; v < np; ++v)
+    S.P[v] = Vec3(mesh.Points[v].data());
   S.M = std::move(metric);
   S.Kind = mesh.Kind;
   S.VAlive.assign(static_cast<size_t>(np), 1);
@@ -60,8 +62,6 @@ void Remesher::Setup(const amSurfaceMesh& mesh, std::vector<Mat3> metric, double
       S.Cluster[v].assign(1, { static_cast<int>(v), sheet, -1 });
     }
   });
-  for (vtkIdType v = 0; v < np; ++v)
-    S.P[v] = Vec3(mesh.Points[v].data());
   this->In.Build(mesh, S.T, static_cast<int>(sheetIds.size()));
   this->Curves.Build(mesh, S);
 }
