@@ -2,9 +2,12 @@
 
 #include "amSparseMatrix.h"
 
+#include "vtkSMPTools.h"
+
 #include <cholmod.h>
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace
@@ -49,14 +52,42 @@ private:
 };
 }
 
+/// One solving thread's CHOLMOD state: a Common of its own (CHOLMOD's calls share nothing else
+/// but the read-only factor) and its right-hand sides, solutions and workspaces, kept between
+/// solves.
+struct amSparseCholesky::Worker
+{
+  cholmod_common Common;
+  cholmod_dense* B = nullptr;
+  cholmod_dense* X = nullptr;
+  cholmod_dense* Y = nullptr;
+  cholmod_dense* E = nullptr;
+
+  Worker()
+  {
+    cholmod_l_start(&this->Common);
+    this->Common.print = 0;
+    this->Common.error_handler = nullptr;
+  }
+  ~Worker()
+  {
+    this->Clear();
+    cholmod_l_finish(&this->Common);
+  }
+  Worker(const Worker&) = delete;
+  Worker& operator=(const Worker&) = delete;
+  void Clear()
+  {
+    for (cholmod_dense** d : { &this->B, &this->X, &this->Y, &this->E })
+      cholmod_l_free_dense(d, &this->Common);
+  }
+};
+
 struct amSparseCholesky::Internal
 {
   cholmod_common Common;
   cholmod_factor* L = nullptr;
-  cholmod_dense* B = nullptr; // right-hand side on the free nodes
-  cholmod_dense* X = nullptr; // solution and CHOLMOD's workspaces, kept between solves
-  cholmod_dense* Y = nullptr;
-  cholmod_dense* E = nullptr;
+  std::vector<std::unique_ptr<Worker>> Workers;
 
   Internal()
   {
@@ -73,8 +104,7 @@ struct amSparseCholesky::Internal
   void Clear()
   {
     cholmod_l_free_factor(&this->L, &this->Common);
-    for (cholmod_dense** d : { &this->B, &this->X, &this->Y, &this->E })
-      cholmod_l_free_dense(d, &this->Common);
+    this->Workers.clear();
   }
 };
 
@@ -181,13 +211,6 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
     in.Clear();
     return false;
   }
-  in.B = cholmod_l_zeros(m, 1, CHOLMOD_REAL, c);
-  if (!in.B)
-  {
-    this->Message = "out of memory for the right-hand side";
-    in.Clear();
-    return false;
-  }
   this->NonZeros = c->lnz;
   this->Flops = c->fl;
   this->Supernodal = in.L->is_super != 0;
@@ -201,21 +224,44 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
 bool amSparseCholesky::Solve(const double* b, double* x, int count)
 {
   Internal& in = *this->Impl;
+  if (count < 1)
+    return true;
+  // The columns in fixed shares, one per worker, at least two columns each (one column would take
+  // BLAS's vector products instead of its matrix products). The shares depend on SolveThreads and
+  // count only, never on the cores that run them: the same bytes on any machine. (A share's width
+  // changes how BLAS blocks the columns, so another SolveThreads may round the last bits apart.)
+  const int shares = std::max(1, std::min(this->SolveThreads, count / 2));
+  while (static_cast<int>(in.Workers.size()) < shares)
+    in.Workers.push_back(std::unique_ptr<Worker>(new Worker));
+  std::vector<char> ok(static_cast<size_t>(shares), 0);
+  FixedBlasThreads blas(this->SolveBlasThreads);
+  vtkSMPTools::For(0, shares, 1, [&](vtkIdType s0, vtkIdType s1) {
+    for (vtkIdType s = s0; s < s1; ++s)
+    {
+      const int first = static_cast<int>(s * count / shares), last = static_cast<int>((s + 1) * count / shares);
+      ok[s] = this->SolveColumns(*in.Workers[s], b, x, first, last - first);
+    }
+  });
+  return std::all_of(ok.begin(), ok.end(), [](char k) { return k != 0; });
+}
+
+bool amSparseCholesky::SolveColumns(Worker& w, const double* b, double* x, int first, int count)
+{
   const amSparseMatrix& A = *this->A;
   const vtkIdType n = A.Size();
   const vtkIdType m = static_cast<vtkIdType>(this->FreeNodes.size());
-  if (static_cast<int>(in.B->ncol) != count)
+  if (!w.B || static_cast<int>(w.B->ncol) != count)
   {
-    cholmod_l_free_dense(&in.B, &in.Common);
-    in.B = cholmod_l_zeros(m, count, CHOLMOD_REAL, &in.Common);
-    if (!in.B)
+    cholmod_l_free_dense(&w.B, &w.Common);
+    w.B = cholmod_l_zeros(m, count, CHOLMOD_REAL, &w.Common);
+    if (!w.B)
       return false;
   }
-  auto* rhs = static_cast<double*>(in.B->x);
+  auto* rhs = static_cast<double*>(w.B->x);
   for (int col = 0; col < count; ++col)
   {
-    const double* bc = b ? b + col * n : nullptr;
-    const double* xc = x + col * n;
+    const double* bc = b ? b + (first + col) * n : nullptr;
+    const double* xc = x + (first + col) * n;
     double* rc = rhs + col * m;
     for (vtkIdType r = 0; r < m; ++r)
     {
@@ -227,12 +273,11 @@ bool amSparseCholesky::Solve(const double* b, double* x, int count)
       rc[r] = s;
     }
   }
-  FixedBlasThreads blas(this->SolveBlasThreads);
-  if (!cholmod_l_solve2(CHOLMOD_A, in.L, in.B, nullptr, &in.X, nullptr, &in.Y, &in.E, &in.Common))
+  if (!cholmod_l_solve2(CHOLMOD_A, this->Impl->L, w.B, nullptr, &w.X, nullptr, &w.Y, &w.E, &w.Common))
     return false;
-  const auto* solution = static_cast<const double*>(in.X->x);
+  const auto* solution = static_cast<const double*>(w.X->x);
   for (int col = 0; col < count; ++col)
     for (vtkIdType r = 0; r < m; ++r)
-      x[col * n + this->FreeNodes[r]] = solution[col * m + r];
+      x[(first + col) * n + this->FreeNodes[r]] = solution[col * m + r];
   return true;
 }

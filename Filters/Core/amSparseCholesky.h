@@ -54,6 +54,10 @@ public:
   /// core (OpenBLAS's workers wait busily for a while after each call), taking it from the work
   /// done between the solves (the next right-hand sides, the files being written).
   int SolveBlasThreads = 1;
+  /// Threads that share a Solve() of several right-hand sides, each sweeping the factor for its
+  /// own columns (at least two). The split depends on this number only, so the results are the
+  /// same bytes on any machine; another number may round their last bits differently.
+  int SolveThreads = 2;
 
   /// Figures of the factorisation: non-zeros of L, floating-point operations, seconds, and
   /// whether the supernodal (BLAS) form was used; the ordering ("AMD", "METIS", "NESDIS", ...).
@@ -65,6 +69,8 @@ public:
 
 private:
   struct Internal;
+  struct Worker;
+  bool SolveColumns(Worker& worker, const double* b, double* x, int first, int count);
   std::unique_ptr<Internal> Impl;
   const amSparseMatrix* A = nullptr;
   const std::vector<unsigned char>* Fixed = nullptr;

@@ -73,7 +73,7 @@ struct amTorsoPotential::Model
   // the factor for a batch), each a full vector (column-major), and their times.
   std::vector<double> Pending;
   std::vector<double> PendingTimes;
-  static constexpr int Batch = 16;
+  static constexpr int Batch = 64;
   void Record(double time, const double* x)
   {
     this->Times.push_back(time);
