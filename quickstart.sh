@@ -17,7 +17,7 @@ if [ "$(id -u)" != 0 ]; then SUDO="sudo"; fi
 packages=(
   build-essential cmake ccache pkg-config
   paraview paraview-dev python3-paraview libopenmpi-dev
-  libinsighttoolkit5-dev libcgal-dev libtet1.5-dev libeigen3-dev zlib1g-dev libsuitesparse-dev libopenblas0-pthread
+  libinsighttoolkit5-dev libcgal-dev libtet1.5-dev libeigen3-dev zlib1g-dev libsuitesparse-dev libmetis-dev libopenblas0-pthread
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-mpi4py openmpi-bin python3-meshio python3-nibabel xvfb xauth
   qttools5-dev qtxmlpatterns5-dev-tools

@@ -1,5 +1,6 @@
 #include "amSparseCholesky.h"
 
+#include "amNestedDissection.h"
 #include "amSparseMatrix.h"
 
 #include "vtkSMPTools.h"
@@ -177,12 +178,28 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
   }
   colStart[m] = fill;
 
-  FixedBlasThreads blas(this->BlasThreads);
   // CHOLMOD's default orders with AMD and then METIS and keeps the better; on a mesh of tens of
-  // thousands of nodes METIS (nested dissection) is the better one, by far, so it alone is tried.
-  c->nmethods = m >= LargeMatrix ? 1 : 0;
-  c->method[0].ordering = m >= LargeMatrix ? CHOLMOD_METIS : CHOLMOD_GIVEN;
-  in.L = cholmod_l_analyze(S, c);
+  // thousands of nodes METIS (nested dissection) is the better one, by far, so it alone is used,
+  // its two halves ordered at once (amNestedDissection), and CHOLMOD is given the order.
+  std::vector<SuiteSparse_long> given;
+  if (m >= LargeMatrix)
+  {
+    std::string why;
+    std::vector<long long> order;
+    if (!this->NestedDissection(order, why))
+    {
+      this->Message = why;
+      cholmod_l_free_sparse(&S, c);
+      return false;
+    }
+    given.assign(order.begin(), order.end());
+    c->nmethods = 1;
+    c->method[0].ordering = CHOLMOD_GIVEN;
+  }
+  else
+    c->nmethods = 0;
+  FixedBlasThreads blas(this->BlasThreads);
+  in.L = given.empty() ? cholmod_l_analyze(S, c) : cholmod_l_analyze_p(S, given.data(), nullptr, 0, c);
   bool ok = in.L && c->status >= CHOLMOD_OK;
   if (ok)
     ok = cholmod_l_factorize(S, in.L, c) && c->status == CHOLMOD_OK;
@@ -216,9 +233,30 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
   this->Supernodal = in.L->is_super != 0;
   static const char* names[] = { "natural", "given", "AMD", "METIS", "NESDIS", "COLAMD", "postordered" };
   const int ordering = in.L->ordering;
-  this->OrderingName = ordering >= 0 && ordering <= 6 ? names[ordering] : "unknown";
+  this->OrderingName = !given.empty() ? "METIS" : (ordering >= 0 && ordering <= 6 ? names[ordering] : "unknown");
   this->Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;
+}
+
+bool amSparseCholesky::NestedDissection(std::vector<long long>& order, std::string& why) const
+{
+  // The free block's graph: both directions of every coupling, without the diagonal.
+  const amSparseMatrix& A = *this->A;
+  const vtkIdType m = static_cast<vtkIdType>(this->FreeNodes.size());
+  std::vector<int> start(1, 0), adjacent;
+  adjacent.reserve(static_cast<size_t>(A.NumberOfNonZeros()));
+  for (vtkIdType r = 0; r < m; ++r)
+  {
+    const vtkIdType i = this->FreeNodes[r];
+    for (vtkIdType k = A.RowStart[i]; k < A.RowStart[i + 1]; ++k)
+    {
+      const vtkIdType f = this->FreeIndex[A.Columns[k]];
+      if (f >= 0 && f != r)
+        adjacent.push_back(static_cast<int>(f));
+    }
+    start.push_back(static_cast<int>(adjacent.size()));
+  }
+  return amNestedDissection::Order(start, adjacent, order, why);
 }
 
 bool amSparseCholesky::Solve(const double* b, double* x, int count)

@@ -70,6 +70,7 @@ public:
 private:
   struct Internal;
   struct Worker;
+  bool NestedDissection(std::vector<long long>& order, std::string& why) const;
   bool SolveColumns(Worker& worker, const double* b, double* x, int first, int count);
   std::unique_ptr<Internal> Impl;
   const amSparseMatrix* A = nullptr;

@@ -1,5 +1,6 @@
 #include "amTetGenRun.h"
 
+#include "amDescriptorIO.h"
 #include "amGradedSizeField.h"
 #include "amSurfaceMesh.h"
 #include "amTetraGeometry.h"
@@ -58,22 +59,6 @@ const char* TetGenError(int code)
     default:
       return "TetGen failed";
   }
-}
-
-bool WriteAll(int fd, const void* data, size_t bytes)
-{
-  const char* p = static_cast<const char*>(data);
-  while (bytes > 0)
-  {
-    const ssize_t n = ::write(fd, p, bytes);
-    if (n < 0 && errno == EINTR)
-      continue;
-    if (n <= 0)
-      return false;
-    p += n;
-    bytes -= static_cast<size_t>(n);
-  }
-  return true;
 }
 
 /// TetGen in a child process. TetGen 1.5.0 frees its memory twice when it stops on an error in
@@ -139,13 +124,13 @@ std::string Start(std::string& switches, tetgenio& in, Child& child)
       code = 2;
     const long long header[4] = { code, code ? 0 : out.numberofpoints, code ? 0 : out.numberoftetrahedra,
       code ? 0 : out.numberoftrifaces };
-    bool ok = WriteAll(fds[1], header, sizeof(header));
+    bool ok = amDescriptorIO::WriteAll(fds[1], header, sizeof(header));
     if (ok && code == 0)
-      ok = WriteAll(fds[1], out.pointlist, sizeof(REAL) * 3 * header[1]) &&
-        WriteAll(fds[1], out.tetrahedronlist, sizeof(int) * 4 * header[2]) &&
-        WriteAll(fds[1], out.neighborlist, sizeof(int) * 4 * header[2]) &&
-        WriteAll(fds[1], out.trifacelist, sizeof(int) * 3 * header[3]) &&
-        WriteAll(fds[1], out.trifacemarkerlist, sizeof(int) * header[3]);
+      ok = amDescriptorIO::WriteAll(fds[1], out.pointlist, sizeof(REAL) * 3 * header[1]) &&
+        amDescriptorIO::WriteAll(fds[1], out.tetrahedronlist, sizeof(int) * 4 * header[2]) &&
+        amDescriptorIO::WriteAll(fds[1], out.neighborlist, sizeof(int) * 4 * header[2]) &&
+        amDescriptorIO::WriteAll(fds[1], out.trifacelist, sizeof(int) * 3 * header[3]) &&
+        amDescriptorIO::WriteAll(fds[1], out.trifacemarkerlist, sizeof(int) * header[3]);
     ::close(fds[1]);
     std::fflush(stdout);
     ::_exit(ok ? 0 : 1);
