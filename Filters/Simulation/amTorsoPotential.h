@@ -23,7 +23,10 @@
  *
  * Time: when input 1 is time-dependent the filter runs the whole series once (it requests every
  * time step of the heart in turn), keeps the potentials of every step (float), and then answers
- * any requested time without solving again. Output 0: the torso mesh (its tetrahedra, Region,
+ * any requested time without solving again. The direct solver orders the matrix by METIS's nested
+ * dissection with its two halves ordered at once (one by a forked child process,
+ * amNestedDissection), and solves the steps 64 at a time, half of them on each of two threads (a
+ * fixed split: the same bytes on any number of cores). Output 0: the torso mesh (its tetrahedra, Region,
  * point data "Potential" in mV, "InputPointId"), time-dependent like the heart. Output 1: a
  * vtkTable over all times: Time (ms), then the leads I, II, III, aVR, aVL, aVF, V1..V6 (mV; V1-V6
  * against Wilson's central terminal) when 9 electrodes are given (RA, LA, LL, V1..V6), or the
