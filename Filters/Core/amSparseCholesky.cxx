@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace
 {
@@ -182,7 +183,8 @@ bool amSparseCholesky::Factor(const amSparseMatrix* A, const std::vector<unsigne
   // thousands of nodes METIS (nested dissection) is the better one, by far, so it alone is used,
   // its two halves ordered at once (amNestedDissection), and CHOLMOD is given the order.
   std::vector<SuiteSparse_long> given;
-  if (m >= LargeMatrix)
+  // METIS numbers the graph's edges with 32-bit integers: a larger graph takes CHOLMOD's default.
+  if (m >= LargeMatrix && A->NumberOfNonZeros() < std::numeric_limits<int>::max())
   {
     std::string why;
     std::vector<long long> order;
