@@ -112,8 +112,8 @@ bool Order(const std::vector<int>& start, const std::vector<int>& adjacent, std:
   std::vector<idx_t> xadj(start.begin(), start.end()), adjncy(adjacent.begin(), adjacent.end());
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
-  // Halves within 3 % of each other (METIS's default allows 20 %): the two processes then finish
-  // together, and on the torso's graph the factor is no denser.
+  // Halves within 3 % of each other (METIS's default allows 20 %), so that the two processes
+  // finish together.
   options[METIS_OPTION_UFACTOR] = 30;
   idx_t separatorSize = 0;
   std::vector<idx_t> part(static_cast<size_t>(n));
@@ -151,19 +151,14 @@ bool Order(const std::vector<int>& start, const std::vector<int>& adjacent, std:
       order.push_back(v);
   // Every node once: the child's bytes are trusted only as a permutation.
   std::vector<char> seen(static_cast<size_t>(n), 0);
-  for (long long v : order)
-    if (v < 0 || v >= n || seen[v]++)
-    {
-      why = "the nested dissection did not order every node of the matrix's graph once";
-      order.clear();
-      return false;
-    }
-  if (order.size() != static_cast<size_t>(n))
+  bool permutation = order.size() == static_cast<size_t>(n);
+  for (size_t k = 0; k < order.size() && permutation; ++k)
+    permutation = order[k] >= 0 && order[k] < n && !seen[order[k]]++;
+  if (!permutation)
   {
     why = "the nested dissection did not order every node of the matrix's graph once";
     order.clear();
-    return false;
   }
-  return true;
+  return permutation;
 }
 }
