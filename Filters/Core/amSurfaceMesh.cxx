@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 bool amSurfaceMesh::Build(vtkPolyData* surface, std::string& why, const char* labelsName)
 {
@@ -72,48 +73,89 @@ bool amSurfaceMesh::Build(vtkPolyData* surface, std::string& why, const char* la
   return true;
 }
 
-void amSurfaceMesh::BuildTopology()
+namespace
 {
-  const vtkIdType nt = this->NumberOfTriangles(), np = this->NumberOfPoints();
-  // Edges: the half-edges (a, b, triangle), a < b, in the order of (a, b, triangle): counted
-  // into buckets by a in triangle order, then each bucket (a vertex's few edges) sorted by b
-  // with a stable insertion sort. (A comparison sort of them all took half of this function's
-  // time on a 570 k-triangle surface.)
+/// A half-edge in the bucket of its smaller vertex: the larger one and its triangle.
+template<typename Index>
+struct HalfEdge
+{
+  Index B, T;
+};
+
+/// The edges of the triangles (unique vertex pairs a < b, in the order of (a, b)) and each one's
+/// triangles (in triangle order), from the half-edges: counted into buckets by a in triangle
+/// order, each bucket (a vertex's few edges) sorted by b with a stable insertion sort, then the
+/// edges of each vertex written at its place from a count per vertex, on the threads. (A
+/// comparison sort of them all took half of this function's time on a 570 k-triangle surface;
+/// Index is 32-bit where the ids fit: the half-edges are most of the memory it touches.)
+template<typename Index>
+void FindEdges(const std::vector<std::array<vtkIdType, 3>>& triangles, vtkIdType np,
+  std::vector<std::array<vtkIdType, 2>>& edges, std::vector<vtkIdType>& edgeTriangleStart,
+  std::vector<vtkIdType>& edgeTriangles)
+{
+  const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
   std::vector<vtkIdType> bucket(static_cast<size_t>(np + 1), 0);
-  for (const auto& t : this->Triangles)
+  for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k)
       ++bucket[std::min(t[k], t[(k + 1) % 3]) + 1];
   for (vtkIdType i = 0; i < np; ++i)
     bucket[i + 1] += bucket[i];
-  std::vector<std::array<vtkIdType, 3>> half(static_cast<size_t>(3 * nt));
+  std::vector<HalfEdge<Index>> half(static_cast<size_t>(3 * nt));
   {
     std::vector<vtkIdType> fill(bucket.begin(), bucket.end() - 1);
     for (vtkIdType t = 0; t < nt; ++t)
       for (int k = 0; k < 3; ++k)
       {
-        const vtkIdType a = this->Triangles[t][k], b = this->Triangles[t][(k + 1) % 3];
-        half[fill[std::min(a, b)]++] = { std::min(a, b), std::max(a, b), t };
+        const vtkIdType a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+        half[fill[std::min(a, b)]++] = { static_cast<Index>(std::max(a, b)), static_cast<Index>(t) };
       }
   }
+  // Per vertex: its half-edges sorted, and how many edges they make.
+  std::vector<vtkIdType> first(static_cast<size_t>(np + 1), 0);
   vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
     for (vtkIdType v = v0; v < v1; ++v)
-      for (vtkIdType i = bucket[v] + 1; i < bucket[v + 1]; ++i) // insertion sort: stable
-        for (vtkIdType j = i; j > bucket[v] && half[j - 1][1] > half[j][1]; --j)
-          std::swap(half[j - 1], half[j]);
-  });
-  this->Edges.clear();
-  this->EdgeTriangleStart.assign(1, 0);
-  this->EdgeTriangles.resize(half.size());
-  for (size_t i = 0; i < half.size(); ++i)
-  {
-    if (i == 0 || half[i][0] != half[i - 1][0] || half[i][1] != half[i - 1][1])
     {
-      this->Edges.push_back({ half[i][0], half[i][1] });
-      this->EdgeTriangleStart.push_back(this->EdgeTriangleStart.back());
+      for (vtkIdType i = bucket[v] + 1; i < bucket[v + 1]; ++i) // insertion sort: stable
+        for (vtkIdType j = i; j > bucket[v] && half[j - 1].B > half[j].B; --j)
+          std::swap(half[j - 1], half[j]);
+      vtkIdType n = 0;
+      for (vtkIdType i = bucket[v]; i < bucket[v + 1]; ++i)
+        n += i == bucket[v] || half[i].B != half[i - 1].B;
+      first[v + 1] = n;
     }
-    this->EdgeTriangles[this->EdgeTriangleStart.back()++] = half[i][2];
-  }
-  std::vector<std::array<vtkIdType, 3>>().swap(half);
+  });
+  for (vtkIdType i = 0; i < np; ++i)
+    first[i + 1] += first[i];
+  const vtkIdType ne = first[np];
+  edges.resize(static_cast<size_t>(ne));
+  edgeTriangleStart.resize(static_cast<size_t>(ne + 1));
+  edgeTriangles.resize(half.size());
+  edgeTriangleStart[ne] = static_cast<vtkIdType>(half.size());
+  vtkSMPTools::For(0, np, [&](vtkIdType v0, vtkIdType v1) {
+    for (vtkIdType v = v0; v < v1; ++v)
+    {
+      vtkIdType e = first[v];
+      for (vtkIdType i = bucket[v]; i < bucket[v + 1]; ++i)
+      {
+        if (i == bucket[v] || half[i].B != half[i - 1].B)
+        {
+          edges[e] = { v, static_cast<vtkIdType>(half[i].B) };
+          edgeTriangleStart[e++] = i;
+        }
+        edgeTriangles[i] = half[i].T;
+      }
+    }
+  });
+}
+}
+
+void amSurfaceMesh::BuildTopology()
+{
+  const vtkIdType nt = this->NumberOfTriangles(), np = this->NumberOfPoints();
+  if (np < std::numeric_limits<int>::max() && nt < std::numeric_limits<int>::max())
+    FindEdges<int>(this->Triangles, np, this->Edges, this->EdgeTriangleStart, this->EdgeTriangles);
+  else
+    FindEdges<vtkIdType>(this->Triangles, np, this->Edges, this->EdgeTriangleStart, this->EdgeTriangles);
   const vtkIdType ne = static_cast<vtkIdType>(this->Edges.size());
   this->FeatureEdge.assign(static_cast<size_t>(ne), 0);
   const bool labelled = this->Labels.size() == this->Triangles.size();

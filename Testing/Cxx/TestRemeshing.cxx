@@ -98,12 +98,13 @@ void ExpectExactBins(const Remesher& r)
 {
   std::map<std::pair<int, long long>, std::multiset<int>> listed;
   for (int zone = 0; zone < 3; ++zone)
-    for (const auto& [key, list] : r.Grid.Map[zone])
+    r.Grid.Map[zone].ForEach([&](long long key, const std::vector<int>& list) {
       for (int t : list)
       {
         EXPECT_TRUE(r.Mesh.T[t].Alive) << "dead triangle " << t << " still binned";
         listed[{ zone, key }].insert(t);
       }
+    });
   size_t expected = 0;
   for (size_t t = 0; t < r.Mesh.T.size(); ++t)
     if (r.Mesh.T[t].Alive)
@@ -172,9 +173,9 @@ TEST(RemeshCrossingGuard, InsideASweptTetrahedron)
 {
   const std::array<Vec3, 4> t = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1) };
   EXPECT_TRUE(CrossingGuard::StrictlyInside(t, Vec3(0.2, 0.2, 0.2)));
-  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0.5, 0.5, 0.5)));  // outside
-  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0.3, 0.3, 0.0)));  // on a face
-  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0, 0, 0)));        // a corner
+  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0.5, 0.5, 0.5))); // outside
+  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0.3, 0.3, 0.0))); // on a face
+  EXPECT_FALSE(CrossingGuard::StrictlyInside(t, Vec3(0, 0, 0)));       // a corner
   const std::array<Vec3, 4> flat = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0) };
   EXPECT_FALSE(CrossingGuard::StrictlyInside(flat, Vec3(0.5, 0.5, 0.0))); // no inside
 }
@@ -521,7 +522,7 @@ TEST(RemeshBins, StayExactThroughChanges)
   // The split plane: across the longest side at the median vertex; every zone is used.
   size_t inZone[3] = { 0, 0, 0 };
   for (int zone = 0; zone < 3; ++zone)
-    inZone[zone] = r->Grid.Map[zone].size();
+    inZone[zone] = r->Grid.Map[zone].Size();
   EXPECT_GT(inZone[0], 0u);
   EXPECT_GT(inZone[1], 0u);
   // A vertex moved by hand, its star binned again; then a triangle removed.
@@ -593,15 +594,15 @@ TEST(RemeshCompact, DropsTheDeadAndKeepsTheOrder)
       EXPECT_EQ(s.Cluster[v][i].Point, before.Cluster[old][i].Point);
       const int hint = before.Cluster[old][i].Hint;
       if (hint >= 0 && before.T[hint].Alive)
-        EXPECT_EQ(s.T[s.Cluster[v][i].Hint].V[0], std::lower_bound(liveVertices.begin(), liveVertices.end(),
-                                                      before.T[hint].V[0]) - liveVertices.begin());
+        EXPECT_EQ(s.T[s.Cluster[v][i].Hint].V[0],
+          std::lower_bound(liveVertices.begin(), liveVertices.end(), before.T[hint].V[0]) - liveVertices.begin());
       else
         EXPECT_EQ(s.Cluster[v][i].Hint, -1);
     }
     ASSERT_EQ(s.VT[v].size(), before.VT[old].size());
     for (int t : s.VT[v])
-      EXPECT_TRUE(s.T[t].V[0] == static_cast<int>(v) || s.T[t].V[1] == static_cast<int>(v) ||
-        s.T[t].V[2] == static_cast<int>(v));
+      EXPECT_TRUE(
+        s.T[t].V[0] == static_cast<int>(v) || s.T[t].V[1] == static_cast<int>(v) || s.T[t].V[2] == static_cast<int>(v));
   }
   for (size_t t = 0; t < s.T.size(); ++t)
     for (int k = 0; k < 3; ++k)

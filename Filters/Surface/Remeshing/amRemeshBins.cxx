@@ -32,10 +32,10 @@ std::array<int, 6> Bins::Range(int t, std::array<float, 6>* box) const
 void Bins::RemoveFromBins(int t, const std::array<int, 6>& r, const std::array<int, 6>* except)
 {
   this->ForRange(r, except, [&](long long key, int zone) {
-    auto it = this->Map[zone].find(key);
-    if (it == this->Map[zone].end())
+    std::vector<int>* found = this->Map[zone].Find(key);
+    if (!found)
       return;
-    auto& list = it->second;
+    auto& list = *found;
     auto at = std::find(list.begin(), list.end(), t);
     if (at != list.end())
     {
@@ -158,7 +158,7 @@ void Bins::Rebin()
     {
       for (int zone : { 0, 1, 2 })
         if ((zone == 1) == (z == 1))
-          this->Map[zone].clear();
+          this->Map[zone].Clear();
       for (size_t t = 0; t < S.T.size(); ++t)
         if (S.T[t].Alive)
         {

@@ -12,11 +12,11 @@
 #ifndef amRemeshBins_h
 #define amRemeshBins_h
 
+#include "amRemeshBinTable.h"
 #include "amRemeshSurface.h"
 
 #include <array>
 #include <cmath>
-#include <unordered_map>
 #include <vector>
 
 namespace amRemesh
@@ -31,8 +31,8 @@ public:
   Bins(const Bins&) = delete;
   Bins& operator=(const Bins&) = delete;
 
-  double Size = 1.0;                                                  // bin side
-  std::array<std::unordered_map<long long, std::vector<int>>, 3> Map; // per zone: key -> triangles
+  double Size = 1.0;           // bin side
+  std::array<BinTable, 3> Map; // per zone: key -> triangles
   int SplitAxis = 0;
   long long SplitIndex = 0;
   /// Per triangle slot: the range of bins (index box lo 0..2, hi 3..5) it is in (lo > hi: none).

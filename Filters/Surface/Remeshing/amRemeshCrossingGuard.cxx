@@ -81,8 +81,7 @@ struct SweptTetrahedron
   {
     const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0], e3 = t[3] - t[0];
     const double six = e1.dot(e2.cross(e3));
-    const double scale =
-      e1.squaredNorm() * e1.norm() + e2.squaredNorm() * e2.norm() + e3.squaredNorm() * e3.norm();
+    const double scale = e1.squaredNorm() * e1.norm() + e2.squaredNorm() * e2.norm() + e3.squaredNorm() * e3.norm();
     this->Flat = !(std::fabs(six) > 1e-9 * scale);
     this->R[0] = e2.cross(e3) / six;
     this->R[1] = e3.cross(e1) / six;
@@ -155,10 +154,10 @@ bool CrossingGuard::Crosses(const std::vector<std::array<int, 3>>& ids, const st
   auto& near = worker.Near;
   near.clear();
   this->B.ForBins(lo, hi, [&](long long key, int zone) {
-    auto it = this->B.Map[zone].find(key);
-    if (it == this->B.Map[zone].end())
+    const std::vector<int>* list = this->B.Map[zone].Find(key);
+    if (!list)
       return;
-    for (int t : it->second)
+    for (int t : *list)
     {
       const std::array<float, 6>& b = this->B.BinnedBox[t];
       if (b[0] > hi[0] || b[1] > hi[1] || b[2] > hi[2] || b[3] < lo[0] || b[4] < lo[1] || b[5] < lo[2] ||
