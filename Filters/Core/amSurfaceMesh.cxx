@@ -85,9 +85,9 @@ struct HalfEdge
 /// The edges of the triangles (unique vertex pairs a < b, in the order of (a, b)) and each one's
 /// triangles (in triangle order), from the half-edges: counted into buckets by a in triangle
 /// order, each bucket (a vertex's few edges) sorted by b with a stable insertion sort, then the
-/// edges of each vertex written at its place from a count per vertex, on the threads. (A
-/// comparison sort of them all took half of this function's time on a 570 k-triangle surface;
-/// Index is 32-bit where the ids fit: the half-edges are most of the memory it touches.)
+/// edges of each vertex written at its place from a count per vertex, on the threads (a
+/// comparison sort of all the half-edges is far slower). Index is 32-bit where the ids fit: the
+/// half-edges are most of the memory this touches.
 template<typename Index>
 void FindEdges(const std::vector<std::array<vtkIdType, 3>>& triangles, vtkIdType np,
   std::vector<std::array<vtkIdType, 2>>& edges, std::vector<vtkIdType>& edgeTriangleStart,
