@@ -22,7 +22,9 @@
  * crosses a fixed face, so every tetrahedron keeps its region. The exception, off unless
  * Options::MaximumSurfaceDeviation is positive: around the slivers the operations above leave,
  * surface vertices slide, elements change region and surface edges are split (see Options),
- * which moves the surface by at most that distance. Deterministic: one thread, fixed order.
+ * which moves the surface by at most that distance. Deterministic, the same mesh on any number of
+ * cores: the flips are planned on the threads and taken in order; the smoothing goes over classes
+ * of vertices no two neighbours share (a greedy colouring), each class on the threads at once.
  */
 #ifndef amTetraMeshOptimizer_h
 #define amTetraMeshOptimizer_h

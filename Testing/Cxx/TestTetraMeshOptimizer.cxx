@@ -100,34 +100,64 @@ TEST(TetraImprove, SplitFaceUndoneBelowItsGoalAndNeverOnAFixedFace)
 }
 
 
-// SmoothAll makes its blocks' choices on two threads at once, and takes them in order: the mesh
-// it leaves is, bit for bit, the serial loop's (three blocks of vertices).
-TEST(TetraImprove, SmoothAllIsTheSerialLoopBitForBit)
+// SmoothAll smooths each colour class of SmoothingColours on the threads at once: the mesh it
+// leaves is, bit for bit, the serial loop's over the classes in turn, on two threads and on one.
+// No two vertices of a class share an element; every free vertex of a fully dirty mesh is in one.
+TEST(TetraImprove, SmoothAllIsTheSerialLoopOverItsColoursBitForBit)
 {
-  std::vector<double> serialPoints, blockPoints;
-  amTetraImprove::Mesh serial(serialPoints), blocks(blockPoints);
+  std::vector<double> serialPoints, twoPoints, onePoints;
+  amTetraImprove::Mesh serial(serialPoints), two(twoPoints), one(onePoints);
   amTest::Lattice(22, 0.3, serialPoints, serial);
-  amTest::Lattice(22, 0.3, blockPoints, blocks);
+  amTest::Lattice(22, 0.3, twoPoints, two);
+  amTest::Lattice(22, 0.3, onePoints, one);
   ASSERT_GT(serial.Inc.size(), 2 * 4096u);
   vtkSMPTools::SetBackend("STDThread");
-  vtkSMPTools::Initialize(2);
   for (int pass = 0; pass < 2; ++pass)
   {
+    const auto colours = amTetraImprove::SmoothingColours(serial, serial.Inc.size());
+    EXPECT_GT(colours.size(), 3u);
+    EXPECT_LT(colours.size(), 40u);
+    std::vector<int> colourOf(serial.Inc.size(), -1);
+    for (size_t c = 0; c < colours.size(); ++c)
+      for (int v : colours[c])
+      {
+        EXPECT_EQ(colourOf[v], -1) << "vertex " << v << " in two classes";
+        colourOf[v] = static_cast<int>(c);
+      }
+    for (size_t t = 0; t < serial.T.size(); ++t)
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+        {
+          const int a = serial.T[t][i], b = serial.T[t][j];
+          if (colourOf[a] >= 0)
+            EXPECT_NE(colourOf[a], colourOf[b]) << "neighbours " << a << " and " << b;
+        }
+    if (pass == 0)
+      for (size_t v = 0; v < serial.Inc.size(); ++v)
+        EXPECT_EQ(colourOf[v] >= 0, !serial.FixedVertex[v]) << "vertex " << v;
     long serialMoves = 0;
-    for (size_t v = 0; v < serial.Inc.size(); ++v)
-    {
-      if (serial.FixedVertex[v] || !serial.Dirty[v])
-        continue;
-      serial.Dirty[v] = 0;
-      serialMoves += amTetraImprove::Smooth(serial, static_cast<int>(v));
-    }
-    const long blockMoves = amTetraImprove::SmoothAll(blocks, blocks.Inc.size());
+    for (const auto& vertices : colours)
+      for (int v : vertices)
+      {
+        if (!serial.Dirty[v])
+          continue;
+        serial.Dirty[v] = 0;
+        serialMoves += amTetraImprove::Smooth(serial, v);
+      }
+    vtkSMPTools::Initialize(2);
+    const long twoMoves = amTetraImprove::SmoothAll(two, two.Inc.size());
+    vtkSMPTools::Initialize(1);
+    const long oneMoves = amTetraImprove::SmoothAll(one, one.Inc.size());
     EXPECT_GT(serialMoves, 1000);
-    EXPECT_EQ(blockMoves, serialMoves);
-    EXPECT_TRUE(serialPoints == blockPoints) << "pass " << pass;
-    EXPECT_TRUE(serial.Q == blocks.Q);
-    EXPECT_TRUE(serial.Dirty == blocks.Dirty);
+    EXPECT_EQ(twoMoves, serialMoves);
+    EXPECT_EQ(oneMoves, serialMoves);
+    EXPECT_TRUE(serialPoints == twoPoints) << "pass " << pass;
+    EXPECT_TRUE(serialPoints == onePoints) << "pass " << pass;
+    EXPECT_TRUE(serial.Q == two.Q && serial.Q == one.Q);
+    EXPECT_TRUE(serial.Dirty == two.Dirty && serial.Dirty == one.Dirty);
+    EXPECT_TRUE(serial.Tried == two.Tried && serial.Tried == one.Tried);
   }
+  vtkSMPTools::Initialize(2);
 }
 
 // TopologyPass plans its blocks' flips on two threads at once and makes them in order: the same

@@ -11,6 +11,11 @@ from simulation_agreement import AgreesWithTruth
 SPACING, TOLERANCE, END = 2.0, 1.0, 400.0
 MAXIMUM_SIZE = 4.0  # mm: a mesh fine enough for the wave front, on both sides alike
 STIMULUS = (61.0, -51.5, -25.0)  # near the apex, as in the main job
+# The main job's stimulus sphere for the comparison of the two meshes: the solver's default 10 mm is
+# below the critical nucleus of a free sphere (about 14 mm), and holds so few nodes of the apex's thin
+# wall that when the wave leaves it depends on the elements at its border (offsets of 2.5-6.6 ms
+# between the two meshes, whatever else agrees).
+STIMULUS_RADIUS = 15.0
 
 
 def tetrahedra(labels):
@@ -33,11 +38,13 @@ def tetrahedra(labels):
     return tets
 
 
-def simulate(tets, end=END, interval=5, endocardial=(), coupling=0, purkinje=0.0):
+def simulate(tets, end=END, interval=5, endocardial=(), coupling=0, purkinje=0.0, radius=None):
     """FitzHugh-Nagumo on the mesh's region 5 and the torso potentials: the heart at the end time and the leads."""
     heart = anatomesh.amFitzHughNagumoSolver()
     heart.SetInputConnection(tets.GetOutputPort(0))
     heart.SetStimulusCenter(*STIMULUS)
+    if radius is not None:
+        heart.SetStimulusRadius(radius)
     heart.SetTimeStep(0.5)
     heart.SetEndTime(end)
     heart.SetOutputInterval(interval)
@@ -85,8 +92,8 @@ class SegmentedAgainstTruth(AgreesWithTruth, unittest.TestCase):
         cls.torso = anatomesh.amTorsoSegmentation()
         cls.torso.SetInputConnection(cls.phantom.GetOutputPort(0))
         cls.torso.SetOrganConnection(cls.snake.GetOutputPort())
-        cls.segmented = simulate(tetrahedra(cls.torso.GetOutputPort()))
-        cls.truth = simulate(truth_tetrahedra())
+        cls.segmented = simulate(tetrahedra(cls.torso.GetOutputPort()), radius=STIMULUS_RADIUS)
+        cls.truth = simulate(truth_tetrahedra(), radius=STIMULUS_RADIUS)
 
 
 class ClinicalECG(unittest.TestCase):

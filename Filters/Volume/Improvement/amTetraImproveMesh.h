@@ -216,10 +216,13 @@ bool Smooth(Mesh& m, int v);
 /// only v's star (the positions of its vertices and the objectives of its elements). With 'q'
 /// (room for m.Inc[v].size() values), the star's objectives at that position.
 bool SmoothTarget(const Mesh& m, int v, double* to, double* q = nullptr);
-/// Smooth over the vertices 0 .. n-1 in order, for each free one whose Dirty flag is set when its
-/// turn comes (the flag cleared), exactly as that serial loop would: blocks of vertices have their
-/// choices made on the threads at once, then taken in order, and a vertex whose star a move
-/// in its block changed before its turn is smoothed again then. Returns the moves.
+/// The free vertices among 0 .. n-1 that a smoothing pass may move (those whose Dirty flag is set,
+/// and their free neighbours) in classes no two neighbours share: a greedy colouring in the
+/// order of the vertices, each class in that order.
+std::vector<std::vector<int>> SmoothingColours(const Mesh& m, size_t n);
+/// Smooth over the classes of SmoothingColours in turn, each class's vertices in order: each one
+/// whose Dirty flag is set when its turn comes (the flag cleared). A class's vertices are smoothed
+/// on the threads at once: the result does not depend on their number. Returns the moves.
 long SmoothAll(Mesh& m, size_t n);
 /// Local search: moves v along the numerical gradient of its star's worst quality; with a finite
 /// 'radius', only where the fixed faces around v stay within that distance of where they were
