@@ -207,7 +207,12 @@ void CurrentStar(const Mesh& m, int v, double& worst, double& sum);
 void StarQuality(const Mesh& m, int v, const double* x, double& worst, double& sumQ,
   double floor = -std::numeric_limits<double>::infinity(), double ceiling = std::numeric_limits<double>::infinity(),
   double* each = nullptr);
-/// Moves v to x and updates its star's objectives ('q': those of m.Inc[v] there, computed already).
+/// Moves v to x and updates its star's objectives ('q': those of m.Inc[v] there, computed already)
+/// and Tried flags; writes nothing outside v and its star's elements.
+void PlaceVertex(Mesh& m, int v, const double* x, const double* q = nullptr);
+/// Sets the Dirty flag of every vertex of v's star (v's included).
+void MarkStarDirty(Mesh& m, int v);
+/// PlaceVertex, then MarkStarDirty.
 void MoveVertex(Mesh& m, int v, const double* x, const double* q = nullptr);
 /// Smoothing of one free vertex: the best of a few candidate positions that keeps the star's
 /// worst element at least as good and lowers its mean Q.

@@ -46,7 +46,7 @@ void StarQuality(
   }
 }
 
-void MoveVertex(Mesh& m, int v, const double* x, const double* q)
+void PlaceVertex(Mesh& m, int v, const double* x, const double* q)
 {
   std::copy(x, x + 3, &m.P[3 * static_cast<size_t>(v)]);
   for (int t : m.Inc[v])
@@ -54,9 +54,20 @@ void MoveVertex(Mesh& m, int v, const double* x, const double* q)
     // The same Objective on the same corners in the same order: the same value as computed anew.
     m.Q[t] = q ? *q++ : m.Quality(m.T[t][0], m.T[t][1], m.T[t][2], m.T[t][3]);
     m.Tried[t] = 0;
+  }
+}
+
+void MarkStarDirty(Mesh& m, int v)
+{
+  for (int t : m.Inc[v])
     for (int w : m.T[t])
       m.Dirty[w] = 1;
-  }
+}
+
+void MoveVertex(Mesh& m, int v, const double* x, const double* q)
+{
+  PlaceVertex(m, v, x, q);
+  MarkStarDirty(m, v);
 }
 
 bool SmoothTarget(const Mesh& m, int v, double* bestPos, double* bestQ)

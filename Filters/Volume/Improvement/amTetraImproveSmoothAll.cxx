@@ -29,12 +29,7 @@ long SmoothAll(Mesh& m, size_t n)
         q.resize(m.Inc[v].size());
         if (!SmoothTarget(m, v, to, q.data()))
           continue;
-        std::copy(to, to + 3, &m.P[3 * static_cast<size_t>(v)]);
-        for (size_t k = 0; k < m.Inc[v].size(); ++k)
-        {
-          m.Q[m.Inc[v][k]] = q[k];
-          m.Tried[m.Inc[v][k]] = 0;
-        }
+        PlaceVertex(m, v, to, q.data());
         moved[i] = 1;
       }
     });
@@ -42,9 +37,7 @@ long SmoothAll(Mesh& m, size_t n)
       if (moved[i])
       {
         ++moves;
-        for (int t : m.Inc[vertices[i]])
-          for (int w : m.T[t])
-            m.Dirty[w] = 1;
+        MarkStarDirty(m, vertices[i]);
       }
   }
   return moves;
