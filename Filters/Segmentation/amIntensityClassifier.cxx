@@ -1,5 +1,6 @@
 #include "amIntensityClassifier.h"
 
+#include "Anatomy/amTissueClassTable.h"
 #include "amITKBridge.h"
 #include "amInputCheck.h"
 #include "amProvenance.h"
@@ -35,6 +36,44 @@ namespace
 // The CT defaults: boundaries half-way between typical tissue values (HU).
 const double DefaultRanges[] = { -925, -475, 1, -475, -30, 2, -30, 170, 3, 170, 400, 4, 400, 1e30, 5 };
 const char* DefaultNames[] = { "Unclassified", "Lung", "Fat", "SoftTissue", "ContrastBlood", "Bone" };
+
+// The voxels that open() lets through and that connect (across faces) to the sides of the first
+// two index axes.
+template<typename Open>
+std::vector<unsigned char> FloodFromSides(const int dims[3], Open&& open)
+{
+  const vtkIdType sx = 1, sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
+  std::vector<unsigned char> reached(static_cast<size_t>(sz * dims[2]), 0);
+  std::vector<vtkIdType> front;
+  for (int k = 0; k < dims[2]; ++k)
+    for (int j = 0; j < dims[1]; ++j)
+      for (int i = 0; i < dims[0]; ++i)
+        if (i == 0 || j == 0 || i == dims[0] - 1 || j == dims[1] - 1)
+        {
+          const vtkIdType id = k * sz + j * sy + i * sx;
+          if (open(id))
+          {
+            reached[id] = 1;
+            front.push_back(id);
+          }
+        }
+  while (!front.empty())
+  {
+    const vtkIdType id = front.back();
+    front.pop_back();
+    const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
+              k = static_cast<int>(id / sz);
+    const vtkIdType next[6] = { i > 0 ? id - sx : -1, i < dims[0] - 1 ? id + sx : -1, j > 0 ? id - sy : -1,
+      j < dims[1] - 1 ? id + sy : -1, k > 0 ? id - sz : -1, k < dims[2] - 1 ? id + sz : -1 };
+    for (const vtkIdType q : next)
+      if (q >= 0 && !reached[q] && open(q))
+      {
+        reached[q] = 1;
+        front.push_back(q);
+      }
+  }
+  return reached;
+}
 }
 
 amIntensityClassifier::amIntensityClassifier()
@@ -136,6 +175,7 @@ int amIntensityClassifier::RequestData(
   this->UpdateProgress(0.3);
 
   std::vector<double> ranges = this->RangeList;
+  amTissueMixture::Result mixture;
   std::vector<std::string> names;
   vtkNew<vtkDoubleArray> otsuThresholds;
   otsuThresholds->SetName("Thresholds");
@@ -186,6 +226,36 @@ int amIntensityClassifier::RequestData(
     for (double v : thresholds)
       otsuThresholds->InsertNextValue(v);
   }
+  else if (this->Mode == Automatic)
+  {
+    if (useWindowed)
+    {
+      vtkErrorMacro("Mode Automatic classifies values in HU: it cannot be combined with ClassifyWindowed.");
+      return 0;
+    }
+    int dims[3];
+    input->GetDimensions(dims);
+    // The body: all but the air (below -500 HU, half-way between air and water) open to the sides.
+    const std::vector<unsigned char> outside = FloodFromSides(dims, [&](vtkIdType id) { return values[id] < -500.0; });
+    std::vector<unsigned char> body(outside.size());
+    for (size_t i = 0; i < body.size(); ++i)
+      body[i] = !outside[i];
+    mixture = amTissueMixture::Fit(values.data(), body.data(), values.size());
+    if (!mixture.Problem.empty())
+    {
+      vtkErrorMacro("The scan's tissue classes cannot be found: " << mixture.Problem << ".");
+      return 0;
+    }
+    ranges.clear();
+    for (int c = amTissueMixture::Lung; c < amTissueMixture::NumberOfClasses; ++c)
+      if (mixture.Classes[c].Found)
+      {
+        ranges.push_back(mixture.Upper[c - 1]);
+        ranges.push_back(c == amTissueMixture::Bone ? 1e30 : mixture.Upper[c]);
+        ranges.push_back(c);
+      }
+    names.assign(std::begin(DefaultNames), std::end(DefaultNames));
+  }
   else if (ranges.empty())
   {
     ranges.assign(std::begin(DefaultRanges), std::end(DefaultRanges));
@@ -219,43 +289,24 @@ int amIntensityClassifier::RequestData(
     int dims[3];
     input->GetDimensions(dims);
     const vtkIdType sx = 1, sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
-    std::vector<unsigned char> exterior(static_cast<size_t>(n), 0);
-    std::vector<vtkIdType> front;
-    for (int k = 0; k < dims[2]; ++k)
-      for (int j = 0; j < dims[1]; ++j)
-        for (int i = 0; i < dims[0]; ++i)
-          if (i == 0 || j == 0 || i == dims[0] - 1 || j == dims[1] - 1)
-          {
-            const vtkIdType id = k * sz + j * sy + i * sx;
-            if (l[id] == 0)
-            {
-              exterior[id] = 1;
-              front.push_back(id);
-            }
-          }
+    std::vector<unsigned char> exterior = FloodFromSides(dims, [&](vtkIdType id) { return l[id] == 0; });
     // Visit the 6 neighbours of id, calling f(neighbour).
     const auto neighbours = [&](vtkIdType id, auto&& f) {
       const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
                 k = static_cast<int>(id / sz);
-      if (i > 0) f(id - sx);
-      if (i < dims[0] - 1) f(id + sx);
-      if (j > 0) f(id - sy);
-      if (j < dims[1] - 1) f(id + sy);
-      if (k > 0) f(id - sz);
-      if (k < dims[2] - 1) f(id + sz);
+      if (i > 0)
+        f(id - sx);
+      if (i < dims[0] - 1)
+        f(id + sx);
+      if (j > 0)
+        f(id - sy);
+      if (j < dims[1] - 1)
+        f(id + sy);
+      if (k > 0)
+        f(id - sz);
+      if (k < dims[2] - 1)
+        f(id + sz);
     };
-    while (!front.empty()) // flood the unclassified voxels from the sides
-    {
-      const vtkIdType id = front.back();
-      front.pop_back();
-      neighbours(id, [&](vtkIdType q) {
-        if (!exterior[q] && l[q] == 0)
-        {
-          exterior[q] = 1;
-          front.push_back(q);
-        }
-      });
-    }
     for (int layer = 0; layer < 2; ++layer)
     {
       std::vector<vtkIdType> shell;
@@ -301,6 +352,8 @@ int amIntensityClassifier::RequestData(
       a->InsertNextValue(s);
     labelsOut->GetFieldData()->AddArray(a);
   }
+  if (this->Mode == Automatic)
+    labelsOut->GetFieldData()->AddArray(amTissueClassTable(mixture));
   if (this->ExteriorAir)
   {
     vtkNew<vtkIdTypeArray> a;
@@ -309,7 +362,7 @@ int amIntensityClassifier::RequestData(
     labelsOut->GetFieldData()->AddArray(a);
   }
   std::ostringstream params;
-  params << "Mode=" << (this->Mode == Otsu ? "Otsu" : "Ranges");
+  params << "Mode=" << (this->Mode == Otsu ? "Otsu" : this->Mode == Automatic ? "Automatic" : "Ranges");
   if (this->Mode == Otsu)
     params << " NumberOfClasses=" << this->NumberOfClasses << " NumberOfHistogramBins=" << this->NumberOfHistogramBins;
   else

@@ -16,7 +16,14 @@
  * Mode Otsu: ITK's multiple-threshold Otsu on a histogram of NumberOfHistogramBins bins splits the
  * intensities into NumberOfClasses classes, labelled 0 (darkest) to NumberOfClasses-1; the
  * thresholds are recorded in field data "Thresholds".
- * ClassifyWindowed applies either mode to the 8-bit windowed values instead of the raw ones.
+ * Mode Automatic: the six CT classes above (0 air .. 5 bone), their boundaries read from the scan
+ * itself: a Gaussian mixture fitted to the histogram of the body (all but the air below -500 HU
+ * open to the sides), each class's centre held in its anatomical range (amTissueMixture: any
+ * contrast phase, kernel and noise); a class the scan does not show (no contrast, no bone in a
+ * crop) has an empty range. Field data "TissueClasses" gives each class's centre, spread, weight
+ * (fraction of the body), whether it was found, and its upper boundary (HU). A scan with no soft
+ * tissue class (not a CT in HU) is an error that says so.
+ * ClassifyWindowed applies Ranges or Otsu to the 8-bit windowed values instead of the raw ones.
  * ExteriorAir (default on): the air around the patient is label 0 connected (across faces) to the
  * sides of the image (the borders of the first two index axes; not the ends of the third, where a
  * trachea may leave the field of view). A voxel of another class that touches it, is darker than
@@ -46,12 +53,13 @@ public:
   enum Modes
   {
     Ranges = 0,
-    Otsu = 1
+    Otsu = 1,
+    Automatic = 2
   };
 
   ///@{
-  /// Ranges (0, default) or Otsu (1).
-  vtkSetClampMacro(Mode, int, Ranges, Otsu);
+  /// Ranges (0, default), Otsu (1) or Automatic (2).
+  vtkSetClampMacro(Mode, int, Ranges, Automatic);
   vtkGetMacro(Mode, int);
   ///@}
 

@@ -1,5 +1,7 @@
 #include "amSnakeTracker.h"
 
+#include "amIntensityPeaks.h"
+
 #include "amSnakeLevelSet.h"
 
 #include "vtkSMPTools.h"
@@ -99,6 +101,16 @@ bool amSnakeTracker::Segment(
     const double half = std::max(this->P.IntensityTolerance * this->Deviation, this->P.MinimumIntensityWindow);
     tlo = this->Mean - half;
     thi = this->Mean + half;
+    // The window stops half-way to the nearest other population of the region (the partial-volume
+    // boundary), so a neighbour within the window (an enhanced wall beside a late-phase blood pool)
+    // is not taken; the seeds' own spread is the organ's.
+    const amIntensityPeaks peaks = amIntensityPeaks::Find(this->Feature);
+    const double own = this->P.IntensityTolerance * this->Deviation;
+    double peak;
+    if (peaks.Below(this->Mean, own, peak))
+      tlo = std::max(tlo, 0.5 * (this->Mean + peak));
+    if (peaks.Above(this->Mean, own, peak))
+      thi = std::min(thi, 0.5 * (this->Mean + peak));
   }
   this->InsideMask.assign(static_cast<size_t>(this->Size[0]) * this->Size[1] * this->Size[2], 0);
   if (!this->Run(tlo, thi, nullptr, 0.15, 0.55))

@@ -7,7 +7,10 @@
 #include "amThoraxPhantomModel.h"
 #include "amThreading.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -20,13 +23,15 @@
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 vtkStandardNewMacro(amTorsoSegmentation);
 
 amTorsoSegmentation::amTorsoSegmentation()
-  : BodyGapClosing(0.0)
+  : AutomaticClasses(true)
+  , BodyGapClosing(0.0)
   , LungOpening(0.0)
   , MinimumComponentVolume(50.0)
   , BloodPoolLabels{ amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood }
@@ -164,17 +169,60 @@ int amTorsoSegmentation::RequestData(
                                                     << ": cannot segment it.");
     return 0;
   }
+  // A chest CT shows air and lung below -500 HU; none at all is a scan in other units (a CT stored
+  // unsigned without its rescale, an MR).
+  const auto darkest = std::min_element(hu->GetPointer(0), hu->GetPointer(0) + n);
+  if (this->AutomaticClasses && *darkest > -500.0f)
+  {
+    vtkErrorMacro("The scan has no air or lung: its darkest value is "
+      << *darkest
+      << ", not below -500 HU. It is not a chest CT in HU (a CT stored unsigned needs its rescale "
+         "intercept, usually -1024; a windowed scan needs InputWindow).");
+    return 0;
+  }
   vtkNew<vtkImageData> huImage;
   huImage->CopyStructure(input);
   huImage->GetPointData()->SetScalars(hu);
   vtkNew<amIntensityClassifier> classifier;
   classifier->SetInputData(huImage);
+  classifier->SetMode(this->AutomaticClasses ? amIntensityClassifier::Automatic : amIntensityClassifier::Ranges);
+  // The classifier's error is this filter's, said once.
+  std::string classifierError;
+  vtkNew<vtkCallbackCommand> keepError;
+  keepError->SetClientData(&classifierError);
+  keepError->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    // VTK's text is "ERROR: In file, line N\nclass (address): message": keep the message.
+    std::string text = callData ? static_cast<const char*>(callData) : "";
+    const auto start = text.find("): ");
+    if (start != std::string::npos)
+      text = text.substr(start + 3);
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      text.pop_back();
+    *static_cast<std::string*>(clientData) += text;
+  });
+  classifier->AddObserver(vtkCommand::ErrorEvent, keepError);
+  vtkNew<vtkCallbackCommand> quiet; // the executive's "returned failure" adds nothing
+  classifier->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
   classifier->Update();
   vtkDataArray* classArray = classifier->GetOutput()->GetPointData()->GetScalars();
-  if (!classArray)
+  if (!classArray || !classifierError.empty())
   {
-    vtkErrorMacro("Classifying the CT by intensity failed.");
+    vtkErrorMacro("Classifying the CT by intensity failed: " << (classifierError.empty() ? std::string("no classes")
+                                                                                         : classifierError));
     return 0;
+  }
+  vtkDataArray* classTable = classifier->GetOutput()->GetFieldData()->GetArray("TissueClasses");
+  if (classTable)
+  {
+    // Classes a chest CT shows; a window's floor clips those below it.
+    const char* what[] = { nullptr, "lung", "fat", nullptr, nullptr, "bone" };
+    const double below[] = { 0, -850, -100, 0, 0, 700 };
+    for (int c : { 1, 2, 5 })
+      if (classTable->GetComponent(c, 4) == 0.0 && !(windowed && below[c] < lowest))
+        vtkWarningMacro("The scan shows no " << what[c] << " intensity class (no peak of the body's histogram near "
+                                             << below[c] << " HU): " << (c == 1 ? "is it a chest CT?" : "")
+                                             << (c == 2 ? "a very lean patient, or not a CT in HU?" : "")
+                                             << (c == 5 ? "the field of view holds no bone." : ""));
   }
   this->UpdateProgress(0.2);
 
@@ -200,6 +248,24 @@ int amTorsoSegmentation::RequestData(
   tissueParameters.LungOpening = this->LungOpening;
   // Below a window that starts above fat's -100 HU, fat reads as air: what is not lung is fat.
   tissueParameters.LeftoverAirIsFat = windowed && lowest > -100.0;
+  if (classTable && classTable->GetComponent(amTorso::SoftClass, 4) != 0.0)
+  {
+    // Marrow brighter than soft tissue's upper tail is trabecular bone; the index axis closest to
+    // the patient's z is axial.
+    tissueParameters.HU = hu->GetPointer(0);
+    tissueParameters.TrabecularLevel =
+      classTable->GetComponent(amTorso::SoftClass, 1) + 3.0 * classTable->GetComponent(amTorso::SoftClass, 2);
+    if (classTable->GetComponent(amTorso::BoneClass, 4) != 0.0)
+      // Half-way to cortical bone (700 HU at least in an adult); a lower centre is a soft kernel's,
+      // a higher one a window's ceiling or dense cortex, neither of which moves a thin bone's edge.
+      tissueParameters.BonePartialLevel = 0.5 *
+        (classTable->GetComponent(amTorso::SoftClass, 1) +
+          std::min(700.0, classTable->GetComponent(amTorso::BoneClass, 1)));
+    tissueParameters.AxialAxis = 0;
+    for (int a = 1; a < 3; ++a)
+      if (std::fabs(direction->GetElement(2, a)) > std::fabs(direction->GetElement(2, tissueParameters.AxialAxis)))
+        tissueParameters.AxialAxis = a;
+  }
   const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
   if (tissues.LungComponents == 0)
     vtkWarningMacro("No lungs: no air inside the body of at least " << this->MinimumComponentVolume << " mm^3.");
@@ -222,6 +288,7 @@ int amTorsoSegmentation::RequestData(
   wall.Thickness = this->WallThickness;
   wall.Sigma = this->WallSmoothingSigma;
   wall.MinimumContrast = this->MinimumWallContrast;
+
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);
   if (!heart.PoolVoxels)
     vtkWarningMacro("No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");
@@ -292,10 +359,12 @@ int amTorsoSegmentation::RequestData(
          heart.PoolLevel })
     levels->InsertNextValue(v);
   output->GetFieldData()->AddArray(levels);
+  if (classTable)
+    output->GetFieldData()->AddArray(classTable);
 
   std::ostringstream p;
-  p << "InputWindow=" << this->InputWindow[0] << "," << this->InputWindow[1]
-    << " BodyGapClosing=" << this->BodyGapClosing << " LungOpening=" << this->LungOpening
+  p << "AutomaticClasses=" << this->AutomaticClasses << " InputWindow=" << this->InputWindow[0] << ","
+    << this->InputWindow[1] << " BodyGapClosing=" << this->BodyGapClosing << " LungOpening=" << this->LungOpening
     << " MinimumComponentVolume=" << this->MinimumComponentVolume << " BloodPoolLabels=";
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
@@ -310,6 +379,7 @@ void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InputWindow: " << this->InputWindow[0] << " " << this->InputWindow[1] << "\n";
+  os << indent << "AutomaticClasses: " << this->AutomaticClasses << "\n";
   os << indent << "BodyGapClosing: " << this->BodyGapClosing << "\n";
   os << indent << "LungOpening: " << this->LungOpening << "\n";
   os << indent << "MinimumComponentVolume: " << this->MinimumComponentVolume << "\n";

@@ -12,10 +12,14 @@
  * The output uses the thorax phantom's label scheme (names in field data "LabelNames"):
  * 0 outside the body, 1 soft tissue, 2 fat, 3 right lung, 4 left lung, 5 myocardium, 6 LV blood,
  * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone). Steps:
- * 1. voxels are classed by amIntensityClassifier's CT ranges (air, lung, fat, soft tissue,
- *    contrast blood, bone); the air connected to the sides of the first two index axes is the
- *    exterior (through no gap of the body wall narrower than twice BodyGapClosing), everything
- *    else is the body (soft tissue unless a step below says otherwise);
+ * 1. voxels are classed as air, lung, fat, soft tissue, contrast blood or bone: with
+ *    AutomaticClasses (default), by the classes read from this scan's own histogram
+ *    (amIntensityClassifier's Automatic mode: a Gaussian mixture with each class's centre held in
+ *    its anatomical range; field data "TissueClasses" gives the centres, spreads and boundaries
+ *    found, and a warning names a class a chest CT shows that this scan does not: lung, fat,
+ *    bone); without it, by amIntensityClassifier's fixed CT ranges; the air connected to the sides of the first two
+ * index axes is the exterior (through no gap of the body wall narrower than twice BodyGapClosing), everything else is
+ * the body (soft tissue unless a step below says otherwise);
  * 2. fat is the fat class opened by the 6-neighbour cross: the one-voxel sheets that partial
  *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
  * 3. the lungs are the two largest components of air inside the body (opened by a ball of
@@ -33,7 +37,7 @@
  *    surroundings' level the median 0-10 mm beyond MaximumWallThickness. The myocardium is the
  *    soft tissue connected to the pools, within MaximumWallThickness of them, whose average lies
  *    on the wall's side of the half-way level, with its cavities filled; lung, fat, bone and other
- *    organs stop it. Where the two levels differ by less than MinimumWallContrast (or three times
+ *    organs stop it. Where the two levels differ by less than MinimumWallContrast (or twice
  *    the average's noise), intensity cannot tell the wall: a warning says so and the wall is the
  *    soft tissue within WallThickness of the pools. Field data "MyocardiumLevels": wall level,
  *    surroundings' level, threshold, noise (HU), 1 where intensity told the wall (else 0), and the
@@ -67,6 +71,14 @@ public:
   /// The organs segmented from seeds (input port 1, optional).
   void SetOrganConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetOrganData(vtkDataObject* data) { this->SetInputData(1, data); }
+
+  ///@{
+  /// The tissue classes read from the scan's own histogram (default on) rather than fixed CT
+  /// ranges (off: boundaries -925, -475, -30, 170, 400 HU).
+  vtkSetMacro(AutomaticClasses, bool);
+  vtkGetMacro(AutomaticClasses, bool);
+  vtkBooleanMacro(AutomaticClasses, bool);
+  ///@}
 
   ///@{
   /// The window (width, level; HU) that mapped the input to 0..255, e.g. 400 40 for a mediastinal
@@ -128,6 +140,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  bool AutomaticClasses;
   double InputWindow[2];
   double BodyGapClosing;
   double LungOpening;

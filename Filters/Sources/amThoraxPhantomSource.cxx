@@ -36,6 +36,14 @@ inline uint64_t SplitMix64(uint64_t x)
   return x ^ (x >> 31);
 }
 
+int LabelOfScannerPoint(const amThoraxPhantomModel& model, const double r[3][3], const double x[3])
+{
+  // The anatomy at a scanner point: the model's point is the rotation's inverse (its transpose).
+  const double p[3] = { r[0][0] * x[0] + r[1][0] * x[1] + r[2][0] * x[2],
+    r[0][1] * x[0] + r[1][1] * x[1] + r[2][1] * x[2], r[0][2] * x[0] + r[1][2] * x[1] + r[2][2] * x[2] };
+  return model.LabelAt(p);
+}
+
 inline double GaussianNoise(uint64_t seed, uint64_t index)
 {
   const uint64_t a = SplitMix64(seed * 0x632BE59BD9B4E019ull + 2 * index);
@@ -112,6 +120,33 @@ amThoraxPhantomSource::amThoraxPhantomSource()
   this->BlurSigma = 0.6;
   this->PartialVolumeSamples = 4;
   this->Seed = 1;
+  this->BloodHounsfieldUnits = amThoraxPhantomModel::HounsfieldUnits(amThoraxPhantomModel::LeftVentricleBlood);
+  this->MyocardiumHounsfieldUnits = amThoraxPhantomModel::HounsfieldUnits(amThoraxPhantomModel::Myocardium);
+  this->PatientRotation[0] = this->PatientRotation[1] = this->PatientRotation[2] = 0.0;
+}
+
+void amThoraxPhantomSource::Rotation(double r[3][3]) const
+{
+  const double d = 3.141592653589793 / 180.0;
+  const double a = this->PatientRotation[0] * d, b = this->PatientRotation[1] * d, c = this->PatientRotation[2] * d;
+  const double x[3][3] = { { 1, 0, 0 }, { 0, std::cos(a), -std::sin(a) }, { 0, std::sin(a), std::cos(a) } };
+  const double y[3][3] = { { std::cos(b), 0, std::sin(b) }, { 0, 1, 0 }, { -std::sin(b), 0, std::cos(b) } };
+  const double z[3][3] = { { std::cos(c), -std::sin(c), 0 }, { std::sin(c), std::cos(c), 0 }, { 0, 0, 1 } };
+  double yx[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+    {
+      yx[i][j] = 0.0;
+      for (int k = 0; k < 3; ++k)
+        yx[i][j] += y[i][k] * x[k][j];
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+    {
+      r[i][j] = 0.0;
+      for (int k = 0; k < 3; ++k)
+        r[i][j] += z[i][k] * yx[k][j];
+    }
 }
 
 amThoraxPhantomSource::~amThoraxPhantomSource() = default;
@@ -191,6 +226,17 @@ int amThoraxPhantomSource::RequestData(
 
   const amThoraxPhantomModel model;
   const double* sp = this->Spacing;
+  double rotation[3][3];
+  this->Rotation(rotation);
+  const double bloodHU = this->BloodHounsfieldUnits, myocardiumHU = this->MyocardiumHounsfieldUnits;
+  const auto huOf = [bloodHU, myocardiumHU](int label) {
+    if (label == amThoraxPhantomModel::LeftVentricleBlood || label == amThoraxPhantomModel::RightVentricleBlood ||
+      label == amThoraxPhantomModel::Aorta)
+      return bloodHU;
+    if (label == amThoraxPhantomModel::Myocardium)
+      return myocardiumHU;
+    return amThoraxPhantomModel::HounsfieldUnits(label);
+  };
 
   // 1. Exact labels at voxel centres.
   vtkNew<vtkUnsignedCharArray> labelArray;
@@ -207,7 +253,7 @@ int amThoraxPhantomSource::RequestData(
               x[0] = origin[0] + i * sp[0];
               x[1] = origin[1] + j * sp[1];
               x[2] = origin[2] + k * sp[2];
-              lab[k * nxy + j * nx + i] = model.LabelAt(x);
+              lab[k * nxy + j * nx + i] = static_cast<unsigned char>(LabelOfScannerPoint(model, rotation, x));
             }
       }))
     return 0;
@@ -232,7 +278,7 @@ int amThoraxPhantomSource::RequestData(
               }
               if (!boundary)
               {
-                hu[id] = static_cast<float>(amThoraxPhantomModel::HounsfieldUnits(l));
+                hu[id] = static_cast<float>(huOf(l));
                 continue;
               }
               double sum = 0.0;
@@ -243,7 +289,7 @@ int amThoraxPhantomSource::RequestData(
                     x[0] = origin[0] + (i + (a + 0.5) / ns - 0.5) * sp[0];
                     x[1] = origin[1] + (j + (b + 0.5) / ns - 0.5) * sp[1];
                     x[2] = origin[2] + (k + (c + 0.5) / ns - 0.5) * sp[2];
-                    sum += amThoraxPhantomModel::HounsfieldUnits(model.LabelAt(x));
+                    sum += huOf(LabelOfScannerPoint(model, rotation, x));
                   }
               hu[id] = static_cast<float>(sum / (ns * ns * ns));
             }
@@ -287,7 +333,10 @@ int amThoraxPhantomSource::RequestData(
   std::ostringstream params;
   params << "Spacing=" << sp[0] << "," << sp[1] << "," << sp[2] << " FieldOfView=" << this->FieldOfView[0] << ","
          << this->FieldOfView[1] << "," << this->FieldOfView[2] << " NoiseStandardDeviation=" << sigma
-         << " BlurSigma=" << this->BlurSigma << " PartialVolumeSamples=" << ns << " Seed=" << this->Seed;
+         << " BlurSigma=" << this->BlurSigma << " PartialVolumeSamples=" << ns << " Seed=" << this->Seed
+         << " BloodHounsfieldUnits=" << bloodHU << " MyocardiumHounsfieldUnits=" << myocardiumHU
+         << " PatientRotation=" << this->PatientRotation[0] << "," << this->PatientRotation[1] << ","
+         << this->PatientRotation[2];
   for (vtkImageData* img : { ct, labels })
   {
     img->GetFieldData()->AddArray(names);
@@ -300,7 +349,9 @@ int amThoraxPhantomSource::RequestData(
 int amThoraxPhantomSource::GetLabelAtPoint(double x, double y, double z)
 {
   const double p[3] = { x, y, z };
-  return amThoraxPhantomModel().LabelAt(p);
+  double r[3][3];
+  this->Rotation(r);
+  return LabelOfScannerPoint(amThoraxPhantomModel(), r, p);
 }
 
 double amThoraxPhantomSource::GetExactVolume(int label)
@@ -323,9 +374,20 @@ int amThoraxPhantomSource::GetNumberOfLabels()
   return amThoraxPhantomModel::NumberOfLabels;
 }
 
+void amThoraxPhantomSource::ModelToScanner(const double model[3], double scanner[3])
+{
+  double r[3][3];
+  this->Rotation(r);
+  const double m[3] = { model[0], model[1], model[2] }; // model and scanner may be one array
+  for (int i = 0; i < 3; ++i)
+    scanner[i] = r[i][0] * m[0] + r[i][1] * m[1] + r[i][2] * m[2];
+}
+
 void amThoraxPhantomSource::GetOrganCenter(int label, double center[3])
 {
-  amThoraxPhantomModel().GetOrganCenter(label, center);
+  double c[3];
+  amThoraxPhantomModel().GetOrganCenter(label, c);
+  this->ModelToScanner(c, center);
 }
 
 void amThoraxPhantomSource::PrintSelf(ostream& os, vtkIndent indent)
@@ -338,4 +400,8 @@ void amThoraxPhantomSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BlurSigma: " << this->BlurSigma << " mm\n";
   os << indent << "PartialVolumeSamples: " << this->PartialVolumeSamples << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "BloodHounsfieldUnits: " << this->BloodHounsfieldUnits << "\n";
+  os << indent << "MyocardiumHounsfieldUnits: " << this->MyocardiumHounsfieldUnits << "\n";
+  os << indent << "PatientRotation: " << this->PatientRotation[0] << " " << this->PatientRotation[1] << " "
+     << this->PatientRotation[2] << " degrees\n";
 }

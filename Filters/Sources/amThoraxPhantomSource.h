@@ -16,6 +16,12 @@
  *    a counter-based hash of (Seed, voxel index) so the result is bit-identical for the same seed
  *    whatever the number of threads.
  *
+ * Variations a real scan shows, for testing what is not tuned to the defaults: the contrast phase
+ * (BloodHounsfieldUnits, MyocardiumHounsfieldUnits: arterial 300/50 by default, late 170/95), the
+ * reconstruction kernel (BlurSigma), noise, anisotropic voxels (Spacing), a cropped field of view
+ * (FieldOfView), and a patient rotated in the scanner (PatientRotation: the anatomy, labels and CT
+ * alike, turned about the origin; GetLabelAtPoint and GetOrganCenter follow it).
+ *
  * The image covers FieldOfView (mm) centred on the origin with the given Spacing (mm); the
  * default, 320 x 240 x 210 mm at 1 mm, is the scale of the paper's NCAT thorax (16 M voxels).
  * 0.5 mm works too (129 M voxels, about 0.4 GB for both outputs).
@@ -72,6 +78,26 @@ public:
   vtkGetMacro(Seed, int);
   ///@}
 
+  ///@{
+  /// The contrast phase: HU of the blood pools and the aorta (default 300, arterial) and of the
+  /// myocardium (default 50).
+  vtkSetClampMacro(BloodHounsfieldUnits, double, -1000.0, 3000.0);
+  vtkGetMacro(BloodHounsfieldUnits, double);
+  vtkSetClampMacro(MyocardiumHounsfieldUnits, double, -1000.0, 3000.0);
+  vtkGetMacro(MyocardiumHounsfieldUnits, double);
+  ///@}
+
+  ///@{
+  /// The patient's rotation in the scanner, degrees about the x, y and z axes (applied in that
+  /// order, about the origin; default 0 0 0).
+  vtkSetVector3Macro(PatientRotation, double);
+  vtkGetVector3Macro(PatientRotation, double);
+  ///@}
+
+  /// A point of the unrotated anatomy (e.g. a seed placed on the default phantom) where
+  /// PatientRotation puts it in the scanner.
+  void ModelToScanner(const double model[3], double scanner[3]);
+
   /// Ground truth, for tests and scripts: the label at a point (mm, LPS).
   int GetLabelAtPoint(double x, double y, double z);
   /// Ground truth: closed-form volume (mm^3) of a label, or -1 when not closed-form.
@@ -87,6 +113,8 @@ public:
 
 protected:
   amThoraxPhantomSource();
+  /// The rotation matrix of PatientRotation (model to scanner).
+  void Rotation(double r[3][3]) const;
   ~amThoraxPhantomSource() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -98,6 +126,9 @@ protected:
   double BlurSigma;
   int PartialVolumeSamples;
   int Seed;
+  double BloodHounsfieldUnits;
+  double MyocardiumHounsfieldUnits;
+  double PatientRotation[3];
 
 private:
   bool ComputeGeometry(int dims[3], double origin[3]);

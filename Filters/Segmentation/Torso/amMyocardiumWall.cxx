@@ -74,15 +74,29 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* h
   const amVoxelGrid& b = box.Grid;
   const std::size_t n = b.Size();
   amVoxelMask pools(n), candidate(n), soft(n);
-  std::vector<float> value(n);
+  std::vector<float> value(n), blood;
   for (std::size_t v = 0; v < n; ++v)
   {
     const std::size_t w = box.Global(g, v);
     pools[v] = pool[labels[w]];
     candidate[v] = labels[w] == Phantom::SoftTissue || labels[w] == amVoxel::Pending;
-    soft[v] = classes[w] == SoftClass;
     value[v] = hu[w];
+    if (pools[v])
+      blood.push_back(value[v]);
   }
+  report.PoolLevel = Median(blood);
+  const std::vector<float> d = amVoxel::Distance(b, pools);
+  const double shellIn = std::max(3.0, 1.5 * hmax), shellOut = std::max(6.0, 3.0 * hmax);
+  // The wall is soft tissue darker than half-way from its raw level to the pools': brighter voxels
+  // are the pools' partial volume (a soft kernel spreads it over millimetres), whatever the phase.
+  std::vector<float> raw;
+  for (std::size_t v = 0; v < n; ++v)
+    if (candidate[v] && classes[box.Global(g, v)] == SoftClass && d[v] >= shellIn && d[v] <= shellOut)
+      raw.push_back(value[v]);
+  const double rawWall = Median(raw);
+  const double bright = report.PoolLevel > rawWall + p.MinimumContrast ? 0.5 * (report.PoolLevel + rawWall) : 1e30;
+  for (std::size_t v = 0; v < n; ++v)
+    soft[v] = classes[box.Global(g, v)] == SoftClass && value[v] < bright;
   // The mean over soft tissue only, away from its edges: partial volume with lung or blood would
   // pull the wall's level towards theirs.
   const amVoxelMask inner = amVoxel::Erode26(b, soft);
@@ -97,13 +111,7 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* h
   for (std::size_t v = 0; v < n; ++v)
     level[v] = weight[v] > 1e-3f ? level[v] / weight[v] : value[v];
 
-  const std::vector<float> d = amVoxel::Distance(b, pools);
-  const double shellIn = std::max(3.0, 1.5 * hmax), shellOut = std::max(6.0, 3.0 * hmax);
-  std::vector<float> wall, around, blood;
-  for (std::size_t v = 0; v < n; ++v)
-    if (pools[v])
-      blood.push_back(value[v]);
-  report.PoolLevel = Median(blood);
+  std::vector<float> wall, around;
   for (std::size_t v = 0; v < n; ++v)
   {
     if (!candidate[v] || !inner[v])
@@ -121,7 +129,7 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* h
   report.Noise = 1.4826 * Median(spread);
   const double contrast = report.WallLevel - report.SurroundingLevel;
   report.Contrast =
-    !wall.empty() && !around.empty() && std::fabs(contrast) >= std::max(p.MinimumContrast, 3.0 * report.Noise);
+    !wall.empty() && !around.empty() && std::fabs(contrast) >= std::max(p.MinimumContrast, 2.0 * report.Noise);
   report.Threshold = 0.5 * (report.WallLevel + report.SurroundingLevel);
 
   amVoxelMask grow(n, 0);

@@ -38,6 +38,7 @@ struct TissueReport
   int LungComponents = 0;           // air/lung components inside the body of at least the minimum size
   bool LungsSplit = false;          // one air component held both lungs: split at the body's mid-plane
   int BoneComponents = 0;
+  std::size_t TrabecularVoxels = 0; // marrow added to the cortical bone
 };
 
 struct TissueParameters
@@ -46,6 +47,15 @@ struct TissueParameters
   double BodyGap = 0.0;          // mm: see amTorsoSegmentation::BodyGapClosing
   double LungOpening = 0.0;      // mm: the lungs are the air inside the body opened by this ball
   bool LeftoverAirIsFat = false; // air inside the body that is not lung is fat (below the window)
+  // Trabecular bone: voxels brighter than TrabecularLevel (HU) that cortical bone encloses in an
+  // axial slice (across index axis AxialAxis), in holes of at most MaximumMarrowArea mm^2.
+  const float* HU = nullptr;
+  double TrabecularLevel = 1e30;
+  int AxialAxis = 2;
+  double MaximumMarrowArea = 2000.0;
+  // Bone's partial volume: voxels brighter than BonePartialLevel (HU) within two voxels of the
+  // bone class (where contrast blood pushes the bone class's boundary above thin bones' edges).
+  double BonePartialLevel = 1e30;
 };
 
 /// Tissue labels from the classes: the exterior air (the air class connected to the sides of the

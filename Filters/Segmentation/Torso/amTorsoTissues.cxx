@@ -156,9 +156,33 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
       labels[v] = p.LeftoverAirIsFat ? Phantom::Fat : amVoxel::Pending;
   }
 
-  // Bone: the largest piece is the spine, the others ribs.
+  // Bone: cortical bone and the trabecular bone it encloses (darker, among soft tissue and
+  // contrast blood in intensity, but inside a cortical ring in an axial slice; the spinal canal
+  // and the marrow's fat are darker than the level and stay out). The largest piece is the spine,
+  // the others ribs.
   for (std::size_t v = 0; v < n; ++v)
     mask[v] = classes[v] == BoneClass && !exterior[v];
+  if (p.HU && p.BonePartialLevel < 1e30)
+    for (int ring = 0; ring < 2; ++ring)
+    {
+      amVoxelMask grown = mask;
+      for (std::size_t v = 0; v < n; ++v)
+        if (!mask[v] && !exterior[v] && p.HU[v] > p.BonePartialLevel)
+          g.AllNeighbours(v, [&](std::size_t w) { grown[v] = grown[v] || mask[w]; });
+      mask.swap(grown);
+    }
+  if (p.HU)
+  {
+    const int a = p.AxialAxis;
+    const double pixel = g.Spacing[(a + 1) % 3] * g.Spacing[(a + 2) % 3];
+    const amVoxelMask marrow = amVoxel::SliceHoles(g, mask, a, static_cast<std::size_t>(p.MaximumMarrowArea / pixel));
+    for (std::size_t v = 0; v < n; ++v)
+      if (marrow[v] && !exterior[v] && p.HU[v] > p.TrabecularLevel)
+      {
+        mask[v] = 1;
+        ++report.TrabecularVoxels;
+      }
+  }
   amVoxel::Components(g, mask, id, sizes);
   const std::vector<int> bones = BySize(sizes);
   for (const int c : bones)

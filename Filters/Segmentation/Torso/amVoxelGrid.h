@@ -76,6 +76,11 @@ int Components(const amVoxelGrid& g, const amVoxelMask& mask, std::vector<int>& 
 /// border of the grid (a cavity), and returns how many it set.
 std::size_t FillHoles(const amVoxelGrid& g, amVoxelMask& mask);
 
+/// The holes of the mask within its slices across axis: the 4-connected pieces of a slice outside
+/// the mask that do not reach the slice's border, of at most maximumVoxels (what a ring of the mask
+/// encloses in a slice, such as a bone's marrow inside its cortex).
+amVoxelMask SliceHoles(const amVoxelGrid& g, const amVoxelMask& mask, int axis, std::size_t maximumVoxels);
+
 /// Voxels of the mask whose 26 neighbours are all in it (outside the grid counts as in it).
 amVoxelMask Erode26(const amVoxelGrid& g, const amVoxelMask& mask);
 
