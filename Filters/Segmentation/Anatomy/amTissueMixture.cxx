@@ -80,6 +80,19 @@ int Expectation(const std::vector<double>& h, double total,
 {
   const int K = amTissueMixture::NumberOfClasses;
   const double uniformDensity = BinWidth / (HistogramHigh - HistogramLow);
+  // Each active class's share of a bin's density at x, in p; returns the bin's whole density.
+  const auto joint = [&](double x, std::array<double, K>& p) {
+    double sum = r.Uniform * uniformDensity;
+    for (int k = 0; k < K; ++k)
+      if (on[k])
+      {
+        const auto& c = r.Classes[k];
+        const double z = (x - c.Mean) / c.Sigma;
+        p[k] = c.Weight * BinWidth * std::exp(-0.5 * z * z) / (c.Sigma * std::sqrt(TwoPi));
+        sum += p[k];
+      }
+    return sum;
+  };
   int iteration = 0;
   for (; iteration < 500; ++iteration)
   {
@@ -91,15 +104,7 @@ int Expectation(const std::vector<double>& h, double total,
         continue;
       const double x = Centre(b);
       std::array<double, K> p{};
-      double sum = r.Uniform * uniformDensity;
-      for (int k = 0; k < K; ++k)
-        if (on[k])
-        {
-          const auto& c = r.Classes[k];
-          const double z = (x - c.Mean) / c.Sigma;
-          p[k] = c.Weight * BinWidth * std::exp(-0.5 * z * z) / (c.Sigma * std::sqrt(TwoPi));
-          sum += p[k];
-        }
+      const double sum = joint(x, p);
       if (sum <= 0.0)
         continue;
       for (int k = 0; k < K; ++k)
@@ -121,23 +126,14 @@ int Expectation(const std::vector<double>& h, double total,
       change = std::max(change, std::fabs(mean - c.Mean));
       c.Mean = mean;
     }
-    // The spreads about the new centres (a second pass over the histogram would change nothing
-    // the next iteration does not).
+    // The spreads about the new centres, with the responsibilities evaluated at them.
     for (int b = 0; b < Bins; ++b)
     {
       if (h[b] == 0.0)
         continue;
       const double x = Centre(b);
       std::array<double, K> p{};
-      double sum = r.Uniform * uniformDensity;
-      for (int k = 0; k < K; ++k)
-        if (on[k])
-        {
-          const auto& c = r.Classes[k];
-          const double z = (x - c.Mean) / c.Sigma;
-          p[k] = c.Weight * BinWidth * std::exp(-0.5 * z * z) / (c.Sigma * std::sqrt(TwoPi));
-          sum += p[k];
-        }
+      const double sum = joint(x, p);
       if (sum <= 0.0)
         continue;
       for (int k = 0; k < K; ++k)
