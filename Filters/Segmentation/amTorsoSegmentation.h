@@ -17,9 +17,10 @@
  *    (amIntensityClassifier's Automatic mode: a Gaussian mixture with each class's centre held in
  *    its anatomical range; field data "TissueClasses" gives the centres, spreads and boundaries
  *    found, and a warning names a class a chest CT shows that this scan does not: lung, fat,
- *    bone); without it, by amIntensityClassifier's fixed CT ranges; the air connected to the sides of the first two
- * index axes is the exterior (through no gap of the body wall narrower than twice BodyGapClosing), everything else is
- * the body (soft tissue unless a step below says otherwise);
+ *    bone); without it, by amIntensityClassifier's fixed CT ranges; the air connected to the
+ *    sides of the first two index axes is the exterior (through no gap of the body wall
+ *    narrower than twice BodyGapClosing), everything else is the body (soft tissue unless a
+ *    step below says otherwise);
  * 2. fat is the fat class opened by the 6-neighbour cross: the one-voxel sheets that partial
  *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
  * 3. the lungs are the two largest components of air inside the body (opened by a ball of
