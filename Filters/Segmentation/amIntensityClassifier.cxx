@@ -248,7 +248,7 @@ int amIntensityClassifier::RequestData(
     }
     ranges.clear();
     for (int c = amTissueMixture::Lung; c < amTissueMixture::NumberOfClasses; ++c)
-      if (mixture.Classes[c].Found)
+      if (mixture.Classes[c].Found || c == amTissueMixture::Bone) // bone's range is kept (amTissueMixture)
       {
         ranges.push_back(mixture.Upper[c - 1]);
         ranges.push_back(c == amTissueMixture::Bone ? 1e30 : mixture.Upper[c]);

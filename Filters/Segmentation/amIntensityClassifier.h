@@ -19,8 +19,9 @@
  * Mode Automatic: the six CT classes above (0 air .. 5 bone), their boundaries read from the scan
  * itself: a Gaussian mixture fitted to the histogram of the body (all but the air below -500 HU
  * open to the sides), each class's centre held in its anatomical range (amTissueMixture: any
- * contrast phase, kernel and noise); a class the scan does not show (no contrast, no bone in a
- * crop) has an empty range. Field data "TissueClasses" gives each class's centre, spread, weight
+ * contrast phase, kernel and noise); a class the scan does not show (no contrast, no fat) has an
+ * empty range, except bone, which without a peak of its own (a crop, thin bone at coarse voxels)
+ * starts half-way from soft tissue to cortical bone (700 HU), above any contrast. Field data "TissueClasses" gives each class's centre, spread, weight
  * (fraction of the body), whether it was found, and its upper boundary (HU). A scan with no soft
  * tissue class (not a CT in HU) is an error that says so.
  * ClassifyWindowed applies Ranges or Otsu to the 8-bit windowed values instead of the raw ones.

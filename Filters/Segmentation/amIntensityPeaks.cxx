@@ -43,17 +43,21 @@ amIntensityPeaks amIntensityPeaks::Find(const std::vector<float>& values, double
     for (int b = left; b <= right; ++b)
       mass += h[b];
     if (mass >= minimumShare * total)
+    {
       peaks.Centres.push_back(lo + (m + 0.5) * width);
+      peaks.BasinLow.push_back(lo + left * width);
+      peaks.BasinHigh.push_back(lo + (right + 1) * width);
+    }
   }
   return peaks;
 }
 
 bool amIntensityPeaks::Below(double mean, double ownReach, double& peak) const
 {
-  for (auto c = this->Centres.rbegin(); c != this->Centres.rend(); ++c)
-    if (*c < mean - ownReach)
+  for (std::size_t i = this->Centres.size(); i-- > 0;)
+    if (this->Centres[i] < mean - ownReach && !(this->BasinLow[i] <= mean && mean <= this->BasinHigh[i]))
     {
-      peak = *c;
+      peak = this->Centres[i];
       return true;
     }
   return false;
@@ -61,10 +65,10 @@ bool amIntensityPeaks::Below(double mean, double ownReach, double& peak) const
 
 bool amIntensityPeaks::Above(double mean, double ownReach, double& peak) const
 {
-  for (const double c : this->Centres)
-    if (c > mean + ownReach)
+  for (std::size_t i = 0; i < this->Centres.size(); ++i)
+    if (this->Centres[i] > mean + ownReach && !(this->BasinLow[i] <= mean && mean <= this->BasinHigh[i]))
     {
-      peak = c;
+      peak = this->Centres[i];
       return true;
     }
   return false;

@@ -16,10 +16,13 @@ struct amIntensityPeaks
   /// over the values' range, smoothed over two bins) holding at least minimumShare of the values
   /// between their neighbouring minima.
   std::vector<double> Centres;
+  /// Each peak's basin: the values between the histogram's minima on either side of it.
+  std::vector<double> BasinLow, BasinHigh;
 
   static amIntensityPeaks Find(const std::vector<float>& values, double minimumShare = 0.02);
 
-  /// The nearest peak below mean - ownReach (false when there is none), and likewise above.
+  /// The nearest peak below mean - ownReach whose basin does not hold mean (that peak is the seed's
+  /// own population), false when there is none; likewise above.
   bool Below(double mean, double ownReach, double& peak) const;
   bool Above(double mean, double ownReach, double& peak) const;
 };

@@ -12,6 +12,9 @@ constexpr double HistogramHigh = 1700.0;
 constexpr double BinWidth = 4.0;
 constexpr int Bins = static_cast<int>((HistogramHigh - HistogramLow) / BinWidth);
 constexpr double TwoPi = 6.283185307179586;
+// Cortical bone in an adult (HU): the far side of the soft-tissue/bone boundary where the scan
+// shows no bone peak of its own.
+constexpr double CorticalBone = 700.0;
 
 struct Prior
 {
@@ -286,6 +289,17 @@ amTissueMixture::Result amTissueMixture::FitHistogram(
     for (int j = previous; j < k; ++j)
       r.Upper[j] = t;
     previous = k;
+  }
+  if (!on[Bone])
+  {
+    // No peak of bone (a crop without bone, or thin bone blurred by coarse voxels): what is
+    // brighter than every class found and half-way to cortical bone is still bone.
+    double t = 0.5 * (soft.Mean + CorticalBone);
+    if (on[Blood])
+      t = std::max(t, blood.Mean + 3.0 * blood.Sigma);
+    for (int j = previous; j < Bone; ++j)
+      r.Upper[j] = t;
+    previous = Bone;
   }
   for (int j = previous; j < NumberOfClasses; ++j)
     r.Upper[j] = HistogramHigh * 1e6;

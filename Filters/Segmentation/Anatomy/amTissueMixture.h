@@ -25,6 +25,9 @@
  * (the partial-volume boundary of two tissues), except:
  * - Soft|Blood lies at least 2.5 spreads below the blood's centre, so that an enhanced wall
  *   (late phase) stays soft tissue;
+ * - where the scan shows no bone peak (a crop without bone, thin bone blurred by coarse voxels),
+ *   bone is still what lies beyond half-way from soft tissue to cortical bone (700 HU) and 3
+ *   spreads above any contrast blood: Found says there was no peak, the range is kept;
  * - the boundary below Bone lies half-way between soft tissue and bone (thin bones survive partial
  *   volume), raised to 3 spreads above the blood's centre where contrast is that bright.
  */
@@ -66,7 +69,7 @@ public:
     std::array<Component, NumberOfClasses> Classes;
     double Uniform = 0.0; // weight of the partial-volume component
     /// Upper boundary of each class (HU): class c is [Upper[c-1], Upper[c]) (Air from -inf, Bone to
-    /// +inf); a class not found has an empty range.
+    /// +inf); a class not found has an empty range, except bone.
     std::array<double, NumberOfClasses> Upper{};
     std::size_t Samples = 0;
     int Iterations = 0;
