@@ -31,6 +31,7 @@ vtkStandardNewMacro(amTorsoSegmentation);
 
 amTorsoSegmentation::amTorsoSegmentation()
   : AutomaticClasses(true)
+  , MaximumNoise(25.0)
   , BodyGapClosing(0.0)
   , LungOpening(0.0)
   , MinimumComponentVolume(50.0)
@@ -180,6 +181,30 @@ int amTorsoSegmentation::RequestData(
          "intercept, usually -1024; a windowed scan needs InputWindow).");
     return 0;
   }
+  amVoxelGrid grid;
+  input->GetDimensions(grid.N);
+  input->GetSpacing(grid.Spacing);
+  for (int a = 0; a < 3; ++a)
+    grid.Spacing[a] = std::fabs(grid.Spacing[a]);
+  // A scan noisier than MaximumNoise (low dose, thin slices) is smoothed until its noise is four
+  // fifths of it (a margin, so a scan just above the bound is not left just below it): voxel by
+  // voxel, 60 HU of noise leaves fat and soft tissue one population, and the wall's average too
+  // noisy to tell.
+  const double noise = amVoxel::NoiseLevel(grid, hu->GetPointer(0), -500.0f);
+  double noiseSmoothing = 0.0;
+  if (noise > this->MaximumNoise)
+  {
+    const double finest = std::min({ grid.Spacing[0], grid.Spacing[1], grid.Spacing[2] });
+    for (noiseSmoothing = 0.1 * finest;
+         noise * amVoxel::GaussianNoiseFactor(grid, noiseSmoothing) > 0.8 * this->MaximumNoise &&
+         noiseSmoothing < 4.0 * finest;
+         noiseSmoothing += 0.05 * finest)
+    {
+    }
+    std::vector<float> smoothed(hu->GetPointer(0), hu->GetPointer(0) + n);
+    amVoxel::Gaussian(grid, smoothed, noiseSmoothing);
+    std::copy(smoothed.begin(), smoothed.end(), hu->GetPointer(0));
+  }
   vtkNew<vtkImageData> huImage;
   huImage->CopyStructure(input);
   huImage->GetPointData()->SetScalars(hu);
@@ -226,11 +251,6 @@ int amTorsoSegmentation::RequestData(
   }
   this->UpdateProgress(0.2);
 
-  amVoxelGrid grid;
-  input->GetDimensions(grid.N);
-  input->GetSpacing(grid.Spacing);
-  for (int a = 0; a < 3; ++a)
-    grid.Spacing[a] = std::fabs(grid.Spacing[a]);
   const std::vector<std::uint8_t> classes(static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)),
     static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)) + n);
   const double* origin = input->GetOrigin();
@@ -269,9 +289,9 @@ int amTorsoSegmentation::RequestData(
   const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
   if (tissues.LungComponents == 0)
     vtkWarningMacro("No lungs: no air inside the body of at least " << this->MinimumComponentVolume << " mm^3.");
-  else if (tissues.LungsSplit)
-    vtkWarningMacro("The lungs are one component (joined at the trachea or bronchi): they are split at the body's "
-                    "mid-plane into right and left lung.");
+  else if (tissues.LungsSplitAtMidPlane)
+    vtkWarningMacro("The lungs are one component that no depth parts in two (joined more widely than at the "
+                    "trachea or bronchi): they are split at the body's mid-plane into right and left lung.");
   this->UpdateProgress(0.4);
 
   std::vector<bool> organ(256, false);
@@ -356,15 +376,24 @@ int amTorsoSegmentation::RequestData(
   vtkNew<vtkDoubleArray> levels;
   levels->SetName("MyocardiumLevels");
   for (double v : { heart.WallLevel, heart.SurroundingLevel, heart.Threshold, heart.Noise, heart.Contrast ? 1.0 : 0.0,
-         heart.PoolLevel })
+         heart.PoolLevel, heart.Sigma })
     levels->InsertNextValue(v);
   output->GetFieldData()->AddArray(levels);
   if (classTable)
     output->GetFieldData()->AddArray(classTable);
+  vtkNew<vtkDoubleArray> noiseArray;
+  noiseArray->SetName("Noise");
+  noiseArray->SetNumberOfComponents(2);
+  noiseArray->SetComponentName(0, "Noise_HU");
+  noiseArray->SetComponentName(1, "Smoothing_mm");
+  const double noiseRow[2] = { noise, noiseSmoothing };
+  noiseArray->InsertNextTuple(noiseRow);
+  output->GetFieldData()->AddArray(noiseArray);
 
   std::ostringstream p;
-  p << "AutomaticClasses=" << this->AutomaticClasses << " InputWindow=" << this->InputWindow[0] << ","
-    << this->InputWindow[1] << " BodyGapClosing=" << this->BodyGapClosing << " LungOpening=" << this->LungOpening
+  p << "AutomaticClasses=" << this->AutomaticClasses << " MaximumNoise=" << this->MaximumNoise
+    << " InputWindow=" << this->InputWindow[0] << "," << this->InputWindow[1]
+    << " BodyGapClosing=" << this->BodyGapClosing << " LungOpening=" << this->LungOpening
     << " MinimumComponentVolume=" << this->MinimumComponentVolume << " BloodPoolLabels=";
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
@@ -380,6 +409,7 @@ void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "InputWindow: " << this->InputWindow[0] << " " << this->InputWindow[1] << "\n";
   os << indent << "AutomaticClasses: " << this->AutomaticClasses << "\n";
+  os << indent << "MaximumNoise: " << this->MaximumNoise << "\n";
   os << indent << "BodyGapClosing: " << this->BodyGapClosing << "\n";
   os << indent << "LungOpening: " << this->LungOpening << "\n";
   os << indent << "MinimumComponentVolume: " << this->MinimumComponentVolume << "\n";

@@ -12,6 +12,7 @@
  * The output uses the thorax phantom's label scheme (names in field data "LabelNames"):
  * 0 outside the body, 1 soft tissue, 2 fat, 3 right lung, 4 left lung, 5 myocardium, 6 LV blood,
  * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone). Steps:
+ * 0. a scan noisier than MaximumNoise is smoothed to four fifths of it (the least Gaussian);
  * 1. voxels are classed as air, lung, fat, soft tissue, contrast blood or bone: with
  *    AutomaticClasses (default), by the classes read from this scan's own histogram
  *    (amIntensityClassifier's Automatic mode: a Gaussian mixture with each class's centre held in
@@ -25,15 +26,20 @@
  *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
  * 3. the lungs are the two largest components of air inside the body (opened by a ball of
  *    LungOpening mm when it is set), right and left by their centres' world x (x towards the
- *    patient's left); where one component holds both (joined at the trachea), it is split at the
- *    body's mid-plane and a warning says so. Other air inside the body goes to its neighbours,
+ *    patient's left); where one component holds both (joined at the trachea), it is parted where
+ *    the lungs meet: its deepest parts, at the least depth where they fall into two lungs, and
+ *    every voxel to the nearer (where no depth parts it, at the body's mid-plane, with a
+ *    warning). Other air inside the body goes to its neighbours,
  *    or is fat when InputWindow starts above fat's -100 HU (fat then reads as air);
  * 4. the largest bone component is the spine, every other one is rib (or other bone);
  * 5. the organs of input 1 are written over these;
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
  *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a
- *    Gaussian of WallSmoothingSigma mm over soft tissue alone (its voxels whose 26 neighbours are
- *    all soft tissue, so partial volume with blood or lung does not bias it). The wall's level is
+ *    Gaussian of WallSmoothingSigma mm (at least 1.5 voxels) over soft tissue alone (its voxels
+ *    whose 26 neighbours are all soft tissue and that are darker than half-way to the pools, so
+ *    partial volume with blood or lung does not bias it); the Gaussian grows by half, up to two
+ *    and a half times, while the contrast below stands less than four times above the average's
+ *    noise. The wall's level is
  *    the median of that average 3-6 mm from the blood pools (BloodPoolLabels of input 1); the
  *    surroundings' level the median 0-10 mm beyond MaximumWallThickness. The myocardium is the
  *    soft tissue connected to the pools, within MaximumWallThickness of them, whose average lies
@@ -41,14 +47,15 @@
  *    organs stop it. Where the two levels differ by less than MinimumWallContrast (or twice
  *    the average's noise), intensity cannot tell the wall: a warning says so and the wall is the
  *    soft tissue within WallThickness of the pools. Field data "MyocardiumLevels": wall level,
- *    surroundings' level, threshold, noise (HU), 1 where intensity told the wall (else 0), and the
+ *    surroundings' level, threshold, noise (HU), 1 where intensity told the wall (else 0), the
  *    blood pools' level (HU; pools not brighter than the wall by MinimumWallContrast give a
- *    warning: a scan without contrast, or a seed outside the blood pool);
+ *    warning: a scan without contrast, or a seed outside the blood pool), and the Gaussian
+ *    used (mm);
  * 7. every voxel left undecided goes to the most frequent label among its neighbours; components
  *    smaller than MinimumComponentVolume are handed to their neighbours the same way, and every
  *    organ but soft tissue, fat and ribs keeps only its largest component.
- * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split, no
- * blood pools (no myocardium), pools no brighter than the wall, a pool at the image's border (a
+ * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split at the
+ * mid-plane, no blood pools (no myocardium), pools no brighter than the wall, a pool at the image's border (a
  * scan that cuts the heart), an empty myocardium, a label of input 1 lost.
  * Errors: an empty or non-scalar CT, a non-finite voxel, input 1 on another grid or not a label map.
  *
@@ -79,6 +86,15 @@ public:
   vtkSetMacro(AutomaticClasses, bool);
   vtkGetMacro(AutomaticClasses, bool);
   vtkBooleanMacro(AutomaticClasses, bool);
+  ///@}
+
+  ///@{
+  /// The most noise (HU, standard deviation) the classes are read at (default 25): a noisier scan
+  /// is smoothed by the least Gaussian that brings its noise (measured from neighbouring voxels'
+  /// second differences) down to four fifths of this; field data "Noise" gives the noise measured
+  /// and the Gaussian (mm).
+  vtkSetClampMacro(MaximumNoise, double, 1.0, 1e6);
+  vtkGetMacro(MaximumNoise, double);
   ///@}
 
   ///@{
@@ -142,6 +158,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool AutomaticClasses;
+  double MaximumNoise;
   double InputWindow[2];
   double BodyGapClosing;
   double LungOpening;

@@ -109,15 +109,14 @@ INSTANTIATE_TEST_SUITE_P(Sample, SegmentationVariations,
   ::testing::Values(Variation{ "arterial", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 } },
     Variation{ "late_phase", { 2, 2, 2 }, 20, 0.6, 170, 95, { 0, 0, 0 } },
     Variation{ "dense_contrast", { 2, 2, 2 }, 20, 0.6, 400, 60, { 0, 0, 0 } },
+    Variation{ "noise_35", { 1.5, 1.5, 1.5 }, 35, 0.6, 300, 50, { 0, 0, 0 } },
     Variation{ "soft_kernel", { 2, 2, 2 }, 20, 1.5, 300, 50, { 0, 0, 0 } },
     Variation{ "thick_slices", { 0.8, 0.8, 2.5 }, 20, 0.6, 300, 50, { 0, 0, 0 } },
     Variation{ "rotated", { 2, 2, 2 }, 20, 0.6, 300, 50, { 4, -3, 5 } }),
   [](const ::testing::TestParamInfo<Variation>& info) { return info.param.Name; });
 
-// Variations whose bars are not met yet (the note and docs/limits.md give their figures): 35 HU of
-// noise leaves the myocardium at Dice 0.85 (the wall's smoothed level is too noisy at a 2 mm
-// Gaussian), 60 HU merges fat with soft tissue in the histogram. Reported by ctest as disabled.
+// A variation whose bars are not met yet (docs/limits.md gives its figures): under 60 HU of noise
+// the ribs lose their edges (Dice 0.80) and the myocardium is 0.92. Reported by ctest as disabled.
 INSTANTIATE_TEST_SUITE_P(DISABLED_Missed, SegmentationVariations,
-  ::testing::Values(Variation{ "noise_35", { 1.5, 1.5, 1.5 }, 35, 0.6, 300, 50, { 0, 0, 0 } },
-    Variation{ "noise_60", { 2, 2, 2 }, 60, 0.6, 300, 50, { 0, 0, 0 } }),
+  ::testing::Values(Variation{ "noise_60", { 2, 2, 2 }, 60, 0.6, 300, 50, { 0, 0, 0 } }),
   [](const ::testing::TestParamInfo<Variation>& info) { return info.param.Name; });

@@ -1,5 +1,6 @@
 // The whole simulation domain from a CT: every organ of the noisy phantom against its truth, a
 // synthetic heart whose wall has no contrast, the voxel operations, and bad input.
+#include "Torso/amTorsoLabels.h"
 #include "Torso/amVoxelGrid.h"
 #include "amSnakeSegmentation.h"
 #include "amTestUtilities.h"
@@ -388,4 +389,58 @@ TEST(VoxelOperations, SliceHolesAreWhatARingEnclosesInOneSlice)
   // Holes larger than the bound are not filled (a rib cage encloses the whole chest).
   const amVoxelMask small = amVoxel::SliceHoles(g, ring, 2, 15);
   EXPECT_EQ(std::count(small.begin(), small.end(), 1), 0);
+}
+
+TEST(TorsoTissues, JoinedLungsArePartedWhereTheyMeetNotAtTheMidPlane)
+{
+  // Two lungs (balls of radius 30 mm at x = -60 and x = +10) joined by an airway of radius 5 mm, in
+  // a box of soft tissue centred on x = 0: the body's mid-plane would cut the left lung.
+  amVoxelGrid g;
+  g.N[0] = 110;
+  g.N[1] = g.N[2] = 50;
+  g.Spacing[0] = g.Spacing[1] = g.Spacing[2] = 2.0;
+  std::vector<std::uint8_t> classes(g.Size()), truth(g.Size());
+  for (int k = 0; k < g.N[2]; ++k)
+    for (int j = 0; j < g.N[1]; ++j)
+      for (int i = 0; i < g.N[0]; ++i)
+      {
+        const double x = -109 + 2 * i, y = -49 + 2 * j, z = -49 + 2 * k;
+        const std::size_t v = g.Index(i, j, k);
+        const bool body = std::fabs(x) < 100 && std::fabs(y) < 44 && std::fabs(z) < 44;
+        const bool right = std::hypot(x + 60, y, z) < 30, left = std::hypot(x - 10, y, z) < 30;
+        const bool airway = x > -35 && x < -15 && std::hypot(y, z) < 5;
+        classes[v] = !body ? amTorso::AirClass : right || left || airway ? amTorso::LungClass : amTorso::SoftClass;
+        truth[v] = !body ? 0 : left ? 4 : right ? 3 : airway ? 255 : 1;
+      }
+  const double worldX[4] = { 2.0, 0.0, 0.0, -109.0 };
+  amTorso::TissueParameters p;
+  p.MinimumVoxels = 10;
+  std::vector<std::uint8_t> labels;
+  const amTorso::TissueReport report = amTorso::Tissues(g, classes, worldX, p, labels);
+  EXPECT_TRUE(report.LungsSplit);
+  EXPECT_FALSE(report.LungsSplitAtMidPlane);
+  for (const int lung : { 3, 4 })
+  {
+    std::size_t both = 0, a = 0, b = 0;
+    for (std::size_t v = 0; v < g.Size(); ++v)
+    {
+      if (truth[v] == 255)
+        continue; // the airway goes to either side
+      both += labels[v] == lung && truth[v] == lung;
+      a += labels[v] == lung;
+      b += truth[v] == lung;
+    }
+    EXPECT_GT(2.0 * both / (a + b), 0.99) << "lung " << lung;
+  }
+  // A single ball is not two lungs: no depth parts it, and it is split at the mid-plane.
+  for (std::size_t v = 0; v < g.Size(); ++v)
+    if (classes[v] == amTorso::LungClass)
+    {
+      int c[3];
+      g.Ijk(v, c);
+      const double x = -109 + 2 * c[0], y = -49 + 2 * c[1], z = -49 + 2 * c[2];
+      if (std::hypot(x - 10, y, z) >= 30)
+        classes[v] = amTorso::SoftClass;
+    }
+  EXPECT_TRUE(amTorso::Tissues(g, classes, worldX, p, labels).LungsSplitAtMidPlane);
 }

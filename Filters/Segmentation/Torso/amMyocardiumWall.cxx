@@ -100,36 +100,47 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* h
   // The mean over soft tissue only, away from its edges: partial volume with lung or blood would
   // pull the wall's level towards theirs.
   const amVoxelMask inner = amVoxel::Erode26(b, soft);
-  std::vector<float> weight(n), level(n);
-  for (std::size_t v = 0; v < n; ++v)
+  std::vector<float> level(n);
+  double contrast = 0.0;
+  // The average's Gaussian grows (by half, up to two and a half times) while the wall's contrast
+  // stands less than four times above the average's noise: a noisy scan needs a wider average for
+  // a wall whose contrast it shows.
+  for (double width = sigma; width <= 2.5 * sigma + 1e-9; width *= 1.5)
   {
-    weight[v] = inner[v] ? 1.0f : 0.0f;
-    level[v] = inner[v] ? value[v] : 0.0f;
-  }
-  amVoxel::Gaussian(b, weight, sigma);
-  amVoxel::Gaussian(b, level, sigma);
-  for (std::size_t v = 0; v < n; ++v)
-    level[v] = weight[v] > 1e-3f ? level[v] / weight[v] : value[v];
+    std::vector<float> weight(n);
+    for (std::size_t v = 0; v < n; ++v)
+    {
+      weight[v] = inner[v] ? 1.0f : 0.0f;
+      level[v] = inner[v] ? value[v] : 0.0f;
+    }
+    amVoxel::Gaussian(b, weight, width);
+    amVoxel::Gaussian(b, level, width);
+    for (std::size_t v = 0; v < n; ++v)
+      level[v] = weight[v] > 1e-3f ? level[v] / weight[v] : value[v];
 
-  std::vector<float> wall, around;
-  for (std::size_t v = 0; v < n; ++v)
-  {
-    if (!candidate[v] || !inner[v])
-      continue;
-    if (d[v] >= shellIn && d[v] <= shellOut)
-      wall.push_back(level[v]);
-    else if (d[v] > p.MaximumThickness && d[v] <= p.MaximumThickness + 10.0)
-      around.push_back(level[v]);
+    std::vector<float> wall, around;
+    for (std::size_t v = 0; v < n; ++v)
+    {
+      if (!candidate[v] || !inner[v])
+        continue;
+      if (d[v] >= shellIn && d[v] <= shellOut)
+        wall.push_back(level[v]);
+      else if (d[v] > p.MaximumThickness && d[v] <= p.MaximumThickness + 10.0)
+        around.push_back(level[v]);
+    }
+    report.WallLevel = Median(wall);
+    report.SurroundingLevel = around.empty() ? report.WallLevel : Median(around);
+    std::vector<float> spread(wall.size());
+    for (std::size_t i = 0; i < wall.size(); ++i)
+      spread[i] = static_cast<float>(std::fabs(wall[i] - report.WallLevel));
+    report.Noise = 1.4826 * Median(spread);
+    report.Sigma = width;
+    contrast = report.WallLevel - report.SurroundingLevel;
+    report.Contrast =
+      !wall.empty() && !around.empty() && std::fabs(contrast) >= std::max(p.MinimumContrast, 2.0 * report.Noise);
+    if (std::fabs(contrast) < p.MinimumContrast || std::fabs(contrast) >= 4.0 * report.Noise)
+      break;
   }
-  report.WallLevel = Median(wall);
-  report.SurroundingLevel = around.empty() ? report.WallLevel : Median(around);
-  std::vector<float> spread(wall.size());
-  for (std::size_t i = 0; i < wall.size(); ++i)
-    spread[i] = static_cast<float>(std::fabs(wall[i] - report.WallLevel));
-  report.Noise = 1.4826 * Median(spread);
-  const double contrast = report.WallLevel - report.SurroundingLevel;
-  report.Contrast =
-    !wall.empty() && !around.empty() && std::fabs(contrast) >= std::max(p.MinimumContrast, 2.0 * report.Noise);
   report.Threshold = 0.5 * (report.WallLevel + report.SurroundingLevel);
 
   amVoxelMask grow(n, 0);

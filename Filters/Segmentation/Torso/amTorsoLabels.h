@@ -36,7 +36,8 @@ struct TissueReport
   std::size_t ExteriorVoxels = 0;
   std::size_t FatPartialVolume = 0; // fat voxels in sheets one voxel thick, handed to neighbours
   int LungComponents = 0;           // air/lung components inside the body of at least the minimum size
-  bool LungsSplit = false;          // one air component held both lungs: split at the body's mid-plane
+  bool LungsSplit = false;          // one air component held both lungs, parted where they meet
+  bool LungsSplitAtMidPlane = false; // ... and they could not be parted there: split at the mid-plane
   int BoneComponents = 0;
   std::size_t TrabecularVoxels = 0; // marrow added to the cortical bone
 };
@@ -67,6 +68,14 @@ struct TissueParameters
 TissueReport Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const double worldX[4],
   const TissueParameters& p, std::vector<std::uint8_t>& labels);
 
+/// Parts one air component that holds both lungs where they meet (the trachea, the carina, the
+/// main bronchi): the lungs' deepest parts, at the least depth where they fall into two cores of
+/// comparable size (the second at least a tenth of the first), and every voxel of the component
+/// to the nearer core. side[v] = 1 or 2 for the two parts (0 elsewhere); false when no depth
+/// parts it (the component is not two lungs joined by a thinner airway).
+bool SplitJoinedLungs(
+  const amVoxelGrid& g, const amVoxelMask& lungs, std::size_t minimumVoxels, std::vector<std::uint8_t>& side);
+
 struct WallParameters
 {
   std::vector<int> PoolLabels{ Phantom::LeftVentricleBlood, Phantom::RightVentricleBlood };
@@ -84,6 +93,7 @@ struct WallReport
   double WallLevel = 0.0;        // median smoothed intensity 3-6 mm from the pools
   double SurroundingLevel = 0.0; // median beyond the maximum thickness
   double Noise = 0.0;            // robust spread of the smoothed wall intensity
+  double Sigma = 0.0;            // mm: the Gaussian the wall was averaged with
   double Threshold = 0.0;
   bool Contrast = false; // the wall was told from its surroundings by intensity
   std::size_t Voxels = 0;

@@ -137,6 +137,32 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     centre[c] /= static_cast<double>(sizes[c]);
   report.LungsSplit = first >= 0 && second < 0;
   const bool firstIsLeft = second >= 0 && centre[first] > centre[second];
+  // One component holding both lungs is parted where they meet; the part whose centre lies
+  // further to the patient's left (world x) is the left lung.
+  std::vector<std::uint8_t> side;
+  bool sideOneIsLeft = false;
+  if (report.LungsSplit)
+  {
+    amVoxelMask joined(n);
+    for (std::size_t v = 0; v < n; ++v)
+      joined[v] = id[v] == first;
+    if (amTorso::SplitJoinedLungs(g, joined, minimumVoxels, side))
+    {
+      double x[3] = { 0, 0, 0 }, count[3] = { 0, 0, 0 };
+      for (std::size_t v = 0; v < n; ++v)
+        if (side[v])
+        {
+          x[side[v]] += WorldX(g, v, worldX);
+          ++count[side[v]];
+        }
+      sideOneIsLeft = x[1] / count[1] > x[2] / count[2];
+    }
+    else
+    {
+      side.clear();
+      report.LungsSplitAtMidPlane = true;
+    }
+  }
   for (std::size_t v = 0; v < n; ++v)
   {
     const int c = id[v];
@@ -146,7 +172,9 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
         labels[v] = p.LeftoverAirIsFat ? Phantom::Fat : amVoxel::Pending;
       continue;
     }
-    if (c == first && second < 0)
+    if (c == first && second < 0 && !side.empty())
+      labels[v] = (side[v] == 1) == sideOneIsLeft ? Phantom::LeftLung : Phantom::RightLung;
+    else if (c == first && second < 0)
       labels[v] = WorldX(g, v, worldX) > bodyX ? Phantom::LeftLung : Phantom::RightLung;
     else if (c == first)
       labels[v] = firstIsLeft ? Phantom::LeftLung : Phantom::RightLung;

@@ -91,6 +91,13 @@ amVoxelMask Open6(const amVoxelGrid& g, const amVoxelMask& mask);
 /// border is extended by its edge values.
 void Gaussian(const amVoxelGrid& g, std::vector<float>& field, double sigma);
 
+/// The noise of a scan (its standard deviation, robustly: from the median second difference of
+/// neighbours along the first axis, where all three are above floor).
+double NoiseLevel(const amVoxelGrid& g, const float* values, float floor);
+
+/// The factor by which Gaussian(g, field, sigma) scales the standard deviation of white noise.
+double GaussianNoiseFactor(const amVoxelGrid& g, double sigma);
+
 /// Exact Euclidean distance (mm) of every voxel centre to the nearest voxel of the mask (0 in it;
 /// a large value everywhere when the mask is empty). Felzenszwalb-Huttenlocher, per axis.
 std::vector<float> Distance(const amVoxelGrid& g, const amVoxelMask& mask);
