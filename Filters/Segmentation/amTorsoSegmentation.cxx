@@ -268,6 +268,8 @@ int amTorsoSegmentation::RequestData(
   tissueParameters.LungOpening = this->LungOpening;
   // Below a window that starts above fat's -100 HU, fat reads as air: what is not lung is fat.
   tissueParameters.LeftoverAirIsFat = windowed && lowest > -100.0;
+  // Where the scan tells aerated lung from gas, gas (stomach, bowel) is never lung.
+  tissueParameters.GasIsNotLung = classTable && classTable->GetComponent(amTorso::LungClass, 4) != 0.0;
   if (classTable && classTable->GetComponent(amTorso::SoftClass, 4) != 0.0)
   {
     // Marrow brighter than soft tissue's upper tail is trabecular bone; the index axis closest to

@@ -25,7 +25,8 @@
  * 2. fat is the fat class opened by the 6-neighbour cross: the one-voxel sheets that partial
  *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
  * 3. the lungs are the two largest components of air inside the body (opened by a ball of
- *    LungOpening mm when it is set), right and left by their centres' world x (x towards the
+ *    LungOpening mm when it is set) whose voxels are mostly of the lung class where the scan tells
+ *    aerated lung from gas (gas in the stomach or bowel is never lung), right and left by their centres' world x (x towards the
  *    patient's left); where one component holds both (joined at the trachea), it is parted where
  *    the lungs meet: its deepest parts, at the least depth where they fall into two lungs, and
  *    every voxel to the nearer (where no depth parts it, at the body's mid-plane, with a

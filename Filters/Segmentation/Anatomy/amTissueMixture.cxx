@@ -297,6 +297,8 @@ amTissueMixture::Result amTissueMixture::FitHistogram(
     double t = 0.5 * (soft.Mean + CorticalBone);
     if (on[Blood])
       t = std::max(t, blood.Mean + 3.0 * blood.Sigma);
+    else
+      t = std::min(t, soft.Mean + 3.0 * soft.Sigma); // no contrast: all above soft tissue is bone
     for (int j = previous; j < Bone; ++j)
       r.Upper[j] = t;
     previous = Bone;

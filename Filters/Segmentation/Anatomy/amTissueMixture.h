@@ -27,7 +27,9 @@
  *   (late phase) stays soft tissue;
  * - where the scan shows no bone peak (a crop without bone, thin bone blurred by coarse voxels),
  *   bone is still what lies beyond half-way from soft tissue to cortical bone (700 HU) and 3
- *   spreads above any contrast blood: Found says there was no peak, the range is kept;
+ *   spreads above any contrast blood, or, in a scan without contrast, beyond 3 spreads above
+ *   soft tissue (trabecular bone at coarse voxels): Found says there was no peak, the range is
+ *   kept;
  * - the boundary below Bone lies half-way between soft tissue and bone (thin bones survive partial
  *   volume), raised to 3 spreads above the blood's centre where contrast is that bright.
  */

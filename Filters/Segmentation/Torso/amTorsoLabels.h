@@ -40,6 +40,7 @@ struct TissueReport
   bool LungsSplitAtMidPlane = false; // ... and they could not be parted there: split at the mid-plane
   int BoneComponents = 0;
   std::size_t TrabecularVoxels = 0; // marrow added to the cortical bone
+  std::size_t GasVoxels = 0;        // air inside the body in components of gas, not lung
 };
 
 struct TissueParameters
@@ -48,6 +49,8 @@ struct TissueParameters
   double BodyGap = 0.0;          // mm: see amTorsoSegmentation::BodyGapClosing
   double LungOpening = 0.0;      // mm: the lungs are the air inside the body opened by this ball
   bool LeftoverAirIsFat = false; // air inside the body that is not lung is fat (below the window)
+  bool GasIsNotLung = false;     // a component mostly of the air class is gas, not lung (the scan
+                                 // tells lung from air)
   // Trabecular bone: voxels brighter than TrabecularLevel (HU) that cortical bone encloses in an
   // axial slice (across index axis AxialAxis), in holes of at most MaximumMarrowArea mm^2.
   const float* HU = nullptr;

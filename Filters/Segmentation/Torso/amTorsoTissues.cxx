@@ -122,7 +122,36 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   std::vector<int> id;
   std::vector<std::size_t> sizes;
   amVoxel::Components(g, lungs, id, sizes);
-  const std::vector<int> order = BySize(sizes);
+  // The lungs are thick: components are ranked by their voxels at least two voxels deep in the air
+  // (a thin layer of air, between an arm and the chest, or a skin fold, has none).
+  std::vector<std::size_t> deep(sizes.size(), 0);
+  {
+    amVoxelMask other(n);
+    for (std::size_t v = 0; v < n; ++v)
+      other[v] = !lungs[v];
+    const std::vector<float> depth = amVoxel::Distance(g, other);
+    const double thick = 2.0 * std::max({ g.Spacing[0], g.Spacing[1], g.Spacing[2] });
+    for (std::size_t v = 0; v < n; ++v)
+      if (id[v] >= 0 && depth[v] >= thick)
+        ++deep[id[v]];
+  }
+  std::vector<int> order = BySize(deep);
+  order.erase(std::remove_if(order.begin(), order.end(), [&](int c) { return deep[c] == 0; }), order.end());
+  if (p.GasIsNotLung)
+  {
+    // Aerated lung is darker than soft tissue but brighter than gas: a component mostly of the air
+    // class is gas (the stomach, the bowel), whatever its size, and not lung.
+    std::vector<std::size_t> parenchyma(sizes.size(), 0);
+    for (std::size_t v = 0; v < n; ++v)
+      if (id[v] >= 0 && classes[v] == LungClass)
+        ++parenchyma[id[v]];
+    order.erase(std::remove_if(order.begin(), order.end(), [&](int c) { return 2 * parenchyma[c] < sizes[c]; }),
+      order.end());
+    report.GasVoxels = 0;
+    for (std::size_t c = 0; c < sizes.size(); ++c)
+      if (2 * parenchyma[c] < sizes[c] && sizes[c] >= minimumVoxels)
+        report.GasVoxels += sizes[c];
+  }
   for (const int c : order)
     report.LungComponents += sizes[c] >= minimumVoxels;
   const int first = order.empty() || sizes[order[0]] < minimumVoxels ? -1 : order[0];
