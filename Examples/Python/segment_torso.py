@@ -59,6 +59,14 @@ for c, name in enumerate(["air", "lung", "fat", "soft tissue", "contrast blood",
     print("class %-15s %s" % (name, "centre %7.1f HU, spread %5.1f HU, %4.1f %% of the body, up to %s"
                               % (mean, sigma, 100 * weight, "%.0f HU" % upper if upper < 1e29 else "the top")
                               if found else "not in this scan"))
+# The heart's landmarks and the 12-lead electrodes, computed on the segmented body.
+landmarks = anatomesh.amCardiacLandmarks()
+landmarks.SetInputConnection(torso.GetOutputPort())
+landmarks.Update()
+names = landmarks.GetOutput().GetPointData().GetAbstractArray("Name")
+for i in range(landmarks.GetOutput().GetNumberOfPoints()):
+    if names.GetValue(i) in ("V1", "V4", "V6", "Stimulus"):
+        print("%-9s at (%.0f, %.0f, %.0f) mm" % ((names.GetValue(i),) + landmarks.GetOutput().GetPoint(i)))
 levels = torso.GetOutput().GetFieldData().GetArray("MyocardiumLevels")
 print("myocardium: wall %.1f HU, surroundings %.1f HU, threshold %.1f HU, noise of the average %.2f HU"
       % tuple(levels.GetValue(i) for i in range(4)))

@@ -1,5 +1,7 @@
 #include "amFitzHughNagumoSolver.h"
 
+#include "amLandmarkPoints.h"
+
 #include "amConjugateGradient.h"
 #include "amFitzHughNagumoStepper.h"
 #include "amP1Assembly.h"
@@ -22,6 +24,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -48,6 +51,7 @@ struct amFitzHughNagumoSolver::Run
 {
   vtkMTimeType InputTime = 0;
   vtkMTimeType FilterTime = 0;
+  vtkMTimeType LandmarksTime = 0;
   long long Id = 0;
   vtkSmartPointer<vtkUnstructuredGrid> Heart; // geometry, Region, InputPointId
   std::vector<double> Times;                  // frame times
@@ -87,8 +91,17 @@ amFitzHughNagumoSolver::amFitzHughNagumoSolver()
   , ActivatedFraction(0)
 {
   amThreading::Initialize();
+  this->SetNumberOfInputPorts(2);
   this->SetRegionArrayName("Region");
   this->SetFiberArrayName("Fibers");
+}
+
+int amFitzHughNagumoSolver::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 1 ? "vtkPolyData" : "vtkUnstructuredGrid");
+  if (port == 1)
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
 }
 
 amFitzHughNagumoSolver::~amFitzHughNagumoSolver()
@@ -296,7 +309,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
     {
       double d2 = 0;
       for (int c = 0; c < 3; ++c)
-        d2 += (fem.Points[i][c] - this->StimulusCenter[c]) * (fem.Points[i][c] - this->StimulusCenter[c]);
+        d2 += (fem.Points[i][c] - this->ActiveStimulus[c]) * (fem.Points[i][c] - this->ActiveStimulus[c]);
       stimulated[i] = d2 <= r2;
     }
   }
@@ -310,8 +323,8 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
     else if (this->StimulusRegion >= 0)
       where << "region " << this->StimulusRegion << " is not a heart region with cells";
     else
-      where << "the sphere of radius " << this->StimulusRadius << " mm around (" << this->StimulusCenter[0] << ", "
-            << this->StimulusCenter[1] << ", " << this->StimulusCenter[2] << ") holds no heart node";
+      where << "the sphere of radius " << this->StimulusRadius << " mm around (" << this->ActiveStimulus[0] << ", "
+            << this->ActiveStimulus[1] << ", " << this->ActiveStimulus[2] << ") holds no heart node";
     vtkErrorMacro(<< "the stimulus is outside the heart: " << where.str());
     return 0;
   }
@@ -344,7 +357,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
       {
         double d2 = 0;
         for (int c = 0; c < 3; ++c)
-          d2 += (fem.Points[i][c] - this->StimulusCenter[c]) * (fem.Points[i][c] - this->StimulusCenter[c]);
+          d2 += (fem.Points[i][c] - this->ActiveStimulus[c]) * (fem.Points[i][c] - this->ActiveStimulus[c]);
         delays[i] = std::sqrt(d2);
         nearest = std::min(nearest, delays[i]);
       }
@@ -412,12 +425,12 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   for (std::size_t k = 0; k < this->HeartRegions.size(); ++k)
     params << (k ? "," : "") << this->HeartRegions[k];
   params << " Conductivity=" << this->Conductivity << " C1=" << c1 << " C2=" << c2 << " C3=" << c3 << " C4=" << c4
-         << " A=" << a << " TimeStep=" << dt << " EndTime=" << this->EndTime << " Stimulus=(" << this->StimulusCenter[0]
-         << "," << this->StimulusCenter[1] << "," << this->StimulusCenter[2] << ") r=" << this->StimulusRadius
+         << " A=" << a << " TimeStep=" << dt << " EndTime=" << this->EndTime << " Stimulus=(" << this->ActiveStimulus[0]
+         << "," << this->ActiveStimulus[1] << "," << this->ActiveStimulus[2] << ") r=" << this->StimulusRadius
          << " region=" << this->StimulusRegion << " endocardial=" << this->EndocardialRegions.size()
-         << " endocardial_velocity=" << this->EndocardialConductionVelocity
-         << " start=" << this->StimulusStart << " duration=" << this->StimulusDuration
-         << " strength=" << this->StimulusStrength << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG");
+         << " endocardial_velocity=" << this->EndocardialConductionVelocity << " start=" << this->StimulusStart
+         << " duration=" << this->StimulusDuration << " strength=" << this->StimulusStrength
+         << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG");
   amProvenance::Record(heart, input, "amFitzHughNagumoSolver", params.str());
   this->Cache = std::move(run);
   return 1;
@@ -434,15 +447,31 @@ int amFitzHughNagumoSolver::RequestData(
     vtkErrorMacro(<< "no input mesh");
     return 0;
   }
-  const bool stale =
-    !this->Cache || this->Cache->InputTime != input->GetMTime() || this->Cache->FilterTime != this->GetMTime();
+  vtkPolyData* landmarks = vtkPolyData::GetData(inputVector[1], 0);
+  const vtkMTimeType landmarksTime = landmarks ? landmarks->GetMTime() : 0;
+  const bool stale = !this->Cache || this->Cache->InputTime != input->GetMTime() ||
+    this->Cache->FilterTime != this->GetMTime() || this->Cache->LandmarksTime != landmarksTime;
   if (stale)
   {
     this->Cache.reset();
+    // The stimulus: the Landmarks input's "Stimulus" point where it is connected.
+    std::copy(this->StimulusCenter, this->StimulusCenter + 3, this->ActiveStimulus);
+    if (landmarks)
+    {
+      std::vector<double> x;
+      std::string why;
+      if (!amLandmarkPoints::Named(landmarks, { "Stimulus" }, x, why))
+      {
+        vtkErrorMacro("The stimulus cannot be taken from the Landmarks input: " << why << ".");
+        return 0;
+      }
+      std::copy(x.begin(), x.end(), this->ActiveStimulus);
+    }
     if (!this->Simulate(input))
       return 0;
     this->Cache->InputTime = input->GetMTime();
     this->Cache->FilterTime = this->GetMTime();
+    this->Cache->LandmarksTime = landmarksTime;
   }
   const Run& run = *this->Cache;
 

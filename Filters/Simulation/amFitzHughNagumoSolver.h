@@ -138,7 +138,14 @@ public:
   ///@}
 
   ///@{
-  /// Stimulus: a sphere (centre in mm, radius in mm, default radius 5) or, when StimulusRegion >= 0,
+  /// Optional input 1: landmarks with named points (amCardiacLandmarks' output); its "Stimulus"
+  /// point is the stimulus sphere's centre, in place of StimulusCenter.
+  void SetLandmarksConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(1, output);
+  }
+
+  /// Stimulus: a sphere (centre in mm, radius in mm, default radius 10) or, when StimulusRegion >= 0,
   /// that region; start (ms, 0), duration (ms, 2), strength (1/ms added to du/dt, 0.5).
   vtkSetVector3Macro(StimulusCenter, double);
   vtkGetVector3Macro(StimulusCenter, double);
@@ -216,6 +223,7 @@ public:
 protected:
   amFitzHughNagumoSolver();
   ~amFitzHughNagumoSolver() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -230,6 +238,7 @@ protected:
   double C1, C2, C3, C4, A;
   double TimeStep, EndTime, OutputInterval;
   double StimulusCenter[3];
+  double ActiveStimulus[3] = { 0, 0, 0 }; // StimulusCenter, or the Landmarks input's Stimulus
   double StimulusRadius;
   int StimulusRegion;
   double StimulusStart, StimulusDuration, StimulusStrength;

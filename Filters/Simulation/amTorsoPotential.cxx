@@ -1,5 +1,7 @@
 #include "amTorsoPotential.h"
 
+#include "amLandmarkPoints.h"
+
 #include "amConjugateGradient.h"
 #include "amP1Assembly.h"
 #include "amProvenance.h"
@@ -46,6 +48,7 @@ struct amTorsoPotential::Model
 {
   vtkMTimeType MeshTime = 0;
   vtkMTimeType FilterTime = 0;
+  vtkMTimeType LandmarksTime = 0;
   long long HeartRun = -1;
   vtkSmartPointer<vtkUnstructuredGrid> Torso; // geometry, Region, InputPointId
   vtkSmartPointer<vtkPolyData> Body;          // body-surface triangles
@@ -137,7 +140,7 @@ amTorsoPotential::amTorsoPotential()
   , LoopIndex(-1)
 {
   amThreading::Initialize();
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(3);
   this->SetRegionArrayName("Region");
   this->SetPotentialArrayName("u");
@@ -186,8 +189,9 @@ void amTorsoPotential::RemoveAllElectrodes()
 
 int amTorsoPotential::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
-  (void)port;
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 2 ? "vtkPolyData" : "vtkUnstructuredGrid");
+  if (port == 2)
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
 
@@ -454,7 +458,7 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     model->Body = body;
   }
   std::vector<std::array<double, 3>>().swap(model->ElectrodePoints);
-  for (std::size_t e = 0; e + 2 < this->ElectrodePositions.size(); e += 3)
+  for (std::size_t e = 0; e + 2 < this->ActiveElectrodes.size(); e += 3)
   {
     vtkIdType best = -1;
     double bestD = 1e300;
@@ -464,8 +468,7 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
         continue;
       double d2 = 0;
       for (int c = 0; c < 3; ++c)
-        d2 +=
-          (fem.Points[i][c] - this->ElectrodePositions[e + c]) * (fem.Points[i][c] - this->ElectrodePositions[e + c]);
+        d2 += (fem.Points[i][c] - this->ActiveElectrodes[e + c]) * (fem.Points[i][c] - this->ActiveElectrodes[e + c]);
       if (d2 < bestD)
       {
         bestD = d2;
@@ -478,8 +481,8 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
       return false;
     }
     if (std::sqrt(bestD) > 30.0)
-      vtkWarningMacro(<< "electrode " << e / 3 << " at (" << this->ElectrodePositions[e] << ", "
-                      << this->ElectrodePositions[e + 1] << ", " << this->ElectrodePositions[e + 2] << ") is "
+      vtkWarningMacro(<< "electrode " << e / 3 << " at (" << this->ActiveElectrodes[e] << ", "
+                      << this->ActiveElectrodes[e + 1] << ", " << this->ActiveElectrodes[e + 2] << ") is "
                       << std::sqrt(bestD) << " mm from the closest body-surface node");
     model->Electrodes.push_back(best);
     model->ElectrodePoints.push_back(fem.Points[best]);
@@ -690,15 +693,31 @@ int amTorsoPotential::RequestData(
   };
   if (this->LoopIndex < 0)
   {
+    vtkPolyData* landmarks = vtkPolyData::GetData(inputVector[2], 0);
+    const vtkMTimeType landmarksTime = landmarks ? landmarks->GetMTime() : 0;
     const bool valid = this->State && !this->State->Times.empty() && this->State->MeshTime == mesh->GetMTime() &&
-      this->State->FilterTime == this->GetMTime() && this->State->HeartRun == HeartRunOf(heart);
+      this->State->FilterTime == this->GetMTime() && this->State->HeartRun == HeartRunOf(heart) &&
+      this->State->LandmarksTime == landmarksTime;
     if (valid)
     {
       this->Produce(outputVector);
       return 1;
     }
+    // The electrodes: the landmarks' RA, LA, LL, V1..V6 where they are connected.
+    this->ActiveElectrodes = this->ElectrodePositions;
+    if (landmarks)
+    {
+      std::string why;
+      if (!amLandmarkPoints::Named(
+            landmarks, { "RA", "LA", "LL", "V1", "V2", "V3", "V4", "V5", "V6" }, this->ActiveElectrodes, why))
+      {
+        vtkErrorMacro("The electrodes cannot be taken from the Landmarks input: " << why << ".");
+        return fail();
+      }
+    }
     if (!this->Prepare(mesh, heart))
       return fail();
+    this->State->LandmarksTime = landmarksTime;
     vtkInformation* heartInfo = inputVector[1]->GetInformationObject(0);
     const int nt = heartInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS())
       ? heartInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS())

@@ -31,11 +31,11 @@
  * vtkTable over all times: Time (ms), then the leads I, II, III, aVR, aVL, aVF, V1..V6 (mV; V1-V6
  * against Wilson's central terminal) when 9 electrodes are given (RA, LA, LL, V1..V6), or the
  * potential of each electrode ("E0", "E1", ...) against their mean otherwise. Electrodes:
- * ElectrodePositions (x y z triples, mm), each snapped to the closest body-surface node (the
- * snapped positions are in the table's field data "Electrodes"); the default is the phantom's
- * standard placement (amThoraxPhantomModel::StandardElectrodes). Output 2: the body surface alone
- * (the torso's outer triangles, vtkPolyData with "Potential" and "InputPointId"), time-dependent —
- * the small thing to write as a time series.
+ * ElectrodePositions (x y z triples, mm), or the points RA, LA, LL, V1..V6 of the optional input 2
+ * (Landmarks: amCardiacLandmarks' output, computed on the segmented body), each snapped to the closest body-surface
+ * node (the snapped positions are in the table's field data "Electrodes"); the default is the phantom's standard
+ * placement (amThoraxPhantomModel::StandardElectrodes). Output 2: the body surface alone (the torso's outer triangles,
+ * vtkPolyData with "Potential" and "InputPointId"), time-dependent — the small thing to write as a time series.
  *
  * Errors: missing inputs or arrays, no torso cells, a torso that does not touch the heart, a
  * non-tetrahedral or degenerate torso cell, a matrix that cannot be factored (out of memory),
@@ -64,6 +64,9 @@ public:
 
   /// The heart solution (input 1).
   void SetHeartConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  /// Optional: landmarks with named points (amCardiacLandmarks' output); its RA, LA, LL, V1..V6
+  /// are the electrodes, in place of ElectrodePositions.
+  void SetLandmarksConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
   void SetHeartData(vtkDataObject* heart) { this->SetInputData(1, heart); }
 
   ///@{
@@ -203,6 +206,7 @@ private:
   void operator=(const amTorsoPotential&) = delete;
   struct Model;
   std::unique_ptr<Model> State;
+  std::vector<double> ActiveElectrodes; // ElectrodePositions, or the Landmarks input's
   int LoopIndex;                 // -1: not looping over the heart's times
   std::vector<double> LoopTimes; // the heart's times of the running loop
   bool Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* heart);

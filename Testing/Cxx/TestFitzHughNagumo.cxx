@@ -9,11 +9,15 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -358,4 +362,57 @@ TEST(FitzHughNagumo, BadInput)
   nan->GetPoints()->SetPoint(7, std::nan(""), 0, 0);
   e = SolveExpectingError(nan, [](amFitzHughNagumoSolver*) {});
   EXPECT_NE(e.find("degenerate"), std::string::npos) << e;
+}
+
+namespace
+{
+// Landmarks as amCardiacLandmarks gives them: points with point data "Name".
+vtkSmartPointer<vtkPolyData> Landmarks(const std::vector<std::pair<std::string, std::array<double, 3>>>& points)
+{
+  auto landmarks = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> xyz;
+  vtkNew<vtkStringArray> names;
+  names->SetName("Name");
+  for (const auto& [name, x] : points)
+  {
+    xyz->InsertNextPoint(x.data());
+    names->InsertNextValue(name);
+  }
+  landmarks->SetPoints(xyz);
+  landmarks->GetPointData()->AddArray(names);
+  return landmarks;
+}
+}
+
+TEST(FitzHughNagumo, TheLandmarksStimulusIsTheStimulusCentre)
+{
+  const int n[3] = { 20, 4, 2 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 20, 4, 2 };
+  auto mesh = amTest::BoxMesh(n, origin, size);
+  std::vector<double> runs[2];
+  for (int run = 0; run < 2; ++run)
+  {
+    vtkNew<amFitzHughNagumoSolver> solver;
+    solver->SetInputData(mesh);
+    solver->RemoveAllHeartRegions();
+    solver->AddHeartRegion(1);
+    solver->SetEndTime(20);
+    if (run == 0)
+      solver->SetStimulusCenter(20, 4, 2);
+    else
+      solver->SetInputData(1, Landmarks({ { "V1", { 0, 0, 0 } }, { "Stimulus", { 20, 4, 2 } } }));
+    solver->Update();
+    vtkDataArray* t = solver->GetOutput()->GetPointData()->GetArray("ActivationTime");
+    for (vtkIdType i = 0; i < t->GetNumberOfTuples(); ++i)
+      runs[run].push_back(t->GetComponent(i, 0));
+  }
+  EXPECT_EQ(runs[0], runs[1]);
+  // The far corner from the stimulus activates last.
+  EXPECT_GT(runs[1][0], 5.0);
+
+  // Landmarks without a stimulus are an error that says so.
+  const std::string e = SolveExpectingError(mesh, [](amFitzHughNagumoSolver* s) {
+    s->SetInputData(1, Landmarks({ { "V1", { 0, 0, 0 } } }));
+  });
+  EXPECT_NE(e.find("no point named Stimulus"), std::string::npos) << e;
 }

@@ -17,8 +17,10 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 
 #include <gtest/gtest.h>
@@ -561,4 +563,59 @@ TEST(TorsoPotential, BadInput)
     torso->Update();
     EXPECT_TRUE(errors->ErrorContains("does not touch the heart")) << errors->AllErrors();
   }
+}
+
+TEST(TorsoPotential, TheLandmarksElectrodesAreTheElectrodes)
+{
+  auto mesh = NestedCubes(12, 24.0); // 4 mm elements
+  vtkNew<amFitzHughNagumoSolver> heart;
+  heart->SetInputData(mesh);
+  heart->SetEndTime(20);
+  heart->SetOutputInterval(10);
+  heart->SetStimulusCenter(-8, -8, -8);
+  heart->SetStimulusRadius(8);
+  // The same nine electrodes given as positions, and as named points in another order (with
+  // other points among them).
+  vtkNew<amTorsoPotential> typed;
+  typed->SetInputData(0, mesh);
+  typed->SetInputConnection(1, heart->GetOutputPort());
+  BoxElectrodes(typed);
+  typed->UpdateTimeStep(20.0);
+  const double e[9][3] = { { -24, 0, 20 }, { 24, 0, 20 }, { 20, 0, -24 }, { -5, -24, 0 }, { 5, -24, 0 }, { 12, -24, 0 },
+    { 18, -24, 0 }, { 24, -18, 0 }, { 24, 0, 0 } };
+  const char* names[9] = { "RA", "LA", "LL", "V1", "V2", "V3", "V4", "V5", "V6" };
+  vtkNew<vtkPolyData> landmarks;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkStringArray> labels;
+  labels->SetName("Name");
+  points->InsertNextPoint(0, 0, 0);
+  labels->InsertNextValue("Stimulus");
+  for (int i = 8; i >= 0; --i)
+  {
+    points->InsertNextPoint(e[i]);
+    labels->InsertNextValue(names[i]);
+  }
+  landmarks->SetPoints(points);
+  landmarks->GetPointData()->AddArray(labels);
+  vtkNew<amTorsoPotential> computed;
+  computed->SetInputData(0, mesh);
+  computed->SetInputConnection(1, heart->GetOutputPort());
+  computed->SetInputData(2, landmarks);
+  computed->RemoveAllElectrodes(); // the landmarks are used, not these
+  computed->UpdateTimeStep(20.0);
+  vtkTable* a = vtkTable::SafeDownCast(typed->GetOutputDataObject(1));
+  vtkTable* b = vtkTable::SafeDownCast(computed->GetOutputDataObject(1));
+  ASSERT_EQ(a->GetNumberOfRows(), b->GetNumberOfRows());
+  ASSERT_EQ(b->GetNumberOfColumns(), 13);
+  for (vtkIdType r = 0; r < a->GetNumberOfRows(); ++r)
+    for (vtkIdType c = 0; c < 13; ++c)
+      EXPECT_EQ(a->GetValue(r, c).ToDouble(), b->GetValue(r, c).ToDouble());
+
+  // Landmarks without a V6 are refused by name.
+  labels->SetValue(1, "Apex"); // was V6
+  landmarks->Modified();
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(computed);
+  computed->UpdateTimeStep(20.0);
+  EXPECT_TRUE(errors->ErrorContains("no point named V6")) << errors->AllErrors();
 }

@@ -80,7 +80,8 @@ class MainJob(AgreesWithTruth, unittest.TestCase):
         self.assertEqual([int(r["Label"]) for r in organs], list(range(1, 11)))
         for r in organs:
             print("organ %2s Dice %.4f" % (r["Label"], float(r["Dice"])))
-            self.assertGreaterEqual(float(r["Dice"]), 0.95, r["Label"])
+            # The README's figure is 0.983 (myocardium) to 0.999: a regression below 0.98 fails.
+            self.assertGreaterEqual(float(r["Dice"]), 0.98, r["Label"])
 
 
 if __name__ == "__main__":

@@ -124,6 +124,19 @@ class ChestCTToECG(unittest.TestCase):
             self.assertTrue(1000 < volume[lung] < 4000, volume)
         self.assertTrue(100 < volume[5] < 600, volume)  # the myocardium, 10 mm around the pools
         self.assertTrue(10 < volume[9] < 400, volume)  # spine (with the ribs joined to it)
+        # The electrodes and the stimulus are computed on this body, not typed.
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        marks = vtkXMLPolyDataReader()
+        marks.SetFileName(os.path.join(out, "chest_landmarks.vtp"))
+        marks.Update()
+        names = marks.GetOutput().GetPointData().GetAbstractArray("Name")
+        points = {names.GetValue(i): marks.GetOutput().GetPoint(i) for i in range(names.GetNumberOfValues())}
+        self.assertEqual(len(points), 13)
+        self.assertLess(points["V1"][0], points["V2"][0])  # x to the patient's left
+        self.assertLess(points["V4"][0], points["V6"][0])
+        self.assertGreater(points["V1"][2], points["V4"][2])  # an intercostal space higher
+        stimulus = image.FindPoint(points["Stimulus"])
+        self.assertEqual(image.GetPointData().GetScalars().GetValue(stimulus), 5)  # in the myocardium
         with open(os.path.join(out, "chest_ecg.csv")) as f:
             rows = [line.strip().split(",") for line in f]
         self.assertEqual(rows[0], ["Time", "I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6"])

@@ -18,7 +18,7 @@ starts with (large arrays reused from filter to filter instead of mapped afresh:
 # The wrapped modules import ParaView's (or VTK's) vtkmodules themselves.
 from .AnatomeshFiltersCleaning import amMorphologyCleaning
 from .AnatomeshFiltersSegmentation import (
-    amIntensityClassifier, amLabelOverlap, amSnakeSegmentation, amTorsoSegmentation)
+    amCardiacLandmarks, amIntensityClassifier, amLabelOverlap, amSnakeSegmentation, amTorsoSegmentation)
 from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential
 from .AnatomeshFiltersSources import amSeedPointsSource, amSyntheticAtlasSource, amThoraxPhantomSource
 from .AnatomeshFiltersSurface import (
@@ -36,6 +36,7 @@ from .allocator import keep_freed_memory
 __version__ = "0.1.0"
 
 __all__ = [
+    "amCardiacLandmarks",
     "amConcurrentXMLWriter",
     "amCurvatureMetric",
     "amFitzHughNagumoSolver",

@@ -1,0 +1,55 @@
+/**
+ * @class   amCardiacLandmarks
+ * @brief   The landmarks a heart simulation needs, computed from a segmented thorax: the left
+ *          ventricle's long axis, apex and base, a stimulus site, and the standard 12-lead ECG
+ *          electrodes on the segmented skin, so a new scan needs no typed coordinates.
+ *
+ * Input: a label map in the thorax phantom's scheme (amTorsoSegmentation's output: 0 outside,
+ * 3/4 lungs, 5 myocardium, 6 LV blood). Output: a point set (one vertex per point) whose point
+ * data "Name" (strings) says what each is: RA, LA, LL, V1..V6 (in amTorsoPotential's
+ * ElectrodePositions order), LVApexEndocardium, LVApexEpicardium, LVBase and Stimulus; field data
+ * "LongAxis" (unit vector, base to apex) and "LongAxisLength" (mm). amTorsoPotential takes the
+ * electrodes and amFitzHughNagumoSolver the stimulus from this output on their Landmarks inputs.
+ *
+ * The rules (anatomical, in world LPS millimetres, whatever the voxels' storage order):
+ * - the long axis is the principal axis of the ventricles (myocardium and LV pool), pointed to the
+ *   patient's left, front and feet; the endocardial apex is the LV pool's farthest voxel along it,
+ *   the epicardial apex the myocardium's beyond it within 15 mm of the axis, the base the centre of the pool's last 5
+ * mm at the other end (the valve plane), the stimulus half-way between the apices (mid-wall);
+ * - V4 is where the line from the apex straight forward meets the skin (the apex beat, 5th
+ *   intercostal space, mid-clavicular line); V1 and V2 one intercostal space (25 mm) higher, 25 mm
+ *   right and left of the mid-line on the front; V6 the skin's leftmost point at V4's level
+ *   (mid-axillary), V5 half-way round from V4 to V6, V3 half-way round from V2 to V4; RA and LA
+ *   below the clavicles (the lungs' top, 60 % of the way from the mid-line to the side, on the
+ *   front), LL on the left lower front 50 mm below the lungs (Mason-Likar's torso placement).
+ * Errors name what is missing: no LV blood pool, no myocardium, no lungs, no skin, or no skin in
+ * front of the apex (a field of view that cuts the chest).
+ *
+ * References: Mason and Likar, Am Heart J 71 (1966) 196 (limb electrodes on the torso); AHA
+ * recommendations for the standardization of the ECG (Kligfield et al., Circulation 2007).
+ */
+#ifndef amCardiacLandmarks_h
+#define amCardiacLandmarks_h
+
+#include "AnatomeshFiltersSegmentationModule.h" // export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class ANATOMESHFILTERSSEGMENTATION_EXPORT amCardiacLandmarks : public vtkPolyDataAlgorithm
+{
+public:
+  static amCardiacLandmarks* New();
+  vtkTypeMacro(amCardiacLandmarks, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+protected:
+  amCardiacLandmarks();
+  ~amCardiacLandmarks() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  amCardiacLandmarks(const amCardiacLandmarks&) = delete;
+  void operator=(const amCardiacLandmarks&) = delete;
+};
+
+#endif
