@@ -96,11 +96,8 @@ int Expectation(const std::vector<double>& h, double total,
       }
     return sum;
   };
-  int iteration = 0;
-  for (; iteration < 500; ++iteration)
-  {
-    std::array<double, K> W{}, S1{}, S2{};
-    double WU = 0.0;
+  // f(bin, its centre, the classes' shares, the bin's density) for every bin holding values.
+  const auto eachBin = [&](auto&& f) {
     for (int b = 0; b < Bins; ++b)
     {
       if (h[b] == 0.0)
@@ -108,8 +105,16 @@ int Expectation(const std::vector<double>& h, double total,
       const double x = Centre(b);
       std::array<double, K> p{};
       const double sum = joint(x, p);
-      if (sum <= 0.0)
-        continue;
+      if (sum > 0.0)
+        f(b, x, p, sum);
+    }
+  };
+  int iteration = 0;
+  for (; iteration < 500; ++iteration)
+  {
+    std::array<double, K> W{}, S1{}, S2{};
+    double WU = 0.0;
+    eachBin([&](int b, double x, const std::array<double, K>& p, double sum) {
       for (int k = 0; k < K; ++k)
         if (on[k])
         {
@@ -118,7 +123,7 @@ int Expectation(const std::vector<double>& h, double total,
           S1[k] += w * x;
         }
       WU += h[b] * r.Uniform * uniformDensity / sum;
-    }
+    });
     double change = 0.0;
     for (int k = 0; k < K; ++k)
     {
@@ -130,19 +135,11 @@ int Expectation(const std::vector<double>& h, double total,
       c.Mean = mean;
     }
     // The spreads about the new centres, with the responsibilities evaluated at them.
-    for (int b = 0; b < Bins; ++b)
-    {
-      if (h[b] == 0.0)
-        continue;
-      const double x = Centre(b);
-      std::array<double, K> p{};
-      const double sum = joint(x, p);
-      if (sum <= 0.0)
-        continue;
+    eachBin([&](int b, double x, const std::array<double, K>& p, double sum) {
       for (int k = 0; k < K; ++k)
         if (on[k])
           S2[k] += h[b] * p[k] / sum * (x - r.Classes[k].Mean) * (x - r.Classes[k].Mean);
-    }
+    });
     for (int k = 0; k < K; ++k)
     {
       if (!on[k])
