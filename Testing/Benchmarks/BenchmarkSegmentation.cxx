@@ -1,13 +1,16 @@
 // Segmentation benchmarks: the phantom's heart (both blood pools) at 1 mm and 0.5 mm, in 3-D and
-// slice-by-slice modes; classification and cleaning of the whole phantom at 1 mm; the real CT's
+// slice-by-slice modes; classification and cleaning of the whole phantom at 1 mm; the whole domain
+// at 1 mm (four clicks, the torso from the scan's own classes or fixed ranges, the landmarks); the real CT's
 // dissected aorta (../shared/data) with the level set and the polar snakes, Dice against its mask.
 // Prints seconds, the Dice reached and the process's peak memory. Run: build/bin/BenchmarkSegmentation
+#include "amCardiacLandmarks.h"
 #include "amImageReader.h"
 #include "amIntensityClassifier.h"
 #include "amLabelOverlap.h"
 #include "amMorphologyCleaning.h"
 #include "amSnakeSegmentation.h"
 #include "amThoraxPhantomSource.h"
+#include "amTorsoSegmentation.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -16,6 +19,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <map>
 #include <string>
 #include <sys/stat.h>
@@ -113,6 +117,49 @@ void ClassifyAndClean(benchmark::State& state)
   state.counters["peak_MB"] = PeakMegabytes();
 }
 BENCHMARK(ClassifyAndClean)->Arg(0)->Arg(1)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+// The main job's segmentation at 1 mm: the snake from four clicks, the torso segmentation (arg 1:
+// the scan's own classes; 0: fixed ranges), the landmarks; each stage's seconds and the least Dice.
+void WholeDomain(benchmark::State& state)
+{
+  amThoraxPhantomSource* src = Phantom(10);
+  using Clock = std::chrono::steady_clock;
+  double snakeSeconds = 0, torsoSeconds = 0, landmarkSeconds = 0, worst = 1;
+  for (auto _ : state)
+  {
+    const auto t0 = Clock::now();
+    vtkNew<amSnakeSegmentation> snake;
+    snake->SetInputConnection(src->GetOutputPort(0));
+    const double seeds[4][4] = { { 29.4, -24.1, -28.0, 6 }, { -15.0, -25.0, -28.0, 7 }, { 5.0, 40.0, 0.0, 8 },
+      { 5.0, -20.0, 30.0, 8 } };
+    for (const auto& x : seeds)
+      snake->AddSeed(x[0], x[1], x[2], x[3]);
+    snake->Update();
+    const auto t1 = Clock::now();
+    vtkNew<amTorsoSegmentation> torso;
+    torso->SetInputConnection(src->GetOutputPort(0));
+    torso->SetOrganConnection(snake->GetOutputPort());
+    torso->SetAutomaticClasses(state.range(0) != 0);
+    torso->Update();
+    const auto t2 = Clock::now();
+    vtkNew<amCardiacLandmarks> landmarks;
+    landmarks->SetInputConnection(torso->GetOutputPort());
+    landmarks->Update();
+    const auto t3 = Clock::now();
+    snakeSeconds = std::chrono::duration<double>(t1 - t0).count();
+    torsoSeconds = std::chrono::duration<double>(t2 - t1).count();
+    landmarkSeconds = std::chrono::duration<double>(t3 - t2).count();
+    auto* truth = vtkImageData::SafeDownCast(src->GetOutputDataObject(1));
+    for (int l = 1; l <= 10; ++l)
+      worst = std::min(worst, Dice(torso->GetOutput(), truth, l));
+  }
+  state.counters["snake_s"] = snakeSeconds;
+  state.counters["torso_s"] = torsoSeconds;
+  state.counters["landmarks_s"] = landmarkSeconds;
+  state.counters["worst_dice"] = worst;
+  state.counters["peak_MB"] = PeakMegabytes();
+}
+BENCHMARK(WholeDomain)->Arg(1)->Arg(0)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 // The aorta of the real cardiac CT, with cardiac_aorta.xml's nine seeds: the level-set snake (the
 // old pipeline's settings) against the polar snakes. Arg: contour model (0 level set, 1 polar).
