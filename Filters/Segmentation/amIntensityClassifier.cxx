@@ -235,8 +235,25 @@ int amIntensityClassifier::RequestData(
     }
     int dims[3];
     input->GetDimensions(dims);
-    // The body: all but the air (below -500 HU, half-way between air and water) open to the sides.
-    const std::vector<unsigned char> outside = FloodFromSides(dims, [&](vtkIdType id) { return values[id] < -500.0; });
+    // The body: all but the air open to the sides (below -950 HU, so a lung that a field of view
+    // cuts, -850 HU at the side, stays in the body) and the skin's partial volume beside it (below
+    // -500 HU, half-way to water, within three voxels).
+    std::vector<unsigned char> outside = FloodFromSides(dims, [&](vtkIdType id) { return values[id] < -950.0; });
+    const vtkIdType sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
+    for (int ring = 0; ring < 3; ++ring)
+    {
+      std::vector<unsigned char> grown = outside;
+      for (vtkIdType id = 0; id < n; ++id)
+      {
+        if (outside[id] || values[id] >= -500.0)
+          continue;
+        const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
+                  k = static_cast<int>(id / sz);
+        grown[id] = (i > 0 && outside[id - 1]) || (i + 1 < dims[0] && outside[id + 1]) || (j > 0 && outside[id - sy]) ||
+          (j + 1 < dims[1] && outside[id + sy]) || (k > 0 && outside[id - sz]) || (k + 1 < dims[2] && outside[id + sz]);
+      }
+      outside.swap(grown);
+    }
     std::vector<unsigned char> body(outside.size());
     for (size_t i = 0; i < body.size(); ++i)
       body[i] = !outside[i];

@@ -153,7 +153,7 @@ ABDOMEN = os.path.join(SHARED, "totalseg_abdomen_ct_labels")
 class TissuesOfARealAbdomen(unittest.TestCase):
     """TorsoSegmentation with its defaults on the real abdomen CT (3 mm, lung bases, no contrast),
     against TotalSegmentator's 41 classes: its lungs against the lung lobes, its bone against the
-    vertebrae and ribs, and no gas of the stomach or bowel as lung. Measured: lungs 0.926, bone 0.757,
+    vertebrae and ribs, and no gas of the stomach or bowel as lung. Measured: lungs 0.928, bone 0.757,
     gas as lung 0 cm3 (the issue asks 0.95 and 0.85: missed, see docs/limits.md)."""
 
     def test_lungs_bone_and_gas(self):
