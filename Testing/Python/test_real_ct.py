@@ -111,6 +111,12 @@ class ChestCTToECG(unittest.TestCase):
                "--set", "endtime=300", "--output", out]
         p = subprocess.run(cli, capture_output=True, text=True, timeout=1200)
         self.assertEqual(p.returncode, 0, p.stderr)
+        # The summary gives each organ beside its adult range, the classes read from the scan and
+        # the computed landmarks.
+        self.assertIn("RightLung", p.stdout)
+        self.assertIn("adult 1000-4000 cm3", p.stdout)
+        self.assertIn("tissue classes read from the scan: air", p.stdout)
+        self.assertRegex(p.stdout, r"Stimulus +\(")
         # The warnings say what the scan does not allow.
         self.assertNotIn("mid-plane", p.stderr)  # the lungs, joined at the trachea, are parted there
         self.assertIn("cannot be told from the tissue around it", p.stderr)

@@ -54,8 +54,27 @@ class _Progress:
         self.stream.flush()
 
 
+# Adult reference volumes (cm3) of the organs of the thorax label scheme, for the summary: lungs at
+# inspiration (each 1-4 L), the ventricles' wall (LV and RV together, 100-350 g at 1.05 g/cm3),
+# end-diastolic blood pools (LV 65-240 mL, more where the segmentation holds the left atrium;
+# RV 60-260 mL), the thoracic aorta.
+ADULT_VOLUMES = {"RightLung": (1000, 4000), "LeftLung": (900, 3600), "Myocardium": (100, 350),
+                 "LeftVentricleBlood": (65, 240), "RightVentricleBlood": (60, 260), "Aorta": (20, 200)}
+CLASS_NAMES = ["air", "lung", "fat", "soft tissue", "contrast blood", "bone"]
+
+
+def _volume_remark(name, cm3):
+    """The organ's adult range, and whether the volume lies outside it."""
+    if name not in ADULT_VOLUMES:
+        return ""
+    low, high = ADULT_VOLUMES[name]
+    where = " (below)" if cm3 < low else " (above)" if cm3 > high else ""
+    return "   adult %d-%d cm3%s" % (low, high, where)
+
+
 def _describe(data):
-    """One line about a data object, plus a volume table for label maps."""
+    """One line about a data object, plus a volume table for label maps (each organ beside its adult
+    range, and the tissue classes read from the scan) and the named points of a landmark set."""
     lines = []
     if data is None:
         return lines
@@ -73,7 +92,13 @@ def _describe(data):
                 if label == 0:
                     continue
                 name = names.GetValue(int(label)) if names is not None and label < names.GetNumberOfValues() else ""
-                lines.append("        label %3d %-22s %12.1f cm3" % (label, name, counts[label] * voxel / 1000.0))
+                cm3 = counts[label] * voxel / 1000.0
+                lines.append("        label %3d %-22s %12.1f cm3%s" % (label, name, cm3, _volume_remark(name, cm3)))
+            classes = data.GetFieldData().GetArray("TissueClasses")
+            if classes is not None and classes.GetNumberOfComponents() == 6:
+                found = ["%s %.0f+-%.0f HU" % (CLASS_NAMES[c], classes.GetComponent(c, 1), classes.GetComponent(c, 2))
+                         for c in range(min(6, classes.GetNumberOfTuples())) if classes.GetComponent(c, 4)]
+                lines.append("      tissue classes read from the scan: " + ", ".join(found))
     elif data.IsA("vtkTable"):
         columns = [data.GetColumn(c) for c in range(data.GetNumberOfColumns())]
         widths = [max(len(c.GetName()), 8) for c in columns]
@@ -93,6 +118,10 @@ def _describe(data):
     elif data.IsA("vtkDataSet"):
         lines.append("      %s: %d points, %d cells" % (data.GetClassName(), data.GetNumberOfPoints(),
                                                        data.GetNumberOfCells()))
+        named = data.GetPointData().GetAbstractArray("Name")
+        if named is not None and named.GetNumberOfValues() == data.GetNumberOfPoints() <= 32:
+            for i in range(data.GetNumberOfPoints()):
+                lines.append("        %-18s (%.1f, %.1f, %.1f) mm" % ((named.GetValue(i),) + data.GetPoint(i)))
         hausdorff = data.GetFieldData().GetArray("Hausdorff")
         if hausdorff is not None and data.IsA("vtkPolyData"):
             lines.append("      two-sided Hausdorff distance to its input surface: %.3f mm" % hausdorff.GetValue(0))
