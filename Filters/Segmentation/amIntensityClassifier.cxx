@@ -37,12 +37,33 @@ namespace
 const double DefaultRanges[] = { -925, -475, 1, -475, -30, 2, -30, 170, 3, 170, 400, 4, 400, 1e30, 5 };
 const char* DefaultNames[] = { "Unclassified", "Lung", "Fat", "SoftTissue", "ContrastBlood", "Bone" };
 
+// Calls f(neighbour) for the 6 face neighbours of voxel id inside the grid.
+template<typename F>
+void FaceNeighbours(const int dims[3], vtkIdType id, F&& f)
+{
+  const vtkIdType sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
+            k = static_cast<int>(id / sz);
+  if (i > 0)
+    f(id - 1);
+  if (i < dims[0] - 1)
+    f(id + 1);
+  if (j > 0)
+    f(id - sy);
+  if (j < dims[1] - 1)
+    f(id + sy);
+  if (k > 0)
+    f(id - sz);
+  if (k < dims[2] - 1)
+    f(id + sz);
+}
+
 // The voxels that open() lets through and that connect (across faces) to the sides of the first
 // two index axes.
 template<typename Open>
 std::vector<unsigned char> FloodFromSides(const int dims[3], Open&& open)
 {
-  const vtkIdType sx = 1, sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const vtkIdType sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
   std::vector<unsigned char> reached(static_cast<size_t>(sz * dims[2]), 0);
   std::vector<vtkIdType> front;
   for (int k = 0; k < dims[2]; ++k)
@@ -50,7 +71,7 @@ std::vector<unsigned char> FloodFromSides(const int dims[3], Open&& open)
       for (int i = 0; i < dims[0]; ++i)
         if (i == 0 || j == 0 || i == dims[0] - 1 || j == dims[1] - 1)
         {
-          const vtkIdType id = k * sz + j * sy + i * sx;
+          const vtkIdType id = k * sz + j * sy + i;
           if (open(id))
           {
             reached[id] = 1;
@@ -61,18 +82,34 @@ std::vector<unsigned char> FloodFromSides(const int dims[3], Open&& open)
   {
     const vtkIdType id = front.back();
     front.pop_back();
-    const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
-              k = static_cast<int>(id / sz);
-    const vtkIdType next[6] = { i > 0 ? id - sx : -1, i < dims[0] - 1 ? id + sx : -1, j > 0 ? id - sy : -1,
-      j < dims[1] - 1 ? id + sy : -1, k > 0 ? id - sz : -1, k < dims[2] - 1 ? id + sz : -1 };
-    for (const vtkIdType q : next)
-      if (q >= 0 && !reached[q] && open(q))
+    FaceNeighbours(dims, id, [&](vtkIdType q) {
+      if (!reached[q] && open(q))
       {
         reached[q] = 1;
         front.push_back(q);
       }
+    });
   }
   return reached;
+}
+
+// The body, for the histogram of the automatic classes: all but the air open to the sides (below
+// -950 HU, so a lung that a field of view cuts, -850 HU at the side, stays in the body) and the
+// skin's partial volume beside it (below -500 HU, half-way to water, within three voxels).
+std::vector<unsigned char> Body(const int dims[3], const std::vector<double>& values)
+{
+  std::vector<unsigned char> outside = FloodFromSides(dims, [&](vtkIdType id) { return values[id] < -950.0; });
+  for (int ring = 0; ring < 3; ++ring)
+  {
+    std::vector<unsigned char> grown = outside;
+    for (vtkIdType id = 0; id < static_cast<vtkIdType>(values.size()); ++id)
+      if (!outside[id] && values[id] < -500.0)
+        FaceNeighbours(dims, id, [&](vtkIdType q) { grown[id] = grown[id] || outside[q]; });
+    outside.swap(grown);
+  }
+  for (auto& v : outside)
+    v = !v;
+  return outside;
 }
 }
 
@@ -235,28 +272,7 @@ int amIntensityClassifier::RequestData(
     }
     int dims[3];
     input->GetDimensions(dims);
-    // The body: all but the air open to the sides (below -950 HU, so a lung that a field of view
-    // cuts, -850 HU at the side, stays in the body) and the skin's partial volume beside it (below
-    // -500 HU, half-way to water, within three voxels).
-    std::vector<unsigned char> outside = FloodFromSides(dims, [&](vtkIdType id) { return values[id] < -950.0; });
-    const vtkIdType sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
-    for (int ring = 0; ring < 3; ++ring)
-    {
-      std::vector<unsigned char> grown = outside;
-      for (vtkIdType id = 0; id < n; ++id)
-      {
-        if (outside[id] || values[id] >= -500.0)
-          continue;
-        const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
-                  k = static_cast<int>(id / sz);
-        grown[id] = (i > 0 && outside[id - 1]) || (i + 1 < dims[0] && outside[id + 1]) || (j > 0 && outside[id - sy]) ||
-          (j + 1 < dims[1] && outside[id + sy]) || (k > 0 && outside[id - sz]) || (k + 1 < dims[2] && outside[id + sz]);
-      }
-      outside.swap(grown);
-    }
-    std::vector<unsigned char> body(outside.size());
-    for (size_t i = 0; i < body.size(); ++i)
-      body[i] = !outside[i];
+    const std::vector<unsigned char> body = Body(dims, values);
     mixture = amTissueMixture::Fit(values.data(), body.data(), values.size());
     if (!mixture.Problem.empty())
     {
@@ -307,23 +323,6 @@ int amIntensityClassifier::RequestData(
     input->GetDimensions(dims);
     const vtkIdType sx = 1, sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
     std::vector<unsigned char> exterior = FloodFromSides(dims, [&](vtkIdType id) { return l[id] == 0; });
-    // Visit the 6 neighbours of id, calling f(neighbour).
-    const auto neighbours = [&](vtkIdType id, auto&& f) {
-      const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
-                k = static_cast<int>(id / sz);
-      if (i > 0)
-        f(id - sx);
-      if (i < dims[0] - 1)
-        f(id + sx);
-      if (j > 0)
-        f(id - sy);
-      if (j < dims[1] - 1)
-        f(id + sy);
-      if (k > 0)
-        f(id - sz);
-      if (k < dims[2] - 1)
-        f(id + sz);
-    };
     for (int layer = 0; layer < 2; ++layer)
     {
       std::vector<vtkIdType> shell;
@@ -331,7 +330,7 @@ int amIntensityClassifier::RequestData(
         if (!exterior[id] && l[id] != 0 && scalars->GetComponent(id, 0) < this->ExteriorThreshold)
         {
           bool touches = false;
-          neighbours(id, [&](vtkIdType q) { touches = touches || exterior[q]; });
+          FaceNeighbours(dims, id, [&](vtkIdType q) { touches = touches || exterior[q]; });
           // ... and tissue within two voxels along an axis: skin, not lung beside an air pocket.
           const int c[3] = { static_cast<int>(id % dims[0]), static_cast<int>((id / dims[0]) % dims[1]),
             static_cast<int>(id / sz) };

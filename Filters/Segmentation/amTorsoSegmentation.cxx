@@ -114,6 +114,30 @@ bool OrganLabels(vtkImageData* ct, vtkImageData* organs, std::vector<std::uint8_
   }
   return true;
 }
+
+// Updates an inner filter and returns its errors' messages (empty when it ran), so that the outer
+// filter says them once, as its own.
+std::string UpdateQuietly(vtkAlgorithm* inner)
+{
+  std::string errors;
+  vtkNew<vtkCallbackCommand> keep;
+  keep->SetClientData(&errors);
+  keep->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    // VTK's text is "ERROR: In file, line N\nclass (address): message": keep the message.
+    std::string text = callData ? static_cast<const char*>(callData) : "";
+    const auto start = text.find("): ");
+    if (start != std::string::npos)
+      text = text.substr(start + 3);
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      text.pop_back();
+    *static_cast<std::string*>(clientData) += text;
+  });
+  inner->AddObserver(vtkCommand::ErrorEvent, keep);
+  vtkNew<vtkCallbackCommand> quiet; // the executive's "returned failure" adds nothing
+  inner->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
+  inner->Update();
+  return errors;
+}
 }
 
 int amTorsoSegmentation::RequestData(
@@ -194,13 +218,7 @@ int amTorsoSegmentation::RequestData(
   double noiseSmoothing = 0.0;
   if (noise > this->MaximumNoise)
   {
-    const double finest = std::min({ grid.Spacing[0], grid.Spacing[1], grid.Spacing[2] });
-    for (noiseSmoothing = 0.1 * finest;
-         noise * amVoxel::GaussianNoiseFactor(grid, noiseSmoothing) > 0.8 * this->MaximumNoise &&
-         noiseSmoothing < 4.0 * finest;
-         noiseSmoothing += 0.05 * finest)
-    {
-    }
+    noiseSmoothing = amVoxel::GaussianForNoise(grid, noise, 0.8 * this->MaximumNoise);
     std::vector<float> smoothed(hu->GetPointer(0), hu->GetPointer(0) + n);
     amVoxel::Gaussian(grid, smoothed, noiseSmoothing);
     std::copy(smoothed.begin(), smoothed.end(), hu->GetPointer(0));
@@ -211,24 +229,7 @@ int amTorsoSegmentation::RequestData(
   vtkNew<amIntensityClassifier> classifier;
   classifier->SetInputData(huImage);
   classifier->SetMode(this->AutomaticClasses ? amIntensityClassifier::Automatic : amIntensityClassifier::Ranges);
-  // The classifier's error is this filter's, said once.
-  std::string classifierError;
-  vtkNew<vtkCallbackCommand> keepError;
-  keepError->SetClientData(&classifierError);
-  keepError->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-    // VTK's text is "ERROR: In file, line N\nclass (address): message": keep the message.
-    std::string text = callData ? static_cast<const char*>(callData) : "";
-    const auto start = text.find("): ");
-    if (start != std::string::npos)
-      text = text.substr(start + 3);
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-      text.pop_back();
-    *static_cast<std::string*>(clientData) += text;
-  });
-  classifier->AddObserver(vtkCommand::ErrorEvent, keepError);
-  vtkNew<vtkCallbackCommand> quiet; // the executive's "returned failure" adds nothing
-  classifier->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, quiet);
-  classifier->Update();
+  const std::string classifierError = UpdateQuietly(classifier);
   vtkDataArray* classArray = classifier->GetOutput()->GetPointData()->GetScalars();
   if (!classArray || !classifierError.empty())
   {
@@ -247,7 +248,9 @@ int amTorsoSegmentation::RequestData(
         vtkWarningMacro("The scan shows no " << what[c] << " intensity class (no peak of the body's histogram near "
                                              << below[c] << " HU): " << (c == 1 ? "is it a chest CT?" : "")
                                              << (c == 2 ? "a very lean patient, or not a CT in HU?" : "")
-                                             << (c == 5 ? "the field of view holds no bone." : ""));
+                                             << (c == 5 ? "the field of view holds no bone, or its bone is too thin at these voxels to show one (bone "
+                                                            "then starts half-way to cortical bone)."
+                                                          : ""));
   }
   this->UpdateProgress(0.2);
 
@@ -310,7 +313,6 @@ int amTorsoSegmentation::RequestData(
   wall.Thickness = this->WallThickness;
   wall.Sigma = this->WallSmoothingSigma;
   wall.MinimumContrast = this->MinimumWallContrast;
-
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);
   if (!heart.PoolVoxels)
     vtkWarningMacro("No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");

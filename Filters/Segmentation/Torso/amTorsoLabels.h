@@ -39,8 +39,6 @@ struct TissueReport
   bool LungsSplit = false;          // one air component held both lungs, parted where they meet
   bool LungsSplitAtMidPlane = false; // ... and they could not be parted there: split at the mid-plane
   int BoneComponents = 0;
-  std::size_t TrabecularVoxels = 0; // marrow added to the cortical bone
-  std::size_t GasVoxels = 0;        // air inside the body in components of gas, not lung
 };
 
 struct TissueParameters

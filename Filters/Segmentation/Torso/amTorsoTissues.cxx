@@ -66,6 +66,64 @@ std::vector<int> BySize(const std::vector<std::size_t>& sizes)
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return sizes[a] > sizes[b]; });
   return order;
 }
+// The air components that may be lungs, largest first. The lungs are thick: components are ranked
+// by their voxels at least two voxels deep in the air (a thin layer of air, between an arm and the
+// chest, or a skin fold, has none). Aerated lung is darker than soft tissue but brighter than gas:
+// with gasIsNotLung, a component mostly of the air class is gas (the stomach, the bowel), whatever
+// its size, and not lung.
+std::vector<int> LungCandidates(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes,
+  const amVoxelMask& lungs, const std::vector<int>& id, const std::vector<std::size_t>& sizes, bool gasIsNotLung)
+{
+  const std::size_t n = lungs.size();
+  amVoxelMask other(n);
+  for (std::size_t v = 0; v < n; ++v)
+    other[v] = !lungs[v];
+  const std::vector<float> depth = amVoxel::Distance(g, other);
+  const double thick = 2.0 * std::max({ g.Spacing[0], g.Spacing[1], g.Spacing[2] });
+  std::vector<std::size_t> deep(sizes.size(), 0), parenchyma(sizes.size(), 0);
+  for (std::size_t v = 0; v < n; ++v)
+    if (id[v] >= 0)
+    {
+      deep[id[v]] += depth[v] >= thick;
+      parenchyma[id[v]] += classes[v] == amTorso::LungClass;
+    }
+  std::vector<int> order = BySize(deep);
+  order.erase(std::remove_if(order.begin(), order.end(),
+                [&](int c) { return deep[c] == 0 || (gasIsNotLung && 2 * parenchyma[c] < sizes[c]); }),
+    order.end());
+  return order;
+}
+
+// Bone: the bone class, its partial volume (brighter than BonePartialLevel within two voxels of
+// it), and the trabecular bone it encloses (darker, among soft tissue and contrast blood in
+// intensity, but inside a cortical ring in an axial slice; the spinal canal and the marrow's fat
+// are darker than TrabecularLevel and stay out).
+amVoxelMask BoneMask(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& exterior,
+  const amTorso::TissueParameters& p)
+{
+  const std::size_t n = classes.size();
+  amVoxelMask mask(n);
+  for (std::size_t v = 0; v < n; ++v)
+    mask[v] = classes[v] == amTorso::BoneClass && !exterior[v];
+  if (!p.HU)
+    return mask;
+  if (p.BonePartialLevel < 1e30)
+    for (int ring = 0; ring < 2; ++ring)
+    {
+      amVoxelMask grown = mask;
+      for (std::size_t v = 0; v < n; ++v)
+        if (!mask[v] && !exterior[v] && p.HU[v] > p.BonePartialLevel)
+          g.AllNeighbours(v, [&](std::size_t w) { grown[v] = grown[v] || mask[w]; });
+      mask.swap(grown);
+    }
+  const int a = p.AxialAxis;
+  const double pixel = g.Spacing[(a + 1) % 3] * g.Spacing[(a + 2) % 3];
+  const amVoxelMask marrow = amVoxel::SliceHoles(g, mask, a, static_cast<std::size_t>(p.MaximumMarrowArea / pixel));
+  for (std::size_t v = 0; v < n; ++v)
+    if (marrow[v] && !exterior[v] && p.HU[v] > p.TrabecularLevel)
+      mask[v] = 1;
+  return mask;
+}
 }
 
 amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes,
@@ -122,36 +180,7 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   std::vector<int> id;
   std::vector<std::size_t> sizes;
   amVoxel::Components(g, lungs, id, sizes);
-  // The lungs are thick: components are ranked by their voxels at least two voxels deep in the air
-  // (a thin layer of air, between an arm and the chest, or a skin fold, has none).
-  std::vector<std::size_t> deep(sizes.size(), 0);
-  {
-    amVoxelMask other(n);
-    for (std::size_t v = 0; v < n; ++v)
-      other[v] = !lungs[v];
-    const std::vector<float> depth = amVoxel::Distance(g, other);
-    const double thick = 2.0 * std::max({ g.Spacing[0], g.Spacing[1], g.Spacing[2] });
-    for (std::size_t v = 0; v < n; ++v)
-      if (id[v] >= 0 && depth[v] >= thick)
-        ++deep[id[v]];
-  }
-  std::vector<int> order = BySize(deep);
-  order.erase(std::remove_if(order.begin(), order.end(), [&](int c) { return deep[c] == 0; }), order.end());
-  if (p.GasIsNotLung)
-  {
-    // Aerated lung is darker than soft tissue but brighter than gas: a component mostly of the air
-    // class is gas (the stomach, the bowel), whatever its size, and not lung.
-    std::vector<std::size_t> parenchyma(sizes.size(), 0);
-    for (std::size_t v = 0; v < n; ++v)
-      if (id[v] >= 0 && classes[v] == LungClass)
-        ++parenchyma[id[v]];
-    order.erase(std::remove_if(order.begin(), order.end(), [&](int c) { return 2 * parenchyma[c] < sizes[c]; }),
-      order.end());
-    report.GasVoxels = 0;
-    for (std::size_t c = 0; c < sizes.size(); ++c)
-      if (2 * parenchyma[c] < sizes[c] && sizes[c] >= minimumVoxels)
-        report.GasVoxels += sizes[c];
-  }
+  const std::vector<int> order = LungCandidates(g, classes, lungs, id, sizes, p.GasIsNotLung);
   for (const int c : order)
     report.LungComponents += sizes[c] >= minimumVoxels;
   const int first = order.empty() || sizes[order[0]] < minimumVoxels ? -1 : order[0];
@@ -175,7 +204,8 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     amVoxelMask joined(n);
     for (std::size_t v = 0; v < n; ++v)
       joined[v] = id[v] == first;
-    if (amTorso::SplitJoinedLungs(g, joined, minimumVoxels, side))
+    report.LungsSplitAtMidPlane = !amTorso::SplitJoinedLungs(g, joined, minimumVoxels, side);
+    if (!report.LungsSplitAtMidPlane)
     {
       double x[3] = { 0, 0, 0 }, count[3] = { 0, 0, 0 };
       for (std::size_t v = 0; v < n; ++v)
@@ -185,11 +215,6 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
           ++count[side[v]];
         }
       sideOneIsLeft = x[1] / count[1] > x[2] / count[2];
-    }
-    else
-    {
-      side.clear();
-      report.LungsSplitAtMidPlane = true;
     }
   }
   for (std::size_t v = 0; v < n; ++v)
@@ -201,7 +226,7 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
         labels[v] = p.LeftoverAirIsFat ? Phantom::Fat : amVoxel::Pending;
       continue;
     }
-    if (c == first && second < 0 && !side.empty())
+    if (c == first && second < 0 && !report.LungsSplitAtMidPlane)
       labels[v] = (side[v] == 1) == sideOneIsLeft ? Phantom::LeftLung : Phantom::RightLung;
     else if (c == first && second < 0)
       labels[v] = WorldX(g, v, worldX) > bodyX ? Phantom::LeftLung : Phantom::RightLung;
@@ -213,33 +238,8 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
       labels[v] = p.LeftoverAirIsFat ? Phantom::Fat : amVoxel::Pending;
   }
 
-  // Bone: cortical bone and the trabecular bone it encloses (darker, among soft tissue and
-  // contrast blood in intensity, but inside a cortical ring in an axial slice; the spinal canal
-  // and the marrow's fat are darker than the level and stay out). The largest piece is the spine,
-  // the others ribs.
-  for (std::size_t v = 0; v < n; ++v)
-    mask[v] = classes[v] == BoneClass && !exterior[v];
-  if (p.HU && p.BonePartialLevel < 1e30)
-    for (int ring = 0; ring < 2; ++ring)
-    {
-      amVoxelMask grown = mask;
-      for (std::size_t v = 0; v < n; ++v)
-        if (!mask[v] && !exterior[v] && p.HU[v] > p.BonePartialLevel)
-          g.AllNeighbours(v, [&](std::size_t w) { grown[v] = grown[v] || mask[w]; });
-      mask.swap(grown);
-    }
-  if (p.HU)
-  {
-    const int a = p.AxialAxis;
-    const double pixel = g.Spacing[(a + 1) % 3] * g.Spacing[(a + 2) % 3];
-    const amVoxelMask marrow = amVoxel::SliceHoles(g, mask, a, static_cast<std::size_t>(p.MaximumMarrowArea / pixel));
-    for (std::size_t v = 0; v < n; ++v)
-      if (marrow[v] && !exterior[v] && p.HU[v] > p.TrabecularLevel)
-      {
-        mask[v] = 1;
-        ++report.TrabecularVoxels;
-      }
-  }
+  // Bone: the largest piece is the spine, the others ribs.
+  mask = BoneMask(g, classes, exterior, p);
   amVoxel::Components(g, mask, id, sizes);
   const std::vector<int> bones = BySize(sizes);
   for (const int c : bones)

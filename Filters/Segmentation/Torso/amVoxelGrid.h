@@ -98,6 +98,10 @@ double NoiseLevel(const amVoxelGrid& g, const float* values, float floor);
 /// The factor by which Gaussian(g, field, sigma) scales the standard deviation of white noise.
 double GaussianNoiseFactor(const amVoxelGrid& g, double sigma);
 
+/// The least Gaussian (mm, in steps of a twentieth of the finest voxel, at most four voxels) that
+/// brings white noise of the given standard deviation down to target.
+double GaussianForNoise(const amVoxelGrid& g, double noise, double target);
+
 /// Exact Euclidean distance (mm) of every voxel centre to the nearest voxel of the mask (0 in it;
 /// a large value everywhere when the mask is empty). Felzenszwalb-Huttenlocher, per axis.
 std::vector<float> Distance(const amVoxelGrid& g, const amVoxelMask& mask);

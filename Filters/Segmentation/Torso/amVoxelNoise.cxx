@@ -42,3 +42,13 @@ double amVoxel::GaussianNoiseFactor(const amVoxelGrid& g, double sigma)
   }
   return factor;
 }
+
+double amVoxel::GaussianForNoise(const amVoxelGrid& g, double noise, double target)
+{
+  // The least sigma, in steps of a twentieth of the finest voxel, up to four voxels.
+  const double finest = std::min({ g.Spacing[0], g.Spacing[1], g.Spacing[2] });
+  double sigma = 0.1 * finest;
+  while (noise * GaussianNoiseFactor(g, sigma) > target && sigma < 4.0 * finest)
+    sigma += 0.05 * finest;
+  return sigma;
+}
