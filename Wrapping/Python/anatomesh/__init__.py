@@ -19,7 +19,7 @@ starts with (large arrays reused from filter to filter instead of mapped afresh:
 from .AnatomeshFiltersCleaning import amMorphologyCleaning
 from .AnatomeshFiltersSegmentation import (
     amCardiacLandmarks, amIntensityClassifier, amLabelOverlap, amSnakeSegmentation, amTorsoSegmentation)
-from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential
+from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential, amVentricularFibres
 from .AnatomeshFiltersSources import amSeedPointsSource, amSyntheticAtlasSource, amThoraxPhantomSource
 from .AnatomeshFiltersSurface import (
     amCurvatureMetric,
@@ -61,5 +61,6 @@ __all__ = [
     "amThoraxPhantomSource",
     "amTorsoPotential",
     "amTorsoSegmentation",
+    "amVentricularFibres",
     "keep_freed_memory",
 ]
