@@ -13,6 +13,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -351,6 +352,8 @@ int amVentricularFibres::RequestData(
   points->SetDataTypeToDouble();
   std::vector<vtkIdType> local(nPoints, -1);
   vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdTypeArray> inputIds;
+  inputIds->SetName("InputPointId");
   vtkNew<vtkIntArray> tagArray;
   tagArray->SetName("VentricularTag");
   for (const auto& t : triangles)
@@ -359,7 +362,10 @@ int amVentricularFibres::RequestData(
     for (int a = 0; a < 3; ++a)
     {
       if (local[t.Points[a]] < 0)
+      {
         local[t.Points[a]] = points->InsertNextPoint(&xyz[3 * t.Points[a]]);
+        inputIds->InsertNextValue(t.Points[a]);
+      }
       ids[a] = local[t.Points[a]];
     }
     polys->InsertNextCell(3, ids);
@@ -368,6 +374,7 @@ int amVentricularFibres::RequestData(
   tagsOut->SetPoints(points);
   tagsOut->SetPolys(polys);
   tagsOut->GetCellData()->AddArray(tagArray);
+  tagsOut->GetPointData()->AddArray(inputIds);
   vtkNew<vtkStringArray> names;
   names->SetName("TagNames");
   for (int t = 1; t <= 4; ++t)

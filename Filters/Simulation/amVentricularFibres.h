@@ -21,8 +21,8 @@
  * Output 0 ("Mesh"): the input with cell data Fibers and Sheets (unit vectors, zero outside the
  * heart) and point data TransmuralDepth (0 endocardium to 1 epicardium), ApicoBasal (0 apex to 1
  * base) and Ventricle (0 LV, 1 RV), -1 off the heart. Output 1 ("Tags"): the heart's boundary
- * triangles (vtkPolyData, normals out of the heart) with cell data VentricularTag and field data
- * TagNames; Gmsh and the other mesh writers can take them as physical surfaces.
+ * triangles (vtkPolyData, normals out of the heart) with cell data VentricularTag, point data
+ * InputPointId (the point's id in the mesh) and field data TagNames.
  *
  * Errors: no heart cells, a non-tetrahedral heart cell, no LV endocardium, no epicardium, no axis.
  *

@@ -19,7 +19,13 @@ starts with (large arrays reused from filter to filter instead of mapped afresh:
 from .AnatomeshFiltersCleaning import amMorphologyCleaning
 from .AnatomeshFiltersSegmentation import (
     amCardiacLandmarks, amIntensityClassifier, amLabelOverlap, amSnakeSegmentation, amTorsoSegmentation)
-from .AnatomeshFiltersSimulation import amFitzHughNagumoSolver, amTorsoPotential, amVentricularFibres
+from .AnatomeshFiltersSimulation import (
+    amFitzHughNagumoSolver,
+    amLeadFieldECG,
+    amReactionEikonalSolver,
+    amTorsoPotential,
+    amVentricularFibres,
+)
 from .AnatomeshFiltersSources import amSeedPointsSource, amSyntheticAtlasSource, amThoraxPhantomSource
 from .AnatomeshFiltersSurface import (
     amCurvatureMetric,
@@ -47,11 +53,13 @@ __all__ = [
     "amLabelMapTetrahedralize",
     "amLabelOverlap",
     "amLabelSurface",
+    "amLeadFieldECG",
     "amMeditReader",
     "amMeditWriter",
     "amMeshQuality",
     "amMetricRemeshing",
     "amMorphologyCleaning",
+    "amReactionEikonalSolver",
     "amSeedPointsSource",
     "amSnakeSegmentation",
     "amSurfaceDistance",
