@@ -1,5 +1,6 @@
 #include "amLeadFieldECG.h"
 
+#include "amECGFeatures.h"
 #include "amLandmarkPoints.h"
 #include "amLeadFields.h"
 #include "amP1Assembly.h"
@@ -21,6 +22,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -63,12 +65,14 @@ amLeadFieldECG::amLeadFieldECG()
   , Conductivity(0.2)
   , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02 }
   , MaximumElectrodeDistance(20.0)
+  , SamplingInterval(1.0)
   , NumberOfNodes(0)
   , NumberOfHeartNodes(0)
   , NumberOfFrames(0)
   , LeadFieldSeconds(0)
 {
   this->SetNumberOfInputPorts(3);
+  this->SetNumberOfOutputPorts(2);
   this->SetRegionArrayName("Region");
   this->SetFiberArrayName("Fibers");
   this->SetVoltageArrayName("Vm");
@@ -124,11 +128,20 @@ int amLeadFieldECG::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+int amLeadFieldECG::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkTable");
+  return 1;
+}
+
 int amLeadFieldECG::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  for (int port = 0; port < 2; ++port)
+  {
+    vtkInformation* outInfo = outputVector->GetInformationObject(port);
+    outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  }
   return 1;
 }
 
@@ -323,7 +336,8 @@ int amLeadFieldECG::RequestData(
   vtkUnstructuredGrid* mesh = vtkUnstructuredGrid::GetData(inputVector[0]);
   vtkUnstructuredGrid* heart = vtkUnstructuredGrid::GetData(inputVector[1]);
   vtkPolyData* landmarks = vtkPolyData::GetData(inputVector[2], 0);
-  vtkTable* output = vtkTable::GetData(outputVector);
+  vtkTable* output = vtkTable::GetData(outputVector, 0);
+  vtkTable* features = vtkTable::GetData(outputVector, 1);
   auto fail = [&]() {
     this->LoopIndex = -1;
     this->State.reset();
@@ -354,7 +368,21 @@ int amLeadFieldECG::RequestData(
       const int nt = heartInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS())
         ? heartInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS())
         : 0;
-      if (nt <= 1)
+      std::vector<double> loop;
+      if (nt > 1)
+      {
+        const double* times = heartInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+        if (this->SamplingInterval > 0)
+        {
+          const long long samples =
+            std::llround(std::floor((times[nt - 1] - times[0]) / this->SamplingInterval + 1e-9));
+          for (long long k = 0; k <= samples; ++k)
+            loop.push_back(times[0] + k * this->SamplingInterval);
+        }
+        else
+          loop.assign(times, times + nt);
+      }
+      if (loop.size() <= 1)
       {
         const double t = heart->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
           ? heart->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
@@ -364,8 +392,7 @@ int amLeadFieldECG::RequestData(
       }
       else
       {
-        const double* times = heartInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-        this->LoopTimes.assign(times, times + nt);
+        this->LoopTimes = loop;
         this->LoopIndex = 0;
         request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
         return 1;
@@ -411,6 +438,7 @@ int amLeadFieldECG::RequestData(
     electrodes->InsertNextTuple(p.data());
   output->GetFieldData()->AddArray(electrodes);
   this->NumberOfFrames = static_cast<int>(nt);
+  this->Measure(features);
   std::ostringstream params;
   params << "sigma_i=" << this->IntracellularConductivityFibre << "/" << this->IntracellularConductivityTransverse
          << " sigma_e=" << this->ExtracellularConductivityFibre << "/" << this->ExtracellularConductivityTransverse
@@ -419,6 +447,54 @@ int amLeadFieldECG::RequestData(
     params << (k ? "," : "") << this->RegionConductivities[k];
   amProvenance::Record(output, mesh, "amLeadFieldECG", params.str());
   return 1;
+}
+
+void amLeadFieldECG::Measure(vtkTable* features)
+{
+  const Model& m = *this->State;
+  this->QRSDuration = this->QTInterval = 0;
+  if (m.Times.size() < 3)
+    return; // a single frame is a map, not an ECG
+  std::vector<std::vector<double>> leads(12, std::vector<double>(m.Times.size()));
+  for (std::size_t k = 0; k < m.Times.size(); ++k)
+    for (int l = 0; l < 12; ++l)
+      leads[l][k] = m.Leads[k][l];
+  amECGFeatures measure;
+  if (!measure.Measure(m.Times, amTwelveLeads::LeadNames(), leads))
+  {
+    vtkWarningMacro(<< "the ECG's features cannot be read: " << measure.Error);
+    return;
+  }
+  this->QRSDuration = measure.QRSDuration;
+  this->QTInterval = measure.QTInterval;
+  vtkNew<vtkStringArray> name, polarity;
+  name->SetName("Lead");
+  polarity->SetName("TPolarity");
+  vtkNew<vtkDoubleArray> r, s, t;
+  r->SetName("R_mV");
+  s->SetName("S_mV");
+  t->SetName("T_mV");
+  for (const auto& lead : measure.Leads)
+  {
+    name->InsertNextValue(lead.Name);
+    r->InsertNextValue(lead.R);
+    s->InsertNextValue(lead.S);
+    t->InsertNextValue(lead.T);
+    polarity->InsertNextValue(lead.TPolarity);
+  }
+  features->AddColumn(name);
+  features->AddColumn(r);
+  features->AddColumn(s);
+  features->AddColumn(t);
+  features->AddColumn(polarity);
+  for (const auto& figure : { std::make_pair("QRSOnset_ms", measure.QRSOnset),
+         std::make_pair("QRSDuration_ms", measure.QRSDuration), std::make_pair("QTInterval_ms", measure.QTInterval) })
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(figure.first);
+    a->InsertNextValue(figure.second);
+    features->GetFieldData()->AddArray(a);
+  }
 }
 
 void amLeadFieldECG::PrintSelf(ostream& os, vtkIndent indent)

@@ -19,8 +19,13 @@
  * blood 0.7, bone 0.02). amLeadFields solves div(sigma_b grad Z) = -delta_k for each electrode k
  * (RA is the ground) and each electrode's potential is then -(K_i Z_k) . Vm.
  *
- * Output: a vtkTable with Time (ms) and the leads I, II, III, aVR, aVL, aVF, V1..V6 (mV); field data
- * Electrodes (the snapped positions, mm).
+ * The heart is read every SamplingInterval ms (1; 0: at its own time steps) from 0 to the end of
+ * its time range: a reaction-eikonal heart answers any time exactly.
+ *
+ * Output 0 ("Leads"): a vtkTable with Time (ms) and the leads I, II, III, aVR, aVL, aVF, V1..V6 (mV);
+ * field data Electrodes (the snapped positions, mm). Output 1 ("Features"): what a cardiologist reads
+ * off them (amECGFeatures): per lead R, S and T amplitudes (mV) and the T wave's polarity; field
+ * data QRSOnset, QRSDuration, QTInterval (ms).
  *
  * @sa amReactionEikonalSolver amTorsoPotential amVentricularFibres
  */
@@ -34,6 +39,7 @@
 #include <vector>
 
 class vtkPolyData;
+class vtkTable;
 class vtkUnstructuredGrid;
 
 class ANATOMESHFILTERSSIMULATION_EXPORT amLeadFieldECG : public vtkTableAlgorithm
@@ -93,6 +99,18 @@ public:
   ///@}
 
   ///@{
+  /// Time between the ECG's samples (ms, default 1; 0: the heart's own time steps).
+  vtkSetClampMacro(SamplingInterval, double, 0.0, 1e6);
+  vtkGetMacro(SamplingInterval, double);
+  ///@}
+
+  ///@{
+  /// The last run's QRS duration and QT interval (ms; 0 when the leads could not be read).
+  vtkGetMacro(QRSDuration, double);
+  vtkGetMacro(QTInterval, double);
+  ///@}
+
+  ///@{
   /// Figures of the last run: mesh nodes, heart nodes, frames read, seconds of the lead fields.
   vtkGetMacro(NumberOfNodes, vtkIdType);
   vtkGetMacro(NumberOfHeartNodes, vtkIdType);
@@ -104,6 +122,7 @@ protected:
   amLeadFieldECG();
   ~amLeadFieldECG() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -117,6 +136,8 @@ protected:
   std::vector<double> RegionConductivities;
   std::vector<double> ElectrodePositions;
   double MaximumElectrodeDistance;
+  double SamplingInterval;
+  double QRSDuration = 0, QTInterval = 0;
   vtkIdType NumberOfNodes, NumberOfHeartNodes;
   int NumberOfFrames;
   double LeadFieldSeconds;
@@ -130,6 +151,7 @@ private:
   std::vector<double> LoopTimes;
   bool Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* heart, vtkPolyData* landmarks);
   bool Read(vtkUnstructuredGrid* heart, double time);
+  void Measure(vtkTable* features);
 };
 
 #endif

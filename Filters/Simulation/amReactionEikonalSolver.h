@@ -19,8 +19,8 @@
  * Repolarisation: each node's action potential (amMitchellSchaeffer, amActionPotentialTable) lasts
  *   APD = APD_epi + (APD_endo - APD_epi)(1 - d) + ApicoBasalDurationDifference (h - 1/2)
  *         + ActivationDurationSlope (AT - AT_first),
- * d the transmural depth, h the apico-basal coordinate: the endocardium's 280 ms and the
- * epicardium's 240 ms, the base 30 ms longer than the apex, and -0.7 ms per ms of activation delay
+ * d the transmural depth, h the apico-basal coordinate: the endocardium's 340 ms and the
+ * epicardium's 300 ms, the base 30 ms longer than the apex, and -0.7 ms per ms of activation delay
  * (electrotonic coupling: human ventricles show APD falling as activation time rises with a slope
  * near -1, Franz et al. 1987). Around a closed ventricle a uniform transmural gradient's dipoles
  * cancel; the apico-basal and activation-delay terms make the T wave follow the QRS complex. Each
@@ -115,8 +115,8 @@ public:
   ///@}
 
   ///@{
-  /// Action potential durations (ms, APD90) at the endocardium (default 280) and the epicardium
-  /// (240), and the base's less the apex's (ms, default 30).
+  /// Action potential durations (ms, APD90) at the endocardium (default 340) and the epicardium
+  /// (300), and the base's less the apex's (ms, default 30).
   vtkSetClampMacro(ActionPotentialDurationEndocardium, double, 20.0, 2000.0);
   vtkGetMacro(ActionPotentialDurationEndocardium, double);
   vtkSetClampMacro(ActionPotentialDurationEpicardium, double, 20.0, 2000.0);

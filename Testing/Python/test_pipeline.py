@@ -38,24 +38,26 @@ class ThoraxJob(unittest.TestCase):
         code, stdout, stderr = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"),
                                    "--output", out, "--set", "spacing=4", "--set", "tolerance=1", "--set", "size=8")
         self.assertEqual(code, 0, stderr)
-        # 10 files of the meshing chain; the simulation: heart and body-surface time series (101 frames + .pvd
-        # each) and the ECG table.
-        self.assertIn("Wrote 215 file(s)", stdout)
-        for name in ("thorax_heart.pvd", "thorax_body_surface.pvd", "thorax_heart_0100.vtu", "thorax_ecg.csv"):
+        # 10 files of the meshing chain; the heartbeat: the landmarks, the ventricles' tags, heart and
+        # body-surface time series (101 frames + .pvd each), the ECG and its reading.
+        self.assertIn("Wrote 218 file(s)", stdout)
+        for name in ("thorax_heart.pvd", "thorax_body_surface.pvd", "thorax_heart_0100.vtu", "thorax_ecg.csv",
+                     "thorax_ecg_features.csv", "thorax_landmarks.vtp", "thorax_ventricular_tags.vtp"):
             self.assertTrue(os.path.exists(os.path.join(out, name)), name)
         with open(os.path.join(out, "thorax_ecg.csv")) as f:
             rows = f.read().splitlines()
-        self.assertEqual(len(rows), 102)  # header + 0, 5, ..., 500 ms
+        self.assertEqual(len(rows), 502)  # header + 0, 1, ..., 500 ms
         self.assertTrue(rows[0].startswith("Time,I,II,III"), rows[0])
+        self.assertRegex(stdout, r"ECG: QRS \d+ ms \(normal 80-120[^)]*\), QT \d+ ms")
         self.assertIn("phantom", stderr)  # progress lines
         # The timing table: every filter with its own seconds, the output files and the rest, adding
         # up to the run's time; the same figures in the run marker.
         table = stdout[stdout.index("Seconds per filter"):].splitlines()
         names = ["phantom", "snake", "segmentation", "dice", "surface", "smooth", "metric", "remesh",
                  "save_surface_mesh", "save_ct", "save_truth", "save_labels", "tets", "quality", "save_volume_mesh",
-                 "save_gmsh", "heart", "torso", "(outputs)", "(other)"]
+                 "save_gmsh", "landmarks", "fibres", "heart", "ecg", "torso", "(outputs)", "(other)"]
         self.assertEqual([l.split()[0] for l in table[1:len(names) + 1]], names)
-        self.assertRegex(stdout, r"heart +FitzHughNagumoSolver +[0-9.]+ s +[0-9.]+ % +[0-9.]+ +\(\d+ runs\)")
+        self.assertRegex(stdout, r"heart +ReactionEikonalSolver +[0-9.]+ s +[0-9.]+ % +[0-9.]+ +\(\d+ runs\)")
         # Cores kept busy: CPU seconds per wall second, more than none and at most the machine's
         # cores (plus the clocks' granularity).
         tets = next(l for l in table if l.split()[0] == "tets").split()

@@ -13,7 +13,7 @@ import numpy as np
 SOURCE = os.path.abspath(os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
 TMP = os.environ.get("ANATOMESH_TEST_TMP", tempfile.gettempdir())
 CLI = [sys.executable, os.path.join(SOURCE, "Wrapping", "anatomesh")]
-VIEWS = ["mesh.png", "surface.png", "activation.png", "body_surface.png"]
+VIEWS = ["mesh.png", "surface.png", "activation.png", "repolarisation.png", "body_surface.png"]
 CHARTS = ["quality.png", "ecg.png"]
 
 

@@ -72,6 +72,31 @@ def _volume_remark(name, cm3):
     return "   adult %d-%d cm3%s" % (low, high, where)
 
 
+# A healthy adult's ECG (the ranges a cardiologist reads against).
+ECG_NORMAL = {"QRS": (80, 120), "QT": (320, 460)}
+
+
+def _ecg_reading(table):
+    """The ECG's reading from LeadFieldECG's Features table: QRS and QT beside their normal ranges,
+    the R-wave progression V1..V6 and the T waves' polarities."""
+    fd = table.GetFieldData()
+    if fd.GetArray("QRSDuration_ms") is None or table.GetColumnByName("TPolarity") is None:
+        return []
+    def ranged(name, value):
+        low, high = ECG_NORMAL[name]
+        return "%s %.0f ms (normal %d-%d%s)" % (name, value, low, high,
+                                                "" if low <= value <= high else ", outside")
+    rows = {table.GetColumnByName("Lead").GetValue(r): r for r in range(table.GetNumberOfRows())}
+    r_wave = table.GetColumnByName("R_mV")
+    polarity = table.GetColumnByName("TPolarity")
+    progression = " ".join("%.2f" % r_wave.GetValue(rows[v]) for v in ("V1", "V2", "V3", "V4", "V5", "V6")
+                           if v in rows)
+    upright = [lead for lead in rows if polarity.GetValue(rows[lead]) == "upright"]
+    return ["      ECG: %s, %s; R V1..V6 %s mV; T upright in %s" % (
+        ranged("QRS", fd.GetArray("QRSDuration_ms").GetValue(0)), ranged("QT", fd.GetArray("QTInterval_ms").GetValue(0)),
+        progression, ", ".join(upright) or "no lead")]
+
+
 def _describe(data):
     """One line about a data object, plus a volume table for label maps (each organ beside its adult
     range, and the tissue classes read from the scan) and the named points of a landmark set."""
@@ -100,6 +125,7 @@ def _describe(data):
                          for c in range(min(6, classes.GetNumberOfTuples())) if classes.GetComponent(c, 4)]
                 lines.append("      tissue classes read from the scan: " + ", ".join(found))
     elif data.IsA("vtkTable"):
+        lines.extend(_ecg_reading(data))
         columns = [data.GetColumn(c) for c in range(data.GetNumberOfColumns())]
         widths = [max(len(c.GetName()), 8) for c in columns]
         lines.append("      " + " ".join("%*s" % (w, c.GetName()) for w, c in zip(widths, columns)))

@@ -58,7 +58,7 @@ def read(folder):
 
 def figures(data):
     """Key figures of a run's outputs: each label map's volumes (cm3), the surface's Hausdorff distance, the
-    mesh quality table's whole-mesh row, the smallest Dice."""
+    mesh quality table's whole-mesh row, the smallest Dice, the ECG's QRS, QT and T polarities."""
     out = {}
     for file, obj in sorted(data.items()):
         if obj is None:
@@ -86,6 +86,15 @@ def figures(data):
                         out[name] = {k: round(float(columns[c].GetValue(r)), 4) for k, c in (
                             ("tetrahedra", "ne"), ("mean Q", "MeanQuality"), ("worst Q", "MaximumQuality"),
                             ("smallest dihedral", "MinimumDihedralAngle"))}
+            elif "TPolarity" in columns and "Lead" in columns:
+                ecg = {k: round(float(obj.GetFieldData().GetArray(a).GetValue(0)), 1)
+                       for k, a in (("QRS ms", "QRSDuration_ms"), ("QT ms", "QTInterval_ms"))
+                       if obj.GetFieldData().GetArray(a) is not None}
+                for r in range(obj.GetNumberOfRows()):
+                    lead = columns["Lead"].GetValue(r)
+                    ecg["R %s mV" % lead] = round(float(columns["R_mV"].GetValue(r)), 3)
+                    ecg["T %s" % lead] = columns["TPolarity"].GetValue(r)
+                out[name] = ecg
             elif "Dice" in columns and "Label" in columns:
                 dice = [columns["Dice"].GetValue(r) for r in range(obj.GetNumberOfRows())
                         if columns["Label"].GetValue(r) > 0]

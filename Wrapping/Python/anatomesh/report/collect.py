@@ -65,7 +65,7 @@ def files_of(folder):
 
 def find(folder):
     """A dict of what was found: 'record' (the marker, or None), the paths under 'mesh',
-    'surface', 'quality', 'dice', 'ecg', 'heart', 'body' (each absent when the run made none),
+    'surface', 'quality', 'dice', 'ecg', 'ecg_features', 'heart', 'body' (each absent when the run made none),
     the mesh's and the surface's data under 'mesh_data' and 'surface_data', and under
     'unreadable' what could not be read and why."""
     record, files = files_of(folder)
@@ -103,6 +103,8 @@ def find(folder):
                     found.setdefault("dice", p)
                 elif head[:2] == ["Time", "I"]:
                     found.setdefault("ecg", p)
+                elif "TPolarity" in head and "Lead" in head:
+                    found.setdefault("ecg_features", p)
         except (ReadError, UnicodeDecodeError, csv.Error) as e:
             found["unreadable"].append(str(e) if isinstance(e, ReadError) else "%s cannot be read: %s" % (p, e))
     return found

@@ -74,6 +74,9 @@ def _pictures(found, heart, names, folder, pictures, notes, time):
         if heart.GetPointData().GetArray("ActivationTime") is not None:
             jobs.append(("activation.png", "Activation time on the heart's surface (grey: never activated).",
                          lambda p: scenes.activation_map(heart, p)))
+        if heart.GetPointData().GetArray("RepolarisationTime") is not None:
+            jobs.append(("repolarisation.png", "Repolarisation time on the heart's surface: where it is earliest the "
+                         "T wave points.", lambda p: scenes.activation_map(heart, p, "RepolarisationTime")))
     frames = collect.series(found["body"]) if "body" in found else []
     if frames:
         at, frame = min(frames, key=lambda f: abs(f[0] - time)) if time is not None else frames[len(frames) // 2]
@@ -126,8 +129,9 @@ def write_report(folder, time=None):
                          "dashed line is the bar no element may pass."))
     if ecg is not None:
         charts.ecg_leads(ecg[0], ecg[1], os.path.join(pictures_dir, "ecg.png"))
-        pictures.append(("ecg.png", "The 12 leads, one shared mV scale, time in ms."))
-    for key, make in (("quality", tables.quality), ("dice", tables.dice)):
+        pictures.append(("ecg.png", "The 12 leads on standard ECG paper (25 mm/s, 10 mm/mV; small squares 40 ms "
+                         "and 0.1 mV), the simulated beat repeated at 75 per minute."))
+    for key, make in (("quality", tables.quality), ("dice", tables.dice), ("ecg_features", tables.ecg_features)):
         if key in found:
             try:
                 sections.append(make(*collect.table(found[key]), names=names))

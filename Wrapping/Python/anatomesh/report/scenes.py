@@ -91,18 +91,19 @@ def surface_by_distance(surface, path, tolerance=None):
                            render.legend(lut, "mm")], title, VIEW, UP)
 
 
-def activation_map(heart, path):
-    """The heart's surface coloured by activation time (red first, blue last)."""
-    t = vtk_to_numpy(heart.GetPointData().GetArray("ActivationTime"))
+def activation_map(heart, path, array="ActivationTime"):
+    """The heart's surface coloured by activation (or repolarisation) time (red first, blue last)."""
+    t = vtk_to_numpy(heart.GetPointData().GetArray(array))
     active = t[t >= 0] if t.size else t
     lo, hi = (float(active.min()), float(active.max())) if active.size else (0.0, 1.0)
     lut = _ramp(lo, hi, hue=(0.0, 0.667))
     lut.SetBelowRangeColor(0.6, 0.6, 0.6, 1.0)  # never activated (-1)
     lut.UseBelowRangeColorOn()
     surface = _surface_of(heart)
-    render.save_png(path, [render.actor(surface, lut, "ActivationTime", cells=False), render.legend(lut, "ms")],
-                    "Activation time: %.0f to %.0f ms, %d of %d nodes activated" % (
-                        lo, hi, active.size, t.size), VIEW, UP)
+    what = "Activation" if array == "ActivationTime" else "Repolarisation"
+    render.save_png(path, [render.actor(surface, lut, array, cells=False), render.legend(lut, "ms")],
+                    "%s time: %.0f to %.0f ms, %d of %d nodes activated" % (
+                        what, lo, hi, active.size, t.size), VIEW, UP)
 
 
 def body_surface_potential(body, path, time):

@@ -75,6 +75,14 @@ def dice(head, rows, names=None):
     return _table(["label", "Dice"], body, "Segmentation against the reference")
 
 
+def ecg_features(head, rows, names=None):
+    """The ECG's reading per lead (LeadFieldECG's Features table)."""
+    columns = [head.index(c) for c in ("Lead", "R_mV", "S_mV", "T_mV", "TPolarity")]
+    body = [[r[columns[0]], _num(r[columns[1]]), _num(r[columns[2]]), _num(r[columns[3]]), r[columns[4]]]
+            for r in rows]
+    return _table(["lead", "R (mV)", "S (mV)", "T (mV)", "T wave"], body, "The ECG read per lead")
+
+
 def variables(record):
     rows = [[k, v] for k, v in sorted((record or {}).get("variables", {}).items())]
     return _table(["variable", "value"], rows, "Pipeline variables")
