@@ -286,24 +286,33 @@ bool amConcurrentXMLWriter::QueueWriter(vtkAlgorithm* writer, const char* fileNa
 {
   Internal& in = *this->Impl;
   const std::string file = fileName && *fileName ? fileName : "(no file name)";
-  vtkDataObject* data = writer && writer->GetNumberOfInputPorts() == 1 && writer->GetNumberOfInputConnections(0) == 1
-    ? writer->GetInputDataObject(0, 0)
-    : nullptr;
-  if (!data)
+  // Every connected input (the mesh; an optional second one such as openCARP's surfaces) is copied:
+  // the worker then touches no pipeline.
+  std::vector<vtkSmartPointer<vtkDataObject>> copies;
+  bool ok = writer && writer->GetNumberOfInputPorts() >= 1 && writer->GetNumberOfInputConnections(0) == 1;
+  for (int port = 0; ok && port < writer->GetNumberOfInputPorts(); ++port)
+  {
+    const int connections = writer->GetNumberOfInputConnections(port);
+    vtkDataObject* data = connections == 1 ? writer->GetInputDataObject(port, 0) : nullptr;
+    ok = connections == 0 ? port > 0 : data != nullptr;
+    copies.push_back(data ? CopyOf(data) : nullptr);
+  }
+  if (!ok)
   {
     std::lock_guard<std::mutex> lock(in.Lock);
     if (in.Error.empty())
       in.Error = file + ": " + (writer ? "the writer has no input data of one connection" : "no writer");
     return false;
   }
-  vtkSmartPointer<vtkDataObject> copy = CopyOf(data);
   Job job;
   job.Writer = writer;
   job.File = file;
   std::unique_lock<std::mutex> lock(in.Lock);
   if (!in.Error.empty())
     return false;
-  writer->SetInputDataObject(0, copy);
+  for (std::size_t port = 0; port < copies.size(); ++port)
+    if (copies[port])
+      writer->SetInputDataObject(static_cast<int>(port), copies[port]);
   this->StartWorkers();
   in.Queue.push_back(std::move(job));
   in.Changed.notify_all();

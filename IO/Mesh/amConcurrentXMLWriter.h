@@ -51,8 +51,9 @@ public:
   bool Write(vtkDataObject* data, const char* fileName);
 
   /// Queues a writer that writes its input when it executes (amImageWriter, amMeditWriter,
-  /// amGmshWriter), to execute on a worker thread: its one input is replaced by a deep copy of the
-  /// data it has now (update the input first), so the caller may go on with the pipeline. The
+  /// amGmshWriter, amOpenCARPWriter), to execute on a worker thread: each connected input is replaced
+  /// by a deep copy of the data it has now (update the inputs first), so the caller may go on with
+  /// the pipeline. The
   /// writer must have no observers that need the calling thread (Python callbacks): remove them
   /// first. Its first error fails the queue as a file's would (GetErrorMessage() then names
   /// 'fileName'); its warnings are kept (GetWarning()). Queues above the 2 x NumberOfThreads of

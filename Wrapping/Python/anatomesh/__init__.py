@@ -36,7 +36,14 @@ from .AnatomeshFiltersSurface import (
 )
 from .AnatomeshFiltersVolume import amLabelMapTetrahedralize, amMeshQuality, amTetrahedralize
 from .AnatomeshIOImage import amImageReader, amImageWriter
-from .AnatomeshIOMesh import amConcurrentXMLWriter, amGmshWriter, amMeditReader, amMeditWriter
+from .AnatomeshIOMesh import (
+    amConcurrentXMLWriter,
+    amGmshWriter,
+    amMeditReader,
+    amMeditWriter,
+    amOpenCARPReader,
+    amOpenCARPWriter,
+)
 from .allocator import keep_freed_memory
 
 __version__ = "0.1.0"
@@ -59,6 +66,8 @@ __all__ = [
     "amMeshQuality",
     "amMetricRemeshing",
     "amMorphologyCleaning",
+    "amOpenCARPReader",
+    "amOpenCARPWriter",
     "amReactionEikonalSolver",
     "amSeedPointsSource",
     "amSnakeSegmentation",

@@ -414,6 +414,10 @@ class Pipeline:
             upstream = connection.GetProducer()
             upstream.Update(connection.GetIndex())
             data = upstream.GetOutputDataObject(connection.GetIndex())
+            for port in range(1, algorithm.GetNumberOfInputPorts()):  # a second input (openCARP's surfaces)
+                if algorithm.GetNumberOfInputConnections(port) == 1:
+                    extra = algorithm.GetInputConnection(port, 0)
+                    extra.GetProducer().Update(extra.GetIndex())
             if errors or data is None:
                 raise self._failure(by_name, step, errors, "no input")
             # No Python observer may run on the worker: the writer's time is the queue's.
