@@ -3,6 +3,7 @@
 #include "amInputCheck.h"
 #include "amProvenance.h"
 #include "amRegionVolumes.h"
+#include "amUnusedPoints.h"
 #include "amTetraGeometry.h"
 #include "amTetraMeshOptimizer.h"
 
@@ -486,6 +487,8 @@ int amLabelMapTetrahedralize::RequestData(
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
+  // Every point in a tetrahedron: solvers that assemble over all points need it.
+  amUnusedPoints::Remove(output, interfaces);
   std::ostringstream params;
   params << "FacetDistance=" << this->FacetDistance << " FacetSize=" << this->FacetSize
          << " FacetAngle=" << this->FacetAngle << " CellSize=" << this->CellSize

@@ -3,6 +3,7 @@
 #include "amGradedSizeField.h"
 #include "amProvenance.h"
 #include "amRegionVolumes.h"
+#include "amUnusedPoints.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amTetGenParts.h"
@@ -358,6 +359,8 @@ int amTetrahedralize::RequestData(
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
+  // Every point in a tetrahedron: solvers that assemble over all points need it.
+  amUnusedPoints::Remove(output, interfaces);
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses

@@ -4,6 +4,7 @@
 #include "amAtlasChain.h" // amTest::DistinctValues
 #include "amImageReader.h"
 #include "amLabelMapTetrahedralize.h"
+#include "amTetraMeshChecks.h"
 #include "amMeshQuality.h"
 #include "amSurfaceTestUtilities.h"
 #include "amSyntheticAtlasSource.h"
@@ -198,6 +199,8 @@ TEST(LabelMapTetrahedralize, ImproveQualityKeepsTheInterfaces)
   double centroid[3];
   const auto tets = TetVolumes(improved.Mesh, &bad, centroid, 2);
   EXPECT_EQ(bad, 0);
+  // Every point in a tetrahedron, and the interfaces on the same points.
+  EXPECT_EQ(amTest::InterfaceProblems(improved.Mesh, improved.Interfaces), "");
   const auto enclosed = EnclosedVolumes(improved.Interfaces);
   for (int r : { 1, 2 })
     EXPECT_NEAR(enclosed.at(r), tets.at(r), 1e-9 * tets.at(r)) << r;

@@ -17,7 +17,8 @@
 
 namespace amTest
 {
-/// The first way the interfaces do not match the mesh, empty when they do: every face between two
+/// The first way the interfaces do not match the mesh, empty when they do: every point in a
+/// tetrahedron (solvers assemble over all points), every face between two
 /// regions or on the mesh's boundary is one interface triangle and no other face is; each
 /// triangle's Labels name the regions on its two sides (background outside), its normal pointing
 /// into the Labels[1] side; its Tetra array names a tetrahedron holding it on each side.
@@ -42,6 +43,13 @@ inline std::string InterfaceProblems(vtkUnstructuredGrid* grid, vtkPolyData* int
       faces[f].push_back(c);
     }
   }
+  std::vector<char> used(grid->GetNumberOfPoints(), 0);
+  for (const auto& face : faces)
+    for (vtkIdType v : face.first)
+      used[v] = 1;
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+    if (!used[p])
+      return "point " + std::to_string(p) + " is in no tetrahedron";
   std::map<Key, vtkIdType> triangles;
   for (vtkIdType s = 0; s < interfaces->GetNumberOfCells(); ++s)
   {
