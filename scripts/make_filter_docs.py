@@ -93,7 +93,13 @@ def generate():
                 short = full[len("Anatomesh"):] if full.startswith("Anatomesh") else full
                 out.append("## %s (`%s`, class `%s`)" % (element.get("label", full), short, cls))
                 out.append("")
-                out.append("Pipeline type `%s`; ParaView proxy `%s`." % (short, full))
+                # paraview.simple names a proxy after its label, every character but letters and
+                # digits dropped (ParaView's own rule): the name to call in pvpython.
+                label = element.get("label", full)
+                simple = "".join(ch for ch in label if ch.isalnum())
+                if simple and simple[0].isdigit():
+                    simple = "_" + simple
+                out.append("Pipeline type `%s`; ParaView proxy `%s`, in `paraview.simple` `%s()`." % (short, full, simple))
                 out.append("")
                 doc = header_doc(cls)
                 if not doc:

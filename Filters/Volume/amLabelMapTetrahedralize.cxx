@@ -3,6 +3,7 @@
 #include "amInputCheck.h"
 #include "amProvenance.h"
 #include "amRegionVolumes.h"
+#include "amQualityBars.h"
 #include "amUnusedPoints.h"
 #include "amTetraGeometry.h"
 #include "amTetraMeshOptimizer.h"
@@ -489,6 +490,12 @@ int amLabelMapTetrahedralize::RequestData(
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   // Every point in a tetrahedron: solvers that assemble over all points need it.
   amUnusedPoints::Remove(output, interfaces);
+  // The element bars, whatever the parameters: a miss is said, with where.
+  const amQualityBars::Result bars = amQualityBars::Check(output);
+  this->NumberOfSlivers = bars.Poor;
+  const std::string barWarning = amQualityBars::Warning(output, bars);
+  if (!barWarning.empty())
+    vtkWarningMacro(<< barWarning);
   std::ostringstream params;
   params << "FacetDistance=" << this->FacetDistance << " FacetSize=" << this->FacetSize
          << " FacetAngle=" << this->FacetAngle << " CellSize=" << this->CellSize

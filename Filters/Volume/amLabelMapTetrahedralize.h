@@ -157,7 +157,8 @@ public:
   /// surface and interface triangles stay as CGAL made them, but for the slivers that need them
   /// to move (at most MaximumSurfaceDeviation, mm, default 0.2; 0: never; see amTetrahedralize).
   /// ImprovementPasses: rounds (default 4). NumberOfSlivers: elements left above Q 10 or below 10
-  /// degrees after the improvement; SurfaceDeviation: how far the surface moved (mm).
+  /// degrees, checked on every run (improved or not); any is a warning with the worst one's
+  /// place; SurfaceDeviation: how far the surface moved (mm).
   vtkSetMacro(ImproveQuality, vtkTypeBool);
   vtkGetMacro(ImproveQuality, vtkTypeBool);
   vtkBooleanMacro(ImproveQuality, vtkTypeBool);

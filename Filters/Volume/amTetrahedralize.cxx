@@ -3,6 +3,7 @@
 #include "amGradedSizeField.h"
 #include "amProvenance.h"
 #include "amRegionVolumes.h"
+#include "amQualityBars.h"
 #include "amUnusedPoints.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
@@ -361,6 +362,12 @@ int amTetrahedralize::RequestData(
   this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
   // Every point in a tetrahedron: solvers that assemble over all points need it.
   amUnusedPoints::Remove(output, interfaces);
+  // The element bars, whatever the parameters: a miss is said, with where.
+  const amQualityBars::Result bars = amQualityBars::Check(output);
+  this->NumberOfSlivers = bars.Poor;
+  const std::string barWarning = amQualityBars::Warning(output, bars);
+  if (!barWarning.empty())
+    vtkWarningMacro(<< barWarning);
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses

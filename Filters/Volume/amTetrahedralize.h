@@ -159,8 +159,8 @@ public:
   ///@{
   /// Results of the last run; the quality figures are TetGen's, before the improvement (Q as in
   /// amMeshQuality; 0 when no improvement ran). SurfaceDeviation: how far slivers that changed
-  /// region moved the surface (mm); NumberOfSlivers: elements still above Q 10 or below 10
-  /// degrees.
+  /// region moved the surface (mm); NumberOfSlivers: elements left above Q 10 or below 10
+  /// degrees, checked on every run (improved or not); any is a warning with the worst one's place.
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfSteinerPoints, vtkIdType);
   vtkGetMacro(WorstQualityBeforeImprovement, double);

@@ -218,7 +218,18 @@ int amGmshWriter::WriteData(vtkDataObject* data)
       out << kv.first;
       for (double b : box)
         out << " " << b;
-      out << " 1 " << kv.first << " 0\n";
+      // The volume's bounding surfaces: each interface it has a side of, negative where the
+      // surface's normal points into it (it is the lower region).
+      std::vector<long long> bounding;
+      for (const auto& surface : surfaces)
+        if (surface.second.second[0] == kv.first)
+          bounding.push_back(surface.first);
+        else if (surface.second.second[1] == kv.first)
+          bounding.push_back(-surface.first);
+      out << " 1 " << kv.first << " " << static_cast<long long>(bounding.size());
+      for (long long b : bounding)
+        out << " " << b;
+      out << "\n";
     }
     out << "$EndEntities\n";
     // All nodes in one block, classified on the first volume.

@@ -17,7 +17,8 @@
  * boundary) as one physical surface per pair of regions, tagged like the Medit writer's references
  * (1000 × higher + lower, 0 for the outside) and named "<higher> | <lower>" (e.g. "Myocardium |
  * LVBlood", "Body | Outside"), so a solver can put boundary conditions on organ surfaces; region
- * labels must then lie in 1..999.
+ * labels must then lie in 1..999. Each volume entity lists its bounding surfaces (Gmsh's
+ * getBoundary), negative where the surface's normal points into it.
  */
 #ifndef amGmshWriter_h
 #define amGmshWriter_h

@@ -123,6 +123,10 @@ TEST(GmshWriter, InterfacesAndBoundaryAsPhysicalSurfaces)
   for (int i = 1; i <= 3; ++i)
     EXPECT_NE(s["Entities"][i].find(" 1 " + s["Entities"][i].substr(0, 4) + " 0"), std::string::npos)
       << s["Entities"][i];
+  // Each volume lists its bounding surfaces (Gmsh's getBoundary), negative where the surface's
+  // normal points into it: region 3 is the lower side of the interface 6003.
+  EXPECT_NE(s["Entities"][4].find(" 1 3 2 3000 -6003"), std::string::npos) << s["Entities"][4];
+  EXPECT_NE(s["Entities"][5].find(" 1 6 2 6000 6003"), std::string::npos) << s["Entities"][5];
   ASSERT_GE(s["Elements"].size(), 1u);
   EXPECT_EQ(s["Elements"][0], "5 9 1 9");
   std::map<std::string, int> blocks; // "dim tag" -> element count

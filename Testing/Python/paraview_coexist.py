@@ -66,4 +66,16 @@ if ours_tet.SMProxy.GetVTKClassName() != "amTetrahedralize":
     fail("AnatomeshTetrahedralize() makes %s" % ours_tet.SMProxy.GetVTKClassName())
 if AnatomeshMeshQuality(Input=sphere).SMProxy.GetVTKClassName() != "amMeshQuality":
     fail("AnatomeshMeshQuality() is not Anatomesh's")
-print("coexistence OK: %d stock proxies unchanged, %d Anatomesh proxies" % (len(stock), len(ours)))
+# Every paraview.simple name docs/filters.md gives exists and makes that proxy's class.
+import re  # noqa: E402
+source = os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+with open(os.path.join(source, "docs", "filters.md")) as f:
+    documented = re.findall(r"class `(am[A-Za-z]+)`\)\n\nPipeline type `[A-Za-z]+`; ParaView proxy `[A-Za-z]+`, in "
+                            r"`paraview.simple` `([A-Za-z0-9_]+)\(\)`", f.read())
+if len(documented) < 30:
+    fail("docs/filters.md names %d paraview.simple functions" % len(documented))
+for cls, name in documented:
+    if name not in globals():
+        fail("docs/filters.md's %s() is not in paraview.simple" % name)
+print("coexistence OK: %d stock proxies unchanged, %d Anatomesh proxies, %d documented names" % (
+    len(stock), len(ours), len(documented)))

@@ -40,11 +40,12 @@ class ThoraxJob(unittest.TestCase):
         self.assertEqual(code, 0, stderr)
         # 10 files of the meshing chain; the heartbeat: the landmarks, the ventricles' tags, heart and
         # body-surface time series (101 frames + .pvd each), the ECG and its reading.
-        self.assertIn("Wrote 219 file(s)", stdout)
+        self.assertIn("Wrote 220 file(s)", stdout)
         for name in ("thorax_heart.pvd", "thorax_body_surface.pvd", "thorax_heart_0100.vtu", "thorax_ecg.csv",
                      "thorax_ecg_features.csv", "thorax_landmarks.vtp", "thorax_ventricular_tags.vtp",
                      "thorax_opencarp.pts", "thorax_opencarp.elem", "thorax_opencarp.lon",
-                     "thorax_opencarp.LVEndocardium.surf", "thorax_opencarp.Epicardium.vtx"):
+                     "thorax_opencarp.LVEndocardium.surf", "thorax_opencarp.Epicardium.vtx", "thorax_tets.xdmf",
+                     "thorax_tets_facets.xdmf"):
             self.assertTrue(os.path.exists(os.path.join(out, name)), name)
         with open(os.path.join(out, "thorax_ecg.csv")) as f:
             rows = f.read().splitlines()
@@ -57,7 +58,7 @@ class ThoraxJob(unittest.TestCase):
         table = stdout[stdout.index("Seconds per filter"):].splitlines()
         names = ["phantom", "snake", "segmentation", "dice", "surface", "smooth", "metric", "remesh",
                  "save_surface_mesh", "save_ct", "save_truth", "save_labels", "tets", "quality", "save_volume_mesh",
-                 "save_gmsh", "landmarks", "fibres", "save_opencarp", "heart", "ecg", "torso", "(outputs)", "(other)"]
+                 "save_gmsh", "save_xdmf", "landmarks", "fibres", "save_opencarp", "heart", "ecg", "torso", "(outputs)", "(other)"]
         self.assertEqual([l.split()[0] for l in table[1:len(names) + 1]], names)
         self.assertRegex(stdout, r"heart +ReactionEikonalSolver +[0-9.]+ s +[0-9.]+ % +[0-9.]+ +\(\d+ runs\)")
         # Cores kept busy: CPU seconds per wall second, more than none and at most the machine's
@@ -295,6 +296,9 @@ class ThoraxJob(unittest.TestCase):
             self.assertEqual(read, groups)
             tetrahedra = sum(len(gmsh.model.mesh.getElements(3, tag)[1][0]) for _, tag in gmsh.model.getEntities(3))
             self.assertEqual(tetrahedra, counts["mesh.vtu"])
+            # Every volume knows the surfaces that bound it.
+            for _, tag in gmsh.model.getEntities(3):
+                self.assertTrue(gmsh.model.getBoundary([(3, tag)], oriented=False), tag)
         finally:
             gmsh.finalize()
 

@@ -43,6 +43,7 @@ from .AnatomeshIOMesh import (
     amMeditWriter,
     amOpenCARPReader,
     amOpenCARPWriter,
+    amXdmfWriter,
 )
 from .allocator import keep_freed_memory
 
@@ -79,5 +80,6 @@ __all__ = [
     "amTorsoPotential",
     "amTorsoSegmentation",
     "amVentricularFibres",
+    "amXdmfWriter",
     "keep_freed_memory",
 ]

@@ -1,0 +1,40 @@
+/**
+ * @file    amQualityBars.h
+ * @brief   The tetrahedra's bars checked on every run: no element above the paper's quality Q 10 and
+ *          none with a dihedral angle under 10 degrees, whatever the parameters that made the mesh.
+ *
+ * A miss is a warning with its counts and the worst element's place (centroid, region), so a run
+ * with coarse settings says so instead of writing a mesh with slivers silently.
+ */
+#ifndef amQualityBars_h
+#define amQualityBars_h
+
+#include "vtkType.h"
+
+#include <string>
+
+class vtkUnstructuredGrid;
+
+namespace amQualityBars
+{
+struct Result
+{
+  vtkIdType AboveQuality = 0;    // tetrahedra with Q above the bar
+  vtkIdType BelowDihedral = 0;   // tetrahedra with a dihedral angle under the bar
+  vtkIdType Poor = 0;            // tetrahedra that miss either bar
+  double WorstQuality = 0;       // the largest Q
+  double SmallestDihedral = 180; // degrees
+  vtkIdType WorstCell = -1;      // the element of the smallest dihedral angle (or the largest Q)
+};
+
+/// The mesh's tetrahedra against the bars (Q at most maximumQuality, every dihedral angle at least
+/// minimumDihedral degrees).
+Result Check(vtkUnstructuredGrid* mesh, double maximumQuality = 10.0, double minimumDihedral = 10.0);
+
+/// The warning for a result that misses a bar ("" when both hold), naming the worst element's
+/// centroid and region.
+std::string Warning(
+  vtkUnstructuredGrid* mesh, const Result& result, double maximumQuality = 10.0, double minimumDihedral = 10.0);
+}
+
+#endif
