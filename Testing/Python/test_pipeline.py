@@ -1,5 +1,6 @@
 """Pipeline XML files through the ``anatomesh`` command: the thorax job runs and writes what it
 says; every kind of mistake exits non-zero with a message naming the file and the line."""
+import csv
 import io
 import json
 import os
@@ -301,6 +302,35 @@ class ThoraxJob(unittest.TestCase):
                 self.assertTrue(gmsh.model.getBoundary([(3, tag)], oriented=False), tag)
         finally:
             gmsh.finalize()
+
+    def test_a_coarse_run_says_it_misses_the_element_bars(self):
+        # The phantom at 4 mm remeshed to 10 mm triangles within 2 mm and meshed with the defaults keeps
+        # slivers the surface forces: the run says so, with the worst element's place.
+        path = pipeline_file("coarse_bars.xml", """
+            <AnatomeshPipeline version="1">
+              <Filter name="p" type="ThoraxPhantomSource"><Property name="Spacing" value="4 4 4"/></Filter>
+              <Filter name="surface" type="LabelSurface"><Input from="p" port="Labels"/></Filter>
+              <Filter name="smooth" type="SurfaceSmoothing"><Input from="surface" port="Surface"/></Filter>
+              <Filter name="remesh" type="MetricRemeshing">
+                <Input from="smooth"/>
+                <Property name="TargetSize" value="10"/>
+                <Property name="Tolerance" value="2"/>
+              </Filter>
+              <Filter name="tets" type="Tetrahedralize"><Input from="remesh"/></Filter>
+              <Filter name="q" type="MeshQuality"><Input from="tets" port="Mesh"/></Filter>
+              <Output from="q" port="Table" file="${output}/q.csv"/>
+            </AnatomeshPipeline>""")
+        code, stdout, stderr = run("run", path, "--output", os.path.join(TMP, "coarse_bars"))
+        self.assertEqual(code, 0, stderr)
+        with open(os.path.join(TMP, "coarse_bars", "q.csv")) as f:
+            whole = [r for r in csv.DictReader(f) if r["Region"] == "-1"][0]
+        missed = float(whole["MaximumQuality"]) > 10 or float(whole["MinimumDihedralAngle"]) < 10
+        if missed:
+            self.assertRegex(stderr, r"warning: tets: the mesh misses the element bars: \d+ tetrahedra above Q 10 "
+                                     r"\(worst [0-9.]+\), \d+ with a dihedral angle under 10 degrees \(smallest "
+                                     r"[0-9.]+\); the worst, tetrahedron \d+, at \(")
+        else:
+            self.assertNotIn("misses the element bars", stderr)
 
     def test_quality_of_a_medit_mesh_read_back(self):
         # A .mesh read back carries its interface triangles beside the tetrahedra: MeshQuality measures
