@@ -28,6 +28,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -229,6 +230,7 @@ int amVentricularFibres::RequestData(
   tagger.RVBlood.insert(this->RVBloodRegions.begin(), this->RVBloodRegions.end());
   tagger.BaseRegions.insert(this->BaseRegions.begin(), this->BaseRegions.end());
   const std::vector<amVentricularTags::Triangle> triangles = tagger.Find(xyz.data(), tets, tetLabels);
+  this->NumberOfWallHoles = this->WarnOfWallHoles(xyz, tets, tetLabels);
   this->UpdateProgress(0.1);
 
   amTetraSubset subset;
@@ -387,6 +389,48 @@ int amVentricularFibres::RequestData(
          << "," << axis[1] << "," << axis[2] << ") from " << axisFrom;
   amProvenance::Record(output, input, "amVentricularFibres", params.str());
   return 1;
+}
+
+vtkIdType amVentricularFibres::WarnOfWallHoles(
+  const std::vector<double>& xyz, const std::vector<std::array<vtkIdType, 4>>& tets, const std::vector<int>& labels)
+{
+  // Ventricular blood touching anything but the heart, the other blood pool or the base: a hole in
+  // the segmented wall (the activation and the ECG then miss that part of the wall).
+  std::set<int> allowed(this->HeartRegions.begin(), this->HeartRegions.end());
+  allowed.insert(this->LVBloodRegions.begin(), this->LVBloodRegions.end());
+  allowed.insert(this->RVBloodRegions.begin(), this->RVBloodRegions.end());
+  allowed.insert(this->BaseRegions.begin(), this->BaseRegions.end());
+  std::set<int> blood(this->LVBloodRegions.begin(), this->LVBloodRegions.end());
+  blood.insert(this->RVBloodRegions.begin(), this->RVBloodRegions.end());
+  std::map<std::pair<int, int>, vtkIdType> holes; // (blood, other) -> triangles
+  vtkIdType total = 0;
+  for (const amTetraFaces::Face& f : amTetraFaces::Find(xyz.data(), tets, labels.data()))
+  {
+    const int second = f.Second;
+    for (const auto& pair : { std::make_pair(f.First, second), std::make_pair(second, f.First) })
+      if (blood.count(pair.first) && !allowed.count(pair.second))
+      {
+        ++holes[pair];
+        ++total;
+      }
+  }
+  if (total > 0)
+  {
+    std::ostringstream text;
+    text << "the heart wall has holes: ";
+    bool first = true;
+    for (const auto& kv : holes)
+    {
+      text << (first ? "" : ", ") << "blood region " << kv.first.first << " touches "
+           << (kv.first.second == amTetraFaces::Outside() ? std::string("the outside")
+                                                          : "region " + std::to_string(kv.first.second))
+           << " on " << kv.second << " triangles";
+      first = false;
+    }
+    text << " (HeartRegions, LVBloodRegions, RVBloodRegions and BaseRegions name what the blood may touch)";
+    vtkWarningMacro(<< text.str());
+  }
+  return total;
 }
 
 void amVentricularFibres::PrintSelf(ostream& os, vtkIndent indent)

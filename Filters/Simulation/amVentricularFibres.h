@@ -25,6 +25,8 @@
  * InputPointId (the point's id in the mesh) and field data TagNames.
  *
  * Errors: no heart cells, a non-tetrahedral heart cell, no LV endocardium, no epicardium, no axis.
+ * Warning: ventricular blood touching a region other than the heart, the other pool or the base (a
+ * hole in the segmented wall), each pair with its triangles.
  *
  * Reference: J. D. Bayer et al., Ann. Biomed. Eng. 40(10):2243-2254, 2012.
  *
@@ -36,6 +38,7 @@
 #include "AnatomeshFiltersSimulationModule.h" // export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
+#include <array>
 #include <vector>
 
 class ANATOMESHFILTERSSIMULATION_EXPORT amVentricularFibres : public vtkUnstructuredGridAlgorithm
@@ -100,6 +103,9 @@ public:
   ///@{
   /// Figures of the last run: heart tetrahedra, triangles per tag (1..4).
   vtkGetMacro(NumberOfHeartCells, vtkIdType);
+  /// Triangles where ventricular blood touches a region other than the heart, the other pool or the
+  /// base: holes in the segmented wall (a warning names each pair).
+  vtkGetMacro(NumberOfWallHoles, vtkIdType);
   vtkIdType GetNumberOfTaggedTriangles(int tag) { return tag >= 1 && tag <= 4 ? this->TagCounts[tag] : 0; }
   ///@}
 
@@ -116,9 +122,12 @@ protected:
   double ApexToBase[3];
   double UsedApexToBase[3] = { 0, 0, 0 };
   vtkIdType NumberOfHeartCells;
+  vtkIdType NumberOfWallHoles = 0;
   vtkIdType TagCounts[5];
 
 private:
+  vtkIdType WarnOfWallHoles(
+    const std::vector<double>& xyz, const std::vector<std::array<vtkIdType, 4>>& tets, const std::vector<int>& labels);
   amVentricularFibres(const amVentricularFibres&) = delete;
   void operator=(const amVentricularFibres&) = delete;
 };

@@ -245,6 +245,40 @@ TEST(VentricularFibres, TagsAndFibresOfThePhantomHeart)
   EXPECT_GT(-axis[0] + axis[1] + axis[2], 0.5);
 }
 
+TEST(VentricularFibres, AHoleInTheWallIsAWarning)
+{
+  // The myocardium's cells beside the LV blood in one corner of the pool become soft tissue.
+  vtkSmartPointer<vtkUnstructuredGrid> mesh = PhantomHeartBox();
+  static const amThoraxPhantomModel model;
+  double c[3];
+  model.GetOrganCenter(amThoraxPhantomModel::LeftVentricleBlood, c);
+  vtkDataArray* regions = mesh->GetCellData()->GetArray("Region");
+  for (vtkIdType cell = 0; cell < mesh->GetNumberOfCells(); ++cell)
+  {
+    double x[3] = { 0, 0, 0 }, p[3];
+    const vtkIdType* ids;
+    vtkIdType npts;
+    mesh->GetCellPoints(cell, npts, ids);
+    for (int a = 0; a < 4; ++a)
+    {
+      mesh->GetPoint(ids[a], p);
+      for (int d = 0; d < 3; ++d)
+        x[d] += 0.25 * p[d];
+    }
+    if (regions->GetComponent(cell, 0) == amThoraxPhantomModel::Myocardium && x[2] > c[2] + 20)
+      regions->SetComponent(cell, 0, amThoraxPhantomModel::SoftTissue);
+  }
+  vtkNew<amVentricularFibres> filter;
+  filter->SetInputData(mesh);
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(filter);
+  filter->Update();
+  EXPECT_GT(filter->GetNumberOfWallHoles(), 0);
+  ASSERT_FALSE(errors->Warnings.empty());
+  EXPECT_NE(errors->Warnings[0].find("the heart wall has holes: blood region 6 touches region 1"), std::string::npos)
+    << errors->Warnings[0];
+}
+
 TEST(VentricularFibres, RefusesAMeshWithoutVentricles)
 {
   vtkSmartPointer<vtkUnstructuredGrid> mesh = PhantomHeartBox();
