@@ -4,10 +4,12 @@ import csv
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
 import textwrap
+import time
 import unittest
 
 SOURCE = os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -105,6 +107,48 @@ class Batch(unittest.TestCase):
         self.assertEqual(code, 0, stderr)
         self.assertIn("3 cases: 2 complete, 1 skipped, 0 failed", stdout)
         self.assertEqual(self.summary()["fine"]["status"], "skipped (complete)")
+
+    def test_sigterm_stops_every_case_and_writes_the_summary(self):
+        # Three slow cases one at a time: SIGTERM while the first runs ends it (its whole process
+        # group), starts neither of the others, and the summary says so; nothing is left running.
+        with open(self.manifest, "w") as f:
+            f.write("case,spacing,noise\nfirst,1.5,0\nsecond,1.5,0\nthird,1.5,0\n")
+        batch = subprocess.Popen(CLI + ["batch", self.pipeline, self.manifest, "--jobs", "1", "--output", self.out],
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+        log = os.path.join(self.out, "first", "anatomesh.log")
+        deadline = time.time() + 120
+        def started():
+            if not os.path.exists(log):
+                return False
+            with open(log) as f:
+                return "surface" in f.read()
+        while time.time() < deadline and not started():
+            time.sleep(0.2)
+        os.kill(batch.pid, signal.SIGTERM)
+        stdout, stderr = batch.communicate(timeout=60)
+        self.assertEqual(batch.returncode, 128 + signal.SIGTERM, stderr)
+        self.assertIn("3 cases: 0 complete, 0 skipped, 0 failed, 3 interrupted", stdout)
+        rows = self.summary()
+        self.assertEqual({r["status"] for r in rows.values()}, {"interrupted"})
+        self.assertIn("signal 15", rows["first"]["error"])
+        self.assertIn("not started", rows["third"]["error"])
+        self.assertFalse(os.path.exists(os.path.join(self.out, "third")))
+        # No case process outlives the batch.
+        time.sleep(1)
+        alive = []
+        for pid in os.listdir("/proc"):
+            try:
+                with open("/proc/%s/cmdline" % pid, "rb") as f:
+                    if self.out.encode() in f.read():
+                        alive.append(pid)
+            except OSError:
+                pass
+        self.assertEqual(alive, [])
+        # --resume runs them again: no case is marked complete.
+        marker = os.path.join(self.out, "first", "anatomesh-run.json")
+        if os.path.exists(marker):
+            with open(marker) as f:
+                self.assertNotEqual(json.load(f).get("status"), "complete")
 
     def test_manifest_mistakes_name_the_line(self):
         bad = os.path.join(self.dir, "bad.csv")

@@ -9,15 +9,19 @@ the others. ``--jobs N`` runs N cases at once. ``--resume`` skips a case whose f
 (anatomesh-run.json, written last) for the same pipeline and variables. Under ``mpirun -n K`` (mpi4py) the ranks
 share the cases, case i on rank i mod K, and rank 0 writes the summary. The summary, DIR/batch_summary.csv and
 .html, has every case's status, seconds, log and key figures (label volumes, Hausdorff distance, Table 1's
-whole-mesh row, smallest Dice). Exit status: 0 when every case is complete, 1 when any failed, 2 for a mistake in
-the command or the manifest (named with its line).
+whole-mesh row, smallest Dice). SIGTERM or SIGINT (Ctrl-C) stops the batch cleanly: every running case's whole
+process group is terminated, no case starts after it, and the summary is written with those cases "interrupted"
+(``--resume`` runs them again). Exit status: 0 when every case is complete, 1 when any failed, 2 for a mistake in
+the command or the manifest (named with its line), 128 + the signal's number when stopped.
 """
 import concurrent.futures
 import csv
 import html
 import os
+import signal
 import subprocess
 import sys
+import threading
 import time
 
 from . import marker
@@ -25,6 +29,27 @@ from . import marker
 
 class ManifestError(Exception):
     pass
+
+
+class Stop:
+    """The batch's stop: the signal that asked for it, and the running cases' processes to end."""
+    lock = threading.Lock()
+    running = set()
+    number = None
+
+    @classmethod
+    def request(cls, number, frame=None):
+        with cls.lock:
+            cls.number = cls.number or number
+            for process in cls.running:
+                try:
+                    os.killpg(process.pid, signal.SIGTERM)  # the case and what it started (TetGen, writers)
+                except ProcessLookupError:
+                    pass
+
+    @classmethod
+    def requested(cls):
+        return cls.number is not None
 
 
 def read_manifest(path, declared):
@@ -73,6 +98,9 @@ def run_case(pipeline, name, variables, resume, report=False):
         if report and os.path.isfile(report_path):
             row["report"] = report_path
         return row
+    if Stop.requested():
+        row.update(status="interrupted", exit="", seconds=0.0, figures={}, error="not started: the batch was stopped")
+        return row
     os.makedirs(folder, exist_ok=True)
     command = [sys.executable, "-m", "anatomesh.cli", "run", pipeline]
     for k, v in variables.items():
@@ -81,14 +109,25 @@ def run_case(pipeline, name, variables, resume, report=False):
         command.append("--report")
     t0 = time.time()
     with open(row["log"], "w") as log:
-        code = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
+        # Its own process group, so that a stop ends it and everything it started.
+        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+        with Stop.lock:
+            Stop.running.add(process)
+            stopped = Stop.requested()
+        if stopped:
+            Stop.request(Stop.number)
+        code = process.wait()
+        with Stop.lock:
+            Stop.running.discard(process)
     done = marker.read(folder) or {}
     ok = code == 0 and done.get("status") == "complete"
-    row.update(status="complete" if ok else "failed", exit=code, seconds=round(time.time() - t0, 2),
-               figures=done.get("figures", {}))
+    status = "complete" if ok else ("interrupted" if Stop.requested() else "failed")
+    row.update(status=status, exit=code, seconds=round(time.time() - t0, 2), figures=done.get("figures", {}))
     if ok and report and os.path.isfile(os.path.join(folder, "report.html")):
         row["report"] = os.path.join(folder, "report.html")
-    if not ok:
+    if status == "interrupted":
+        row["error"] = "stopped by the batch's signal %d" % Stop.number
+    elif not ok:
         row["error"] = done.get("error") or _last_error(row["log"]) or "exit status %d (see the log)" % code
     return row
 
@@ -120,15 +159,15 @@ def write_summary(folder, rows):
     os.makedirs(folder, exist_ok=True)
     with open(os.path.join(folder, "batch_summary.csv"), "w", newline="") as f:
         csv.writer(f).writerows(table)
-    failed = sum(1 for r in rows if r["status"] == "failed")
+    failed = sum(1 for r in rows if r["status"] in ("failed", "interrupted"))
     with open(os.path.join(folder, "batch_summary.html"), "w") as f:
         f.write("<!DOCTYPE html><html><head><meta charset='utf-8'><title>Anatomesh batch</title>"
                 "<style>td,th{border:1px solid #bbb;padding:2px 6px}table{border-collapse:collapse}"
                 ".failed{background:#fdd}</style></head><body>\n")
-        f.write("<h1>Anatomesh batch: %d cases, %d failed</h1>\n<table>\n" % (len(rows), failed))
+        f.write("<h1>Anatomesh batch: %d cases, %d failed or interrupted</h1>\n<table>\n" % (len(rows), failed))
         f.write("<tr>" + "".join("<th>%s</th>" % html.escape(str(h)) for h in table[0]) + "</tr>\n")
         for row, cells in zip(rows, table[1:]):
-            cls = " class='failed'" if row["status"] == "failed" else ""
+            cls = " class='failed'" if row["status"] in ("failed", "interrupted") else ""
             f.write("<tr%s>" % cls + "".join(_cell(h, c, folder) for h, c in zip(table[0], cells)) + "</tr>\n")
         f.write("</table></body></html>\n")
 
@@ -173,6 +212,7 @@ def main(args):
         work.append((name, variables))
     comm, rank, size = _mpi()
     mine = [(i, w) for i, w in enumerate(work) if i % size == rank]
+    previous = {number: signal.signal(number, Stop.request) for number in (signal.SIGTERM, signal.SIGINT)}
     results = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         futures = {pool.submit(run_case, args.pipeline, name, variables, args.resume, args.report): i
@@ -187,15 +227,20 @@ def main(args):
         if rank == 0:
             for part in gathered:
                 results.update(part)
-        failed = comm.bcast(sum(1 for r in results.values() if r["status"] == "failed") if rank == 0 else None,
-                            root=0)
+        failed = comm.bcast(sum(1 for r in results.values() if r["status"] in ("failed", "interrupted"))
+                            if rank == 0 else None, root=0)
     else:
-        failed = sum(1 for r in results.values() if r["status"] == "failed")
+        failed = sum(1 for r in results.values() if r["status"] in ("failed", "interrupted"))
+    for number, handler in previous.items():
+        signal.signal(number, handler)
     if rank == 0:
         rows = [results[i] for i in sorted(results)]
         write_summary(args.output, rows)
-        sys.stdout.write("%d cases: %d complete, %d skipped, %d failed; summary in %s\n" % (
+        interrupted = sum(r["status"] == "interrupted" for r in rows)
+        sys.stdout.write("%d cases: %d complete, %d skipped, %d failed, %d interrupted; summary in %s\n" % (
             len(rows), sum(r["status"] == "complete" for r in rows), sum(r["status"].startswith("skipped")
-                                                                         for r in rows), failed,
-            os.path.join(args.output, "batch_summary.csv")))
+                                                                         for r in rows),
+            sum(r["status"] == "failed" for r in rows), interrupted, os.path.join(args.output, "batch_summary.csv")))
+    if Stop.requested():
+        return 128 + Stop.number
     return 1 if failed else 0
