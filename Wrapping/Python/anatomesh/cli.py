@@ -256,7 +256,8 @@ def _run(args):
         return 1
     total = time.time() - t0
     stages = stage_seconds(p, total)
-    marker.write_complete(folder, args.pipeline, p.variables, written, p.written_data, total, stages)
+    marker.write_complete(folder, args.pipeline, p.variables, written, p.written_data, total, stages,
+                          getattr(p, "warnings", []))
     if not args.quiet:
         _summary(written, p.written_data, sys.stdout)
         _timing(p, stages, sys.stdout)

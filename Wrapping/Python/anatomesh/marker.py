@@ -30,12 +30,15 @@ def _write(folder, record):
     atomic.write_text(path(folder), json.dumps(record, indent=1, sort_keys=True))
 
 
-def write_complete(folder, pipeline, variables, written, data, seconds, stages=None):
+def write_complete(folder, pipeline, variables, written, data, seconds, stages=None, warnings=None):
     """stages: seconds per filter (and for writing the outputs), as the run's timing table lists them. The
-    allocator's settings the run had (GLIBC_TUNABLES, see the anatomesh command) go with its seconds."""
+    allocator's settings the run had (GLIBC_TUNABLES, see the anatomesh command) go with its seconds; the
+    run's warnings ("filter: text"), each once, with its figures."""
+    unique = list(dict.fromkeys(warnings or []))
     _write(folder, {"status": "complete", "pipeline": os.path.abspath(pipeline), "variables": variables,
                     "files": written, "seconds": round(seconds, 3), "stage_seconds": stages or {},
-                    "glibc_tunables": os.environ.get("GLIBC_TUNABLES", ""), "figures": figures(data)})
+                    "glibc_tunables": os.environ.get("GLIBC_TUNABLES", ""), "figures": figures(data),
+                    "warnings": unique})
 
 
 def write_failed(folder, pipeline, variables, message):

@@ -308,8 +308,8 @@ class Pipeline:
         return read, written
 
     def _check_files(self):
-        """No output may overwrite a file the pipeline reads (by path, however written, or by inode),
-        and no two outputs may go to one file."""
+        """Every file the pipeline reads exists; no output may overwrite a file the pipeline reads (by path,
+        however written, or by inode), and no two outputs may go to one file."""
         def key(path):
             real = os.path.realpath(path)
             try:
@@ -319,6 +319,9 @@ class Pipeline:
                 return real, None
 
         read, written = self._files()
+        for path, line in read:  # a missing input stops the run before anything is computed or written
+            if not any(os.path.exists(path + ending) for ending in ("", ".pts")):  # .pts: openCARP's base name
+                raise self._error(line, "input file %s does not exist" % path)
         inputs = [(path, line, key(path)) for path, line in read]
         seen = {}
         for path, line in written:
@@ -396,6 +399,7 @@ class Pipeline:
         self._release_single_use(by_name)  # after the watcher: its information requests report like the run's
         written = []
         self.written_data = {}
+        self.warnings = watcher.warnings  # every warning of the run, for its marker and report
         self.clock = watcher.clock  # each filter's own execution time, and the <Output> files'
         self.clock.seconds.update((s.name, 0.0) for s in self.steps)
         # The writers and the <Output> VTK XML files run on worker threads while the next filters
@@ -452,6 +456,7 @@ class Pipeline:
             for i in range(files.GetNumberOfWarnings()):
                 path, _, text = files.GetWarning(i).partition(": ")
                 step = writers.get(path)
+                watcher.warnings.append("%s: %s" % (step.name if step else path, _message_body(text)))
                 sys.stderr.write("anatomesh: warning: %s: %s\n" % (step.name if step else path, _message_body(text)))
             if not finished:
                 raise self._writer_failure(writers, files)
@@ -505,6 +510,7 @@ class _Watcher:
 
     def __init__(self, errors, progress):
         self.errors, self.progress, self.last = errors, progress, {}
+        self.warnings = []  # "filter: text", in the order they came
         self.clock = StageClock()
 
     def watch(self, name, algorithm):
@@ -518,8 +524,11 @@ class _Watcher:
         algorithm.AddObserver("ErrorEvent", error_cb)
 
         def warning_cb(obj, event, data=None):
-            # One plain line naming the filter (VTK would print its file, line and object address).
-            sys.stderr.write("anatomesh: warning: %s: %s\n" % (name, _message_body(str(data) if data is not None else "")))
+            # One plain line naming the filter (VTK would print its file, line and object address); kept
+            # for the run's marker and report.
+            text = _message_body(str(data) if data is not None else "")
+            self.warnings.append("%s: %s" % (name, text))
+            sys.stderr.write("anatomesh: warning: %s: %s\n" % (name, text))
 
         warning_cb.CallDataType = "string0"
         algorithm.AddObserver("WarningEvent", warning_cb)

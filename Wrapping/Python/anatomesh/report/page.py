@@ -155,6 +155,11 @@ def _write(folder, record, pictures, sections, notes):
         html.escape(str(record.get("status", "unknown"))), html.escape(str(record.get("seconds", "?"))),
         html.escape(str(record.get("pipeline", "?"))), html.escape(os.path.abspath(folder))))
     out.extend("<p class='note'>%s</p>" % html.escape(n) for n in notes)
+    warnings = record.get("warnings") or []
+    if warnings:  # what the run itself said it missed (element bars, Hausdorff bound, volumes, wall holes)
+        out.append("<h2>Warnings of the run</h2><ul>")
+        out.extend("<li class='note'>%s</li>" % html.escape(str(w)) for w in warnings)
+        out.append("</ul>")
     for name, caption in pictures:
         out.append("<figure><img src='report/%s' alt='%s'><figcaption>%s</figcaption></figure>" % (
             html.escape(name), html.escape(caption), html.escape(caption)))
