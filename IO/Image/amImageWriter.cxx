@@ -4,6 +4,7 @@
 #include "amDeflate.h"
 #include "amITKBridge.h"
 #include "amLabelTable.h"
+#include "amMetaImageCheck.h"
 #include "amNiftiCheck.h"
 
 #include "vtkImageData.h"
@@ -161,6 +162,21 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     {
       ok = false;
       error = "the file written is incomplete (" + incomplete + "); is the disk full?";
+    }
+  }
+  if (ok && (ext == ".mha" || ext == ".mhd"))
+  {
+    // MetaIO does not fail on a short write either ("file stream is fail after write" only printed):
+    // the header and every voxel must read back before the file replaces anything.
+    std::string repaired;
+    const std::string incomplete = amMetaImageCheck::Check(file.TemporaryPath(), repaired);
+    if (!repaired.empty())
+      std::remove(repaired.c_str());
+    if (!incomplete.empty() || !repaired.empty())
+    {
+      ok = false;
+      error = "the file written is incomplete (" + (incomplete.empty() ? std::string("its header needed repair") : incomplete) +
+        "); is the disk full?";
     }
   }
   if (!ok)

@@ -397,6 +397,15 @@ class BadInput(unittest.TestCase):
                   '<Property name="FileName" value="${output}/out.mesh"/></Filter>', "out.mesh"),
         "gmsh": ('<Filter name="w" type="GmshWriter"><Input from="t"/>'
                  '<Property name="FileName" value="${output}/out.msh"/></Filter>', "out.msh"),
+        "metaimage": ('<Filter name="w" type="ImageWriter"><Input from="p" port="CT"/>'
+                      '<Property name="FileName" value="${output}/out.mha"/></Filter>', "out.mha"),
+        "metaimage_detached": ('<Filter name="w" type="ImageWriter"><Input from="p" port="CT"/>'
+                               '<Property name="FileName" value="${output}/out.mhd"/>'
+                               '<Property name="UseCompression" value="0"/></Filter>', "out.mhd"),
+        "xdmf": ('<Filter name="w" type="XdmfWriter"><Input from="t"/>'
+                 '<Property name="FileName" value="${output}/out.xdmf"/></Filter>', "out.xdmf"),
+        "opencarp": ('<Filter name="w" type="OpenCARPWriter"><Input from="t"/>'
+                     '<Property name="FileName" value="${output}/out.pts"/></Filter>', "out.pts"),
     }
 
     def test_write_errors_under_a_file_size_limit(self):
@@ -409,6 +418,12 @@ class BadInput(unittest.TestCase):
             self.expect("fsize_keep", self.WRITERS % self.TARGETS["nifti"][0], "out.nii.gz",
                         limit=64 * 1024, output=out)
             self.assertEqual(read(os.path.join(out, "out.nii.gz")), b"the old file")
+        with self.subTest("existing_metaimage_kept"):
+            out = os.path.join(ROOT, "out_fsize_keep_mha")
+            write(os.path.join(out, "out.mha"), b"the old file")
+            self.expect("fsize_keep_mha", self.WRITERS % self.TARGETS["metaimage"][0], "out.mha",
+                        limit=64 * 1024, output=out)
+            self.assertEqual(read(os.path.join(out, "out.mha")), b"the old file")
 
     def mounted(self, options):
         folder = tempfile.mkdtemp(prefix="anatomesh-mount-", dir=ROOT)

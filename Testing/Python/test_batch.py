@@ -150,6 +150,20 @@ class Batch(unittest.TestCase):
             with open(marker) as f:
                 self.assertNotEqual(json.load(f).get("status"), "complete")
 
+    def test_each_case_keeps_to_its_own_folder(self):
+        # A case named '..' would write into the parent of --output; two rows with one output folder
+        # would mix their files: both refused before anything runs.
+        for rows, words in (("case,spacing\n..,10\n", "'..'"),
+                            ("case,spacing,output\na,10,%s/same\nb,10,%s/same\n" % (self.dir, self.dir),
+                             "write into one folder")):
+            with open(self.manifest, "w") as f:
+                f.write(rows)
+            code, stdout, stderr = run("batch", self.pipeline, self.manifest, "--output", self.out)
+            self.assertEqual(code, 2, stderr)
+            self.assertIn(words, stderr)
+            self.assertFalse(os.path.exists(os.path.join(self.dir, "labels.nii.gz")))
+            self.assertFalse(os.path.exists(os.path.join(self.dir, "same")))
+
     def test_manifest_mistakes_name_the_line(self):
         bad = os.path.join(self.dir, "bad.csv")
         for text, needle in (("case,spacing,colour\na,8,red\n", "unknown: colour"),

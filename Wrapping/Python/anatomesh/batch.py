@@ -74,8 +74,9 @@ def read_manifest(path, declared):
             raise ManifestError("%s:%d: %d values for %d columns" % (path, line, len(row), len(header)))
         values = dict(zip(header, (cell.strip() for cell in row)))
         name = values.pop("case", "") or "case%03d" % (len(cases) + 1)
-        if name in names or os.sep in name:
-            raise ManifestError("%s:%d: case name %r is repeated or holds a '%s'" % (path, line, name, os.sep))
+        if name in names or os.sep in name or name in (".", ".."):
+            raise ManifestError("%s:%d: case name %r is repeated, holds a '%s' or is '.' or '..': each case needs "
+                                "a folder of its own" % (path, line, name, os.sep))
         names.add(name)
         cases.append((name, values))
     return cases
@@ -210,6 +211,15 @@ def main(args):
         variables.update(values)
         variables.setdefault("output", os.path.join(args.output, name))
         work.append((name, variables))
+    # One folder per case: two cases writing into one folder at once would mix their files.
+    folders = {}
+    for name, variables in work:
+        real = os.path.realpath(variables["output"])
+        if real in folders:
+            sys.stderr.write("anatomesh: error: %s: cases %r and %r write into one folder, %s\n" % (
+                args.manifest, folders[real], name, variables["output"]))
+            return 2
+        folders[real] = name
     comm, rank, size = _mpi()
     mine = [(i, w) for i, w in enumerate(work) if i % size == rank]
     previous = {number: signal.signal(number, Stop.request) for number in (signal.SIGTERM, signal.SIGINT)}
