@@ -8,6 +8,7 @@
 #include "amMitchellSchaeffer.h"
 #include "amMonodomainStepper.h"
 #include "amReactionEikonalSolver.h"
+#include "amRogersMcCulloch.h"
 #include "amSimulationTestUtilities.h"
 #include "amTestUtilities.h"
 #include "amThoraxPhantomModel.h"
@@ -129,6 +130,47 @@ TEST(MitchellSchaeffer, DurationFollowsTheClosingTime)
   EXPECT_DOUBLE_EQ(vm, -85.0);
   EXPECT_GT(model.StableTimeStep(), 0.05);
   EXPECT_LT(model.StableTimeStep(), 1.0);
+}
+
+TEST(MonodomainStepper, ThePapersCellBehindTheSameInterface)
+{
+  // Rogers-McCulloch with its recovery frozen (c3 = 0) is bistable: its plane front moves at
+  // c = sqrt(c1 D / 2)(1 - 2a), 0.499 mm/ms with D 3.5 mm2/ms, through the same monodomain stepper
+  // that runs Mitchell-Schaeffer.
+  const int n[3] = { 240, 2, 2 };
+  const double origin[3] = { 0, 0, 0 }, size[3] = { 60, 0.5, 0.5 };
+  const amP1Assembly fem = amTest::FemOf(amTest::BoxMesh(n, origin, size));
+  const double none[3] = { 0, 0, 0 };
+  std::vector<std::array<double, 6>> tensors(fem.Tetrahedra.size(), amP1Assembly::FiberTensor(3.5, 3.5, none));
+  std::vector<unsigned char> stimulated(fem.Points.size(), 0);
+  for (std::size_t i = 0; i < fem.Points.size(); ++i)
+    stimulated[i] = fem.Points[i][0] <= 5.0;
+  amRogersMcCulloch model;
+  model.C3 = 0;
+  amMonodomainStepper mono;
+  amMonodomainStepper::Parameters p;
+  p.TimeStep = 0.05;
+  p.StimulusDuration = 5;
+  p.StimulusStrength = 20; // mV/ms: u rises 0.2/ms
+  ASSERT_TRUE(mono.Setup(fem, tensors, stimulated, model, p)) << mono.Error;
+  for (int s = 0; s < 2000; ++s)
+    ASSERT_TRUE(mono.Step(s * p.TimeStep));
+  double t20 = -1, t40 = -1;
+  for (std::size_t i = 0; i < fem.Points.size(); ++i)
+  {
+    if (std::fabs(fem.Points[i][0] - 20) < 1e-9 && fem.Points[i][1] == 0 && fem.Points[i][2] == 0)
+      t20 = mono.Activation[i];
+    if (std::fabs(fem.Points[i][0] - 40) < 1e-9 && fem.Points[i][1] == 0 && fem.Points[i][2] == 0)
+      t40 = mono.Activation[i];
+  }
+  ASSERT_GT(t20, 0);
+  ASSERT_GT(t40, t20);
+  const double speed = 20.0 / (t40 - t20);
+  const double exact = std::sqrt(0.26 * 3.5 / 2) * (1 - 2 * 0.13);
+  std::cout << "[ figures  ] Rogers-McCulloch front through the monodomain stepper: " << speed << " mm/ms, exact "
+            << exact << "\n";
+  EXPECT_NEAR(speed, exact, 0.02 * exact);
+  EXPECT_STREQ(model.Name(), "Rogers-McCulloch");
 }
 
 TEST(ActionPotentialTable, TracesHaveTheirDurations)
