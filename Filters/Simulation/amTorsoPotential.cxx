@@ -1,6 +1,7 @@
 #include "amTorsoPotential.h"
 
 #include "amLandmarkPoints.h"
+#include "amLeadFields.h"
 
 #include "amConjugateGradient.h"
 #include "amP1Assembly.h"
@@ -458,34 +459,23 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     model->Body = body;
   }
   std::vector<std::array<double, 3>>().swap(model->ElectrodePoints);
-  for (std::size_t e = 0; e + 2 < this->ActiveElectrodes.size(); e += 3)
+  std::vector<vtkIdType> nearest;
+  std::vector<double> distances;
+  amLeadFields::Snap(fem, onSurface, this->ActiveElectrodes, nearest, distances);
+  for (std::size_t k = 0; k < nearest.size(); ++k)
   {
-    vtkIdType best = -1;
-    double bestD = 1e300;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      if (!onSurface[i])
-        continue;
-      double d2 = 0;
-      for (int c = 0; c < 3; ++c)
-        d2 += (fem.Points[i][c] - this->ActiveElectrodes[e + c]) * (fem.Points[i][c] - this->ActiveElectrodes[e + c]);
-      if (d2 < bestD)
-      {
-        bestD = d2;
-        best = i;
-      }
-    }
-    if (best < 0)
+    const std::size_t e = 3 * k;
+    if (nearest[k] < 0)
     {
       vtkErrorMacro(<< "the torso has no body surface to put electrodes on");
       return false;
     }
-    if (std::sqrt(bestD) > 30.0)
-      vtkWarningMacro(<< "electrode " << e / 3 << " at (" << this->ActiveElectrodes[e] << ", "
+    if (distances[k] > 30.0)
+      vtkWarningMacro(<< "electrode " << k << " at (" << this->ActiveElectrodes[e] << ", "
                       << this->ActiveElectrodes[e + 1] << ", " << this->ActiveElectrodes[e + 2] << ") is "
-                      << std::sqrt(bestD) << " mm from the closest body-surface node");
-    model->Electrodes.push_back(best);
-    model->ElectrodePoints.push_back(fem.Points[best]);
+                      << distances[k] << " mm from the closest body-surface node");
+    model->Electrodes.push_back(nearest[k]);
+    model->ElectrodePoints.push_back(fem.Points[nearest[k]]);
   }
 
   auto torso = subset.MakeGrid(regions); // output 0: geometry, Region, InputPointId

@@ -4,7 +4,6 @@
 #include "amProvenance.h"
 #include "amRegionVolumes.h"
 #include "amQualityBars.h"
-#include "amUnusedPoints.h"
 #include "amTetraGeometry.h"
 #include "amTetraMeshOptimizer.h"
 
@@ -488,12 +487,8 @@ int amLabelMapTetrahedralize::RequestData(
   }
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
-  // Every point in a tetrahedron: solvers that assemble over all points need it.
-  amUnusedPoints::Remove(output, interfaces);
-  // The element bars, whatever the parameters: a miss is said, with where.
-  const amQualityBars::Result bars = amQualityBars::Check(output);
-  this->NumberOfSlivers = bars.Poor;
-  const std::string barWarning = amQualityBars::Warning(output, bars);
+  // Every point in a tetrahedron, and the element bars checked whatever the parameters.
+  const std::string barWarning = amQualityBars::Finish(output, interfaces, this->NumberOfSlivers);
   if (!barWarning.empty())
     vtkWarningMacro(<< barWarning);
   std::ostringstream params;

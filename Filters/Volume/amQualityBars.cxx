@@ -1,6 +1,7 @@
 #include "amQualityBars.h"
 
 #include "amMeshQuality.h"
+#include "amUnusedPoints.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -40,6 +41,15 @@ amQualityBars::Result amQualityBars::Check(vtkUnstructuredGrid* mesh, double max
     }
   }
   return r;
+}
+
+std::string amQualityBars::Finish(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, vtkIdType& poor)
+{
+  // Every point in a tetrahedron: solvers that assemble over all points need it.
+  amUnusedPoints::Remove(mesh, interfaces);
+  const Result bars = Check(mesh);
+  poor = bars.Poor;
+  return Warning(mesh, bars);
 }
 
 std::string amQualityBars::Warning(

@@ -13,6 +13,7 @@
 
 #include <string>
 
+class vtkPolyData;
 class vtkUnstructuredGrid;
 
 namespace amQualityBars
@@ -30,6 +31,11 @@ struct Result
 /// The mesh's tetrahedra against the bars (Q at most maximumQuality, every dihedral angle at least
 /// minimumDihedral degrees).
 Result Check(vtkUnstructuredGrid* mesh, double maximumQuality = 10.0, double minimumDihedral = 10.0);
+
+/// The tetrahedralizers' last step: the points no tetrahedron uses removed (amUnusedPoints), the
+/// bars checked; returns the warning ("" when the bars hold) and sets 'poor' to the elements that
+/// miss them.
+std::string Finish(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, vtkIdType& poor);
 
 /// The warning for a result that misses a bar ("" when both hold), naming the worst element's
 /// centroid and region.

@@ -4,7 +4,6 @@
 #include "amProvenance.h"
 #include "amRegionVolumes.h"
 #include "amQualityBars.h"
-#include "amUnusedPoints.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amTetGenParts.h"
@@ -360,12 +359,8 @@ int amTetrahedralize::RequestData(
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
-  // Every point in a tetrahedron: solvers that assemble over all points need it.
-  amUnusedPoints::Remove(output, interfaces);
-  // The element bars, whatever the parameters: a miss is said, with where.
-  const amQualityBars::Result bars = amQualityBars::Check(output);
-  this->NumberOfSlivers = bars.Poor;
-  const std::string barWarning = amQualityBars::Warning(output, bars);
+  // Every point in a tetrahedron, and the element bars checked whatever the parameters.
+  const std::string barWarning = amQualityBars::Finish(output, interfaces, this->NumberOfSlivers);
   if (!barWarning.empty())
     vtkWarningMacro(<< barWarning);
   std::ostringstream params;

@@ -34,53 +34,10 @@ vtkSmartPointer<vtkUnstructuredGrid> BoxTorso()
   });
 }
 
-// The heart's nodes with Vm = f(x) (mV) and u = Vm / 100, and its region label on one cell.
-vtkSmartPointer<vtkUnstructuredGrid> Heart(vtkUnstructuredGrid* mesh, double (*f)(const double*))
-{
-  auto heart = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkDataArray* regions = mesh->GetCellData()->GetArray("Region");
-  std::set<vtkIdType> nodes;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-    if (regions->GetComponent(c, 0) == 5)
-    {
-      const vtkIdType* ids;
-      vtkIdType npts;
-      mesh->GetCellPoints(c, npts, ids);
-      nodes.insert(ids, ids + 4);
-    }
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("InputPointId");
-  vtkNew<vtkDoubleArray> u, vm;
-  u->SetName("u");
-  vm->SetName("Vm");
-  for (vtkIdType p : nodes)
-  {
-    double x[3];
-    mesh->GetPoint(p, x);
-    points->InsertNextPoint(x);
-    ids->InsertNextValue(p);
-    vm->InsertNextValue(f(x));
-    u->InsertNextValue(f(x) / 100.0);
-  }
-  heart->SetPoints(points);
-  heart->GetPointData()->AddArray(ids);
-  heart->GetPointData()->AddArray(u);
-  heart->GetPointData()->AddArray(vm);
-  vtkNew<vtkIntArray> r;
-  r->SetName("Region");
-  r->InsertNextValue(5);
-  heart->GetCellData()->AddArray(r);
-  heart->Allocate(1);
-  vtkIdType cell[4] = { 0, 1, 2, 3 };
-  heart->InsertNextCell(VTK_TETRA, 4, cell);
-  return heart;
-}
-
 // A front half-way through the heart: depolarised (+15 mV) below a tilted plane, at rest above.
-double Front(const double* x)
+double Front(const double* x) // u: Vm / 100
 {
-  return -35.0 - 50.0 * std::tanh((0.3 * x[0] + 0.5 * x[1] + 0.8 * x[2] - 3.0) / 4.0);
+  return (-35.0 - 50.0 * std::tanh((0.3 * x[0] + 0.5 * x[1] + 0.8 * x[2] - 3.0) / 4.0)) / 100.0;
 }
 
 const double Electrodes[9][3] = { { -60, 0, 40 }, { 60, 0, 40 }, { 40, 0, -60 }, { -10, -60, 0 }, { 10, -60, 0 },
@@ -90,7 +47,7 @@ const double Electrodes[9][3] = { { -60, 0, 40 }, { 60, 0, 40 }, { 40, 0, -60 },
 TEST(LeadFieldECG, EqualsTheDirectCurrentSourceSolve)
 {
   auto mesh = BoxTorso();
-  auto heart = Heart(mesh, Front);
+  auto heart = amTest::StaticHeart(mesh, Front);
   vtkNew<amTorsoPotential> direct;
   direct->SetInputData(0, mesh);
   direct->SetInputData(1, heart);
@@ -142,7 +99,7 @@ TEST(LeadFieldECG, EqualsTheDirectCurrentSourceSolve)
 TEST(LeadFieldECG, ElectrodeOffTheBody)
 {
   auto mesh = BoxTorso();
-  auto heart = Heart(mesh, Front);
+  auto heart = amTest::StaticHeart(mesh, Front);
   vtkNew<amLeadFieldECG> fields;
   fields->SetInputData(0, mesh);
   fields->SetInputData(1, heart);

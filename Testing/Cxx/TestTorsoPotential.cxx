@@ -25,9 +25,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <array>
 #include <set>
 
 namespace
@@ -54,8 +54,8 @@ double ManufacturedError(int n, bool direct)
   for (vtkIdType i = 0; i < np; ++i)
   {
     const auto& p = fem.Points[i];
-    const bool boundary = p[0] < 1e-12 || p[1] < 1e-12 || p[2] < 1e-12 || p[0] > 1 - 1e-12 || p[1] > 1 - 1e-12 ||
-      p[2] > 1 - 1e-12;
+    const bool boundary =
+      p[0] < 1e-12 || p[1] < 1e-12 || p[2] < 1e-12 || p[0] > 1 - 1e-12 || p[1] > 1 - 1e-12 || p[2] > 1 - 1e-12;
     fixed[i] = boundary;
     if (boundary)
       x[i] = Exact(p.data());
@@ -106,51 +106,11 @@ vtkSmartPointer<vtkUnstructuredGrid> NestedCubes(int n, double half = 40.0)
 {
   const int dims[3] = { n, n, n };
   const double origin[3] = { -half, -half, -half }, size[3] = { 2 * half, 2 * half, 2 * half };
-  return amTest::BoxMesh(dims, origin, size, [](const double* c) {
-    return (std::fabs(c[0]) < 8 && std::fabs(c[1]) < 8 && std::fabs(c[2]) < 8) ? 5 : 1;
-  });
+  return amTest::BoxMesh(dims, origin, size,
+    [](const double* c) { return (std::fabs(c[0]) < 8 && std::fabs(c[1]) < 8 && std::fabs(c[2]) < 8) ? 5 : 1; });
 }
 
 // A static heart solution on the region-5 cells of mesh: u = f(point).
-vtkSmartPointer<vtkUnstructuredGrid> StaticHeart(vtkUnstructuredGrid* mesh, double (*f)(const double*))
-{
-  auto heart = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkDataArray* regions = mesh->GetCellData()->GetArray("Region");
-  std::set<vtkIdType> nodes;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-    if (regions->GetComponent(c, 0) == 5)
-    {
-      const vtkIdType* ids;
-      vtkIdType npts;
-      mesh->GetCellPoints(c, npts, ids);
-      nodes.insert(ids, ids + 4);
-    }
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("InputPointId");
-  vtkNew<vtkDoubleArray> u;
-  u->SetName("u");
-  for (vtkIdType p : nodes)
-  {
-    double x[3];
-    mesh->GetPoint(p, x);
-    points->InsertNextPoint(x);
-    ids->InsertNextValue(p);
-    u->InsertNextValue(f(x));
-  }
-  heart->SetPoints(points);
-  heart->GetPointData()->AddArray(ids);
-  heart->GetPointData()->AddArray(u);
-  vtkNew<vtkIntArray> r;
-  r->SetName("Region");
-  r->InsertNextValue(5);
-  heart->GetCellData()->AddArray(r); // the heart's regions are read from its cells' labels
-  heart->Allocate(1);
-  vtkIdType cell[4] = { 0, 1, 2, 3 };
-  heart->InsertNextCell(VTK_TETRA, 4, cell);
-  return heart;
-}
-
 double Dipole(const double* x)
 {
   return x[0] / 8.0;
@@ -160,8 +120,8 @@ double Dipole(const double* x)
 void BoxElectrodes(amTorsoPotential* torso)
 {
   torso->RemoveAllElectrodes();
-  const double e[9][3] = { { -24, 0, 20 }, { 24, 0, 20 }, { 20, 0, -24 }, { -5, -24, 0 }, { 5, -24, 0 },
-    { 12, -24, 0 }, { 18, -24, 0 }, { 24, -18, 0 }, { 24, 0, 0 } };
+  const double e[9][3] = { { -24, 0, 20 }, { 24, 0, 20 }, { 20, 0, -24 }, { -5, -24, 0 }, { 5, -24, 0 }, { 12, -24, 0 },
+    { 18, -24, 0 }, { 24, -18, 0 }, { 24, 0, 0 } };
   for (const auto& p : e)
     torso->AddElectrode(p[0], p[1], p[2]);
 }
@@ -261,7 +221,7 @@ TEST(TorsoPotential, DipoleInsensitiveToRefinement)
   for (int n : { 12, 24, 48 })
   {
     auto mesh = NestedCubes(n, 24.0);
-    auto heart = StaticHeart(mesh, Dipole);
+    auto heart = amTest::StaticHeart(mesh, Dipole);
     vtkNew<amTorsoPotential> torso;
     torso->SetInputData(0, mesh);
     torso->SetInputData(1, heart);
@@ -342,13 +302,13 @@ TEST(TorsoPotential, CurrentSourceDipoleInASphereMatchesTheClosedForm)
       for (int k = 0; k < 3; ++k)
         for (int d = 0; d < 3; ++d)
           e[k][d] = p[k + 1][d] - p[0][d];
-      heartVolume += std::fabs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                       e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                       e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+      heartVolume +=
+        std::fabs(e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+          e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
         6.0;
     }
   }
-  auto heart = StaticHeart(mesh, [](const double* x) { return x[2] / 100.0; });
+  auto heart = amTest::StaticHeart(mesh, [](const double* x) { return x[2] / 100.0; });
   vtkNew<amTorsoPotential> torso;
   torso->SetInputData(0, mesh);
   torso->SetInputData(1, heart);
@@ -365,8 +325,8 @@ TEST(TorsoPotential, CurrentSourceDipoleInASphereMatchesTheClosedForm)
   ASSERT_NE(body, nullptr);
   ASSERT_GT(body->GetNumberOfPoints(), 1000);
   // The whole mesh is solved: output 0 holds the heart's cells too.
-  EXPECT_EQ(vtkUnstructuredGrid::SafeDownCast(torso->GetOutputDataObject(0))->GetNumberOfCells(),
-    mesh->GetNumberOfCells());
+  EXPECT_EQ(
+    vtkUnstructuredGrid::SafeDownCast(torso->GetOutputDataObject(0))->GetNumberOfCells(), mesh->GetNumberOfCells());
   const double dipole = -0.05 * 1.0 * heartVolume;
   const double amplitude = 3.0 * dipole / (4.0 * M_PI * 0.2 * R * R);
   vtkDataArray* phi = body->GetPointData()->GetArray("Potential");
@@ -441,7 +401,8 @@ TEST(TorsoPotential, TimeSeriesAndLeads)
   EXPECT_GT(later, 0.1);
   // Lead III = II - I (Einthoven).
   for (int r = 0; r < 7; ++r)
-    EXPECT_NEAR(leads->GetValue(r, 3).ToDouble(), leads->GetValue(r, 2).ToDouble() - leads->GetValue(r, 1).ToDouble(), 1e-9);
+    EXPECT_NEAR(
+      leads->GetValue(r, 3).ToDouble(), leads->GetValue(r, 2).ToDouble() - leads->GetValue(r, 1).ToDouble(), 1e-9);
   // The body surface: the box's outer faces (2 triangles per boundary square), potentials of the torso.
   vtkPolyData* body = vtkPolyData::SafeDownCast(torso->GetOutputDataObject(2));
   ASSERT_NE(body, nullptr);
@@ -453,7 +414,8 @@ TEST(TorsoPotential, TimeSeriesAndLeads)
     for (int k = 0; k < 3; ++k)
       body->GetPoint(body->GetCell(t)->GetPointId(k), p[k]);
     enclosed += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                  p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) / 6.0;
+                  p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
+      6.0;
   }
   EXPECT_NEAR(enclosed, 48.0 * 48.0 * 48.0, 1e-6);
   ASSERT_NE(body->GetPointData()->GetArray("Potential"), nullptr);
@@ -533,13 +495,13 @@ TEST(TorsoPotential, BadInput)
     vtkNew<amTest::ErrorCatcher> errors;
     errors->Watch(torso);
     torso->SetInputData(0, all);
-    torso->SetInputData(1, StaticHeart(all, Dipole));
+    torso->SetInputData(1, amTest::StaticHeart(all, Dipole));
     torso->Update();
     EXPECT_TRUE(errors->ErrorContains("no torso")) << errors->AllErrors();
   }
   {
     // A heart without InputPointId.
-    auto heart = StaticHeart(mesh, Dipole);
+    auto heart = amTest::StaticHeart(mesh, Dipole);
     heart->GetPointData()->RemoveArray("InputPointId");
     vtkNew<amTorsoPotential> torso;
     vtkNew<amTest::ErrorCatcher> errors;
@@ -551,7 +513,7 @@ TEST(TorsoPotential, BadInput)
   }
   {
     // A heart whose nodes are not nodes of the mesh.
-    auto heart = StaticHeart(mesh, Dipole);
+    auto heart = amTest::StaticHeart(mesh, Dipole);
     vtkDataArray* ids = heart->GetPointData()->GetArray("InputPointId");
     for (vtkIdType i = 0; i < ids->GetNumberOfTuples(); ++i)
       ids->SetComponent(i, 0, -1);

@@ -7,16 +7,19 @@
 #include "amP1Assembly.h"
 
 #include "vtkCellData.h"
-#include "vtkDoubleArray.h"
 #include "vtkCellType.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <cmath>
 #include <functional>
+#include <set>
 
 namespace amTest
 {
@@ -41,8 +44,8 @@ inline amP1Assembly FemOf(vtkUnstructuredGrid* mesh)
 /// along x (cell data "Fibers"), on a solver set up as the tests and the benchmark run it:
 /// transverse conductivity ratio 0.019/0.17 as in the benchmark, a 2.5 mm corner stimulus (2/ms for
 /// 4 ms), the given time step, simulated up to endTime with one frame at the end.
-inline vtkSmartPointer<vtkUnstructuredGrid> NiedererSlab(double dx, amFitzHughNagumoSolver* solver, double dt,
-  double endTime)
+inline vtkSmartPointer<vtkUnstructuredGrid> NiedererSlab(
+  double dx, amFitzHughNagumoSolver* solver, double dt, double endTime)
 {
   const int n[3] = { static_cast<int>(std::lround(20 / dx)), static_cast<int>(std::lround(7 / dx)),
     static_cast<int>(std::lround(3 / dx)) };
@@ -67,6 +70,51 @@ inline vtkSmartPointer<vtkUnstructuredGrid> NiedererSlab(double dx, amFitzHughNa
   solver->SetStimulusDuration(4.0);
   return mesh;
 }
+
+/// The heart (region 5) of 'mesh' as a heart solution: its nodes with InputPointId, "u" = f(x) and
+/// "Vm" = 100 f(x) (mV), its region label on one cell (the heart solvers' outputs carry the same).
+inline vtkSmartPointer<vtkUnstructuredGrid> StaticHeart(vtkUnstructuredGrid* mesh, double (*f)(const double*))
+{
+  auto heart = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkDataArray* regions = mesh->GetCellData()->GetArray("Region");
+  std::set<vtkIdType> nodes;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+    if (regions->GetComponent(c, 0) == 5)
+    {
+      const vtkIdType* ids;
+      vtkIdType npts;
+      mesh->GetCellPoints(c, npts, ids);
+      nodes.insert(ids, ids + 4);
+    }
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("InputPointId");
+  vtkNew<vtkDoubleArray> u, vm;
+  u->SetName("u");
+  vm->SetName("Vm");
+  for (vtkIdType p : nodes)
+  {
+    double x[3];
+    mesh->GetPoint(p, x);
+    points->InsertNextPoint(x);
+    ids->InsertNextValue(p);
+    u->InsertNextValue(f(x));
+    vm->InsertNextValue(100.0 * f(x));
+  }
+  heart->SetPoints(points);
+  heart->GetPointData()->AddArray(ids);
+  heart->GetPointData()->AddArray(u);
+  heart->GetPointData()->AddArray(vm);
+  vtkNew<vtkIntArray> r;
+  r->SetName("Region");
+  r->InsertNextValue(5);
+  heart->GetCellData()->AddArray(r); // the heart's regions are read from its cells' labels
+  heart->Allocate(1);
+  vtkIdType cell[4] = { 0, 1, 2, 3 };
+  heart->InsertNextCell(VTK_TETRA, 4, cell);
+  return heart;
+}
+
 }
 
 #endif
