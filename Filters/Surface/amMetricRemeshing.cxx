@@ -170,7 +170,9 @@ int amMetricRemeshing::RequestData(
     vtkWarningMacro("The Hausdorff distance to the input is " << h << " mm, above the tolerance " << this->Tolerance
                                                               << " mm: refining further would make triangles cross.");
   }
-  for (const auto& f : { std::make_pair("Hausdorff", h), std::make_pair("HausdorffUpperBound", upper) })
+  // The tolerance asked for travels with the surface: the tetrahedra's default surface deviation follows it.
+  for (const auto& f : { std::make_pair("Hausdorff", h), std::make_pair("HausdorffUpperBound", upper),
+         std::make_pair("Tolerance", this->Tolerance) })
   {
     vtkNew<vtkDoubleArray> a;
     a->SetName(f.first);

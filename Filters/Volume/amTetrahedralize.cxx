@@ -56,7 +56,7 @@ amTetrahedralize::amTetrahedralize()
   , OptimizationLevel(3)
   , ImproveQuality(1)
   , ImprovementPasses(4)
-  , MaximumSurfaceDeviation(0.2)
+  , MaximumSurfaceDeviation(-1.0)
   , NumberOfTetrahedra(0)
   , NumberOfSteinerPoints(0)
   , WorstQualityBeforeImprovement(0)
@@ -323,6 +323,15 @@ int amTetrahedralize::RequestData(
 
   this->UpdateProgress(0.92);
 
+  // The surface may move half the tolerance it was remeshed to, unless a deviation is set.
+  this->SurfaceDeviationUsed = this->MaximumSurfaceDeviation;
+  if (this->SurfaceDeviationUsed < 0)
+  {
+    vtkDataArray* tolerance = input->GetFieldData()->GetArray("Tolerance");
+    this->SurfaceDeviationUsed =
+      tolerance && tolerance->GetNumberOfTuples() > 0 && tolerance->GetComponent(0, 0) > 0 ? 0.5 * tolerance->GetComponent(0, 0) : 0.2;
+  }
+
   // --- Quality improvement: flips and smoothing inside the regions, the surface kept ------------
   std::ostringstream improvement;
   this->WorstQualityBeforeImprovement = this->MeanQualityBeforeImprovement = this->SurfaceDeviation = 0;
@@ -331,7 +340,7 @@ int amTetrahedralize::RequestData(
   {
     amTetraMeshOptimizer::Options options;
     options.Passes = this->ImprovementPasses;
-    options.MaximumSurfaceDeviation = this->MaximumSurfaceDeviation;
+    options.MaximumSurfaceDeviation = this->SurfaceDeviationUsed;
     amTetraMeshOptimizer::Report report;
     if (!amTetraMeshOptimizer::ImproveGrid(
           output, interfaces, options, report, why, [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
@@ -366,7 +375,7 @@ int amTetrahedralize::RequestData(
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
-         << " MaximumSurfaceDeviation=" << this->MaximumSurfaceDeviation << " groups=" << this->NumberOfGroups
+         << " MaximumSurfaceDeviation=" << this->SurfaceDeviationUsed << " groups=" << this->NumberOfGroups
          << " tetrahedra=" << this->NumberOfTetrahedra << improvement.str();
   amProvenance::Record(output, input, "amTetrahedralize", params.str());
   this->UpdateProgress(1.0);

@@ -152,8 +152,11 @@ public:
   /// faces anew: those that remain keep their cell data, new ones have SourceTriangle -1. The
   /// mesh's surface is thus within the remeshing's Hausdorff distance plus SurfaceDeviation of
   /// the label surface.
-  vtkSetClampMacro(MaximumSurfaceDeviation, double, 0.0, 1e6);
+  /// Default -1: half the tolerance the surface was remeshed to (its field data "Tolerance", from
+  /// amMetricRemeshing), else 0.2 mm; SurfaceDeviationUsed gives the value of the last run.
+  vtkSetClampMacro(MaximumSurfaceDeviation, double, -1.0, 1e6);
   vtkGetMacro(MaximumSurfaceDeviation, double);
+  vtkGetMacro(SurfaceDeviationUsed, double);
   ///@}
 
   ///@{
@@ -194,6 +197,7 @@ protected:
   vtkTypeBool ImproveQuality;
   int ImprovementPasses;
   double MaximumSurfaceDeviation;
+  double SurfaceDeviationUsed = 0.2;
   vtkIdType NumberOfTetrahedra;
   vtkIdType NumberOfSteinerPoints;
   double WorstQualityBeforeImprovement;

@@ -182,7 +182,7 @@ TEST(AtlasChain, HundredLabels)
     EXPECT_DOUBLE_EQ(largest, h);
     EXPECT_LT(h, 1.1 * eps);
     EXPECT_EQ(chain.Tetra->GetNumberOfVolumeMisses(), 0);
-    ExpectNoSliver(chain.Tetra, chain.Tetra->GetMaximumSurfaceDeviation());
+    ExpectNoSliver(chain.Tetra, chain.Tetra->GetSurfaceDeviationUsed());
   }
 }
 
