@@ -198,6 +198,23 @@ int amXdmfWriter::WriteData(vtkDataObject* data)
     attribute(out, "cell_tags", static_cast<std::size_t>(nc));
     for (int l : labels)
       out << l << "\n";
+    // The fibres and sheets where the mesh has them (Ventricular Fibres), after the tags: FEniCSx's
+    // read_meshtags takes a grid's first attribute.
+    for (const char* name : { "Fibers", "Sheets" })
+    {
+      vtkDataArray* vectors = grid->GetCellData()->GetArray(name);
+      if (!vectors || vectors->GetNumberOfComponents() != 3)
+        continue;
+      out << "        </DataItem>\n      </Attribute>\n      <Attribute Name=\"" << name
+          << "\" AttributeType=\"Vector\" Center=\"Cell\">\n        <DataItem Dimensions=\"" << nc
+          << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">\n";
+      double v[3];
+      for (vtkIdType c = 0; c < nc; ++c)
+      {
+        vectors->GetTuple(c, v);
+        out << v[0] << " " << v[1] << " " << v[2] << "\n";
+      }
+    }
     out << tail;
     if (!out.Flush())
     {

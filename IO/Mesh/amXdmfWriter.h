@@ -7,7 +7,8 @@
  * Two files, one grid each:
  * - FileName (NAME.xdmf), grid "mesh": Topology Tetrahedron and Geometry XYZ (mm), only the points the
  *   tetrahedra use, renumbered in their order, and the Attribute "cell_tags" (Center Cell), the cell
- *   data RegionArrayName ("Region");
+ *   data RegionArrayName ("Region"), then, where the mesh has them, the cell vectors "Fibers" and
+ *   "Sheets" (Ventricular Fibres');
  * - NAME_facets.xdmf, grid "facet_tags": the interface and boundary triangles (amTetraFaces: each
  *   face where the region changes, once, its normal from the higher region into the lower one) on
  *   the same points, with the Attribute "facet_tags", tagged like the Medit and Gmsh writers'

@@ -59,7 +59,7 @@ class ThoraxJob(unittest.TestCase):
         table = stdout[stdout.index("Seconds per filter"):].splitlines()
         names = ["phantom", "snake", "segmentation", "dice", "surface", "smooth", "metric", "remesh",
                  "save_surface_mesh", "save_ct", "save_truth", "save_labels", "tets", "quality", "save_volume_mesh",
-                 "save_gmsh", "save_xdmf", "landmarks", "fibres", "save_opencarp", "heart", "ecg", "torso", "(outputs)", "(other)"]
+                 "save_gmsh", "landmarks", "fibres", "save_xdmf", "save_opencarp", "heart", "ecg", "torso", "(outputs)", "(other)"]
         self.assertEqual([l.split()[0] for l in table[1:len(names) + 1]], names)
         self.assertRegex(stdout, r"heart +ReactionEikonalSolver +[0-9.]+ s +[0-9.]+ % +[0-9.]+ +\(\d+ runs\)")
         # Cores kept busy: CPU seconds per wall second, more than none and at most the machine's

@@ -55,6 +55,21 @@ class SolverClients(unittest.TestCase):
         self.assertTrue(any(t % 1000 == 0 for t in tags), tags)  # the body surface: a region | outside
         np.testing.assert_array_equal(facets.points, mesh.points)
 
+    def test_xdmf_carries_the_fibres(self):
+        import meshio
+        fibres = anatomesh.amVentricularFibres()
+        fibres.SetInputData(self.mesh)
+        fibres.Update()
+        path = os.path.join(self.folder, "phantom_fibres.xdmf")
+        writer = anatomesh.amXdmfWriter()
+        writer.SetInputConnection(fibres.GetOutputPort(0))
+        writer.SetFileName(path)
+        self.assertEqual(writer.Write(), 1)
+        mesh = meshio.read(path)
+        expected = vtk_to_numpy(fibres.GetOutputDataObject(0).GetCellData().GetArray("Fibers"))
+        np.testing.assert_allclose(mesh.cell_data["Fibers"][0], expected, rtol=0, atol=1e-6)
+        self.assertEqual(mesh.cell_data["Sheets"][0].shape, (self.mesh.GetNumberOfCells(), 3))
+
     def test_gmsh_and_opencarp_files_hold_only_used_points(self):
         import meshio
         gmsh = os.path.join(self.folder, "phantom.msh")
