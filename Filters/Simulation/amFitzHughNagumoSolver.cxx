@@ -6,6 +6,7 @@
 #include "amFitzHughNagumoStepper.h"
 #include "amP1Assembly.h"
 #include "amProvenance.h"
+#include "amSimulationRun.h"
 #include "amSparseMatrix.h"
 #include "amTetraSubset.h"
 #include "amThreading.h"
@@ -40,11 +41,6 @@
 #include <sstream>
 
 vtkStandardNewMacro(amFitzHughNagumoSolver);
-
-namespace
-{
-std::atomic<long long> RunCounter{ 0 };
-}
 
 // Everything one simulation produced: the heart mesh, the frames, the activation times.
 struct amFitzHughNagumoSolver::Run
@@ -418,7 +414,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
 
   auto heart = subset.MakeGrid(regions); // points, tetrahedra, Region, InputPointId
   run->Heart = heart;
-  run->Id = ++RunCounter;
+  run->Id = amSimulationRun::Next();
 
   std::ostringstream params;
   params << "HeartRegions=";
@@ -505,10 +501,7 @@ int amFitzHughNagumoSolver::RequestData(
   output->GetPointData()->AddArray(v);
   output->GetPointData()->AddArray(act);
   output->GetPointData()->SetActiveScalars("u");
-  vtkNew<vtkIdTypeArray> runId;
-  runId->SetName("SimulationRun");
-  runId->InsertNextValue(static_cast<vtkIdType>(run.Id));
-  output->GetFieldData()->AddArray(runId);
+  amSimulationRun::Stamp(output, run.Id);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
   return 1;
 }

@@ -5,6 +5,7 @@
 #include "amLeadFields.h"
 #include "amP1Assembly.h"
 #include "amProvenance.h"
+#include "amSimulationRun.h"
 #include "amTetraFaces.h"
 #include "amThoraxPhantomModel.h"
 #include "amTwelveLeads.h"
@@ -37,22 +38,13 @@ vtkStandardNewMacro(amLeadFieldECG);
 struct amLeadFieldECG::Model
 {
   vtkMTimeType MeshTime = 0, FilterTime = 0, LandmarksTime = 0;
-  vtkIdType HeartRun = -1;
+  long long HeartRun = -1;
   amLeadFields Fields;
   std::vector<vtkIdType> HeartPointOfNode; // per Fields.Nodes entry: the heart's point id
   std::vector<std::array<double, 3>> Electrodes;
   std::vector<double> Times;
   std::vector<std::array<double, 12>> Leads;
 };
-
-namespace
-{
-vtkIdType HeartRunOf(vtkUnstructuredGrid* heart)
-{
-  vtkDataArray* run = heart->GetFieldData()->GetArray("SimulationRun");
-  return run && run->GetNumberOfTuples() > 0 ? static_cast<vtkIdType>(run->GetComponent(0, 0)) : -1;
-}
-}
 
 amLeadFieldECG::amLeadFieldECG()
   : RegionArrayName(nullptr)
@@ -352,8 +344,8 @@ int amLeadFieldECG::RequestData(
   if (this->LoopIndex < 0)
   {
     const vtkMTimeType landmarksTime = landmarks ? landmarks->GetMTime() : 0;
-    const vtkIdType run = HeartRunOf(heart);
-    const bool valid = this->State && !this->State->Times.empty() && run >= 0 && this->State->HeartRun == run &&
+    const long long run = amSimulationRun::Of(heart);
+    const bool valid = this->State && !this->State->Times.empty() && this->State->HeartRun == run &&
       this->State->MeshTime == mesh->GetMTime() && this->State->FilterTime == this->GetMTime() &&
       this->State->LandmarksTime == landmarksTime;
     if (!valid)

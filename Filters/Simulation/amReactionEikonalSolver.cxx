@@ -6,6 +6,7 @@
 #include "amLandmarkPoints.h"
 #include "amMitchellSchaeffer.h"
 #include "amProvenance.h"
+#include "amSimulationRun.h"
 #include "amTetraSubset.h"
 #include "amVentricularTags.h"
 
@@ -35,11 +36,6 @@
 #include <sstream>
 
 vtkStandardNewMacro(amReactionEikonalSolver);
-
-namespace
-{
-std::atomic<long long> RunCounter{ 0 };
-}
 
 struct amReactionEikonalSolver::Run
 {
@@ -363,7 +359,7 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
       run->Spread[i] = count[i] > 0 ? run->Spread[i] / count[i] / speed : 0.0;
   }
   run->Heart = subset.MakeGrid(regions);
-  run->Id = ++RunCounter;
+  run->Id = amSimulationRun::Next();
   std::ostringstream params;
   params << "CV=" << this->ConductionVelocityFibre << "/" << this->ConductionVelocityTransverse
          << " endocardium=" << this->EndocardialConductionVelocity << " sites=" << sitesFrom
@@ -431,10 +427,7 @@ int amReactionEikonalSolver::RequestData(
   output->GetPointData()->AddArray(rt);
   output->GetPointData()->AddArray(apd);
   output->GetPointData()->SetActiveScalars("Vm");
-  vtkNew<vtkIdTypeArray> runId;
-  runId->SetName("SimulationRun");
-  runId->InsertNextValue(static_cast<vtkIdType>(run.Id));
-  output->GetFieldData()->AddArray(runId);
+  amSimulationRun::Stamp(output, run.Id);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
   return 1;
 }

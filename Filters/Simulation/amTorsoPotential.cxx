@@ -6,6 +6,7 @@
 #include "amConjugateGradient.h"
 #include "amP1Assembly.h"
 #include "amProvenance.h"
+#include "amSimulationRun.h"
 #include "amSparseCholesky.h"
 #include "amSparseMatrix.h"
 #include "amTetraFaces.h"
@@ -101,13 +102,6 @@ struct amTorsoPotential::Model
 
 namespace
 {
-long long HeartRunOf(vtkDataObject* heart)
-{
-  vtkDataArray* run = heart->GetFieldData()->GetArray("SimulationRun");
-  if (run && run->GetNumberOfTuples() > 0)
-    return static_cast<long long>(run->GetComponent(0, 0));
-  return static_cast<long long>(heart->GetMTime()) + (1LL << 40); // a static heart: its own time
-}
 
 int Find(std::vector<vtkIdType>& parent, vtkIdType i)
 {
@@ -493,7 +487,7 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   model->Torso = torso;
   model->MeshTime = mesh->GetMTime();
   model->FilterTime = this->GetMTime();
-  model->HeartRun = HeartRunOf(heart);
+  model->HeartRun = amSimulationRun::Of(heart);
   this->NumberOfTorsoNodes = n;
   this->NumberOfHeartNodes = nFixed;
   this->State = std::move(model);
@@ -504,7 +498,7 @@ bool amTorsoPotential::Solve(vtkUnstructuredGrid* heart, double time)
 {
   Model& m = *this->State;
   vtkDataArray* potential = heart->GetPointData()->GetArray(this->PotentialArrayName ? this->PotentialArrayName : "");
-  if (!potential || HeartRunOf(heart) != m.HeartRun)
+  if (!potential || amSimulationRun::Of(heart) != m.HeartRun)
   {
     vtkErrorMacro(<< "the heart input changed while the torso series was being computed");
     return false;
@@ -686,7 +680,7 @@ int amTorsoPotential::RequestData(
     vtkPolyData* landmarks = vtkPolyData::GetData(inputVector[2], 0);
     const vtkMTimeType landmarksTime = landmarks ? landmarks->GetMTime() : 0;
     const bool valid = this->State && !this->State->Times.empty() && this->State->MeshTime == mesh->GetMTime() &&
-      this->State->FilterTime == this->GetMTime() && this->State->HeartRun == HeartRunOf(heart) &&
+      this->State->FilterTime == this->GetMTime() && this->State->HeartRun == amSimulationRun::Of(heart) &&
       this->State->LandmarksTime == landmarksTime;
     if (valid)
     {

@@ -229,8 +229,9 @@ int amVentricularFibres::RequestData(
   tagger.LVBlood.insert(this->LVBloodRegions.begin(), this->LVBloodRegions.end());
   tagger.RVBlood.insert(this->RVBloodRegions.begin(), this->RVBloodRegions.end());
   tagger.BaseRegions.insert(this->BaseRegions.begin(), this->BaseRegions.end());
-  const std::vector<amVentricularTags::Triangle> triangles = tagger.Find(xyz.data(), tets, tetLabels);
-  this->NumberOfWallHoles = this->WarnOfWallHoles(xyz, tets, tetLabels);
+  std::map<std::pair<int, int>, vtkIdType> holes;
+  const std::vector<amVentricularTags::Triangle> triangles = tagger.Find(xyz.data(), tets, tetLabels, &holes);
+  this->NumberOfWallHoles = this->WarnOfWallHoles(holes);
   this->UpdateProgress(0.1);
 
   amTetraSubset subset;
@@ -391,29 +392,13 @@ int amVentricularFibres::RequestData(
   return 1;
 }
 
-vtkIdType amVentricularFibres::WarnOfWallHoles(
-  const std::vector<double>& xyz, const std::vector<std::array<vtkIdType, 4>>& tets, const std::vector<int>& labels)
+vtkIdType amVentricularFibres::WarnOfWallHoles(const std::map<std::pair<int, int>, vtkIdType>& holes)
 {
-  // Ventricular blood touching anything but the heart, the other blood pool or the base: a hole in
-  // the segmented wall (the activation and the ECG then miss that part of the wall).
-  std::set<int> allowed(this->HeartRegions.begin(), this->HeartRegions.end());
-  allowed.insert(this->LVBloodRegions.begin(), this->LVBloodRegions.end());
-  allowed.insert(this->RVBloodRegions.begin(), this->RVBloodRegions.end());
-  allowed.insert(this->BaseRegions.begin(), this->BaseRegions.end());
-  std::set<int> blood(this->LVBloodRegions.begin(), this->LVBloodRegions.end());
-  blood.insert(this->RVBloodRegions.begin(), this->RVBloodRegions.end());
-  std::map<std::pair<int, int>, vtkIdType> holes; // (blood, other) -> triangles
+  // Ventricular blood touching anything but the heart, the other pool or the base: a hole in the
+  // segmented wall (the activation and the ECG then miss that part of the wall).
   vtkIdType total = 0;
-  for (const amTetraFaces::Face& f : amTetraFaces::Find(xyz.data(), tets, labels.data()))
-  {
-    const int second = f.Second;
-    for (const auto& pair : { std::make_pair(f.First, second), std::make_pair(second, f.First) })
-      if (blood.count(pair.first) && !allowed.count(pair.second))
-      {
-        ++holes[pair];
-        ++total;
-      }
-  }
+  for (const auto& kv : holes)
+    total += kv.second;
   if (total > 0)
   {
     std::ostringstream text;

@@ -38,7 +38,8 @@
 #include "AnatomeshFiltersSimulationModule.h" // export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
-#include <array>
+#include <map>
+#include <utility>
 #include <vector>
 
 class ANATOMESHFILTERSSIMULATION_EXPORT amVentricularFibres : public vtkUnstructuredGridAlgorithm
@@ -126,8 +127,7 @@ protected:
   vtkIdType TagCounts[5];
 
 private:
-  vtkIdType WarnOfWallHoles(
-    const std::vector<double>& xyz, const std::vector<std::array<vtkIdType, 4>>& tets, const std::vector<int>& labels);
+  vtkIdType WarnOfWallHoles(const std::map<std::pair<int, int>, vtkIdType>& holes);
   amVentricularFibres(const amVentricularFibres&) = delete;
   void operator=(const amVentricularFibres&) = delete;
 };

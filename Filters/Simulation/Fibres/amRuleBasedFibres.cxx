@@ -49,9 +49,10 @@ void Longitudinal(const double axis[3], const double t[3], double l[3])
   Normalise(l);
 }
 
-// Laplace's equation with the given Dirichlet nodes (value in x), the rest free.
-bool SolveLaplace(
-  const amSparseMatrix& K, const std::vector<unsigned char>& fixed, std::vector<double>& x, std::string& error)
+// Laplace's equation for each of 'fields' (count x n values, the Dirichlet values set, the rest free):
+// one factor of K on the free nodes serves them all.
+bool SolveLaplace(const amSparseMatrix& K, const std::vector<unsigned char>& fixed, std::vector<double>& fields,
+  int count, std::string& error)
 {
   amSparseCholesky factor;
   factor.BlasThreads = 1;
@@ -60,8 +61,7 @@ bool SolveLaplace(
     error = factor.Error();
     return false;
   }
-  const std::vector<double> b(x.size(), 0.0);
-  return factor.Solve(b.data(), x.data());
+  return factor.Solve(nullptr, fields.data(), count);
 }
 }
 
@@ -108,17 +108,19 @@ bool amRuleBasedFibres::Compute(const amP1Assembly& fem, const std::vector<unsig
   for (vtkIdType i = 0; i < n; ++i)
     fixed[i] = tag[i] == amVentricularTags::LVEndocardium || tag[i] == amVentricularTags::RVEndocardium ||
       tag[i] == amVentricularTags::Epicardium;
-  std::vector<double> phiLV(n, 0.0), phiRV(n, 0.0);
+  // phi_LV and phi_RV one after the other (phi_RV stays 0 without an RV).
+  std::vector<double> phi(2 * static_cast<std::size_t>(n), 0.0);
   for (vtkIdType i = 0; i < n; ++i)
   {
-    phiLV[i] = tag[i] == amVentricularTags::LVEndocardium ? 1.0 : 0.0;
-    phiRV[i] = tag[i] == amVentricularTags::RVEndocardium ? 1.0 : 0.0;
+    phi[i] = tag[i] == amVentricularTags::LVEndocardium ? 1.0 : 0.0;
+    phi[n + i] = tag[i] == amVentricularTags::RVEndocardium ? 1.0 : 0.0;
   }
-  if (!SolveLaplace(K, fixed, phiLV, this->Error) || (hasRV && !SolveLaplace(K, fixed, phiRV, this->Error)))
+  if (!SolveLaplace(K, fixed, phi, hasRV ? 2 : 1, this->Error))
   {
     this->Error = "the transmural Laplace problem cannot be solved: " + this->Error;
     return false;
   }
+  const std::vector<double> phiLV(phi.begin(), phi.begin() + n), phiRV(phi.begin() + n, phi.end());
 
   this->TransmuralDepth.assign(n, 0.0);
   this->Ventricle.assign(n, 0);

@@ -19,8 +19,9 @@ const char* amVentricularTags::Name(int tag)
   }
 }
 
-std::vector<amVentricularTags::Triangle> amVentricularTags::Find(
-  const double* points, const std::vector<std::array<vtkIdType, 4>>& tetrahedra, const std::vector<int>& labels) const
+std::vector<amVentricularTags::Triangle> amVentricularTags::Find(const double* points,
+  const std::vector<std::array<vtkIdType, 4>>& tetrahedra, const std::vector<int>& labels,
+  std::map<std::pair<int, int>, vtkIdType>* holes) const
 {
   // Every heart region one label, so faces between two heart regions are interior.
   std::vector<int> merged(labels);
@@ -33,6 +34,13 @@ std::vector<amVentricularTags::Triangle> amVentricularTags::Find(
   {
     const bool firstIsHeart = f.First == heartLabel && this->Heart.count(labels[f.FirstTetra]);
     const bool secondIsHeart = f.SecondTetra >= 0 && f.Second == heartLabel && this->Heart.count(labels[f.SecondTetra]);
+    if (holes && !firstIsHeart && !secondIsHeart)
+    {
+      auto may = [&](int l) { return this->LVBlood.count(l) || this->RVBlood.count(l) || this->BaseRegions.count(l); };
+      for (const auto& pair : { std::make_pair(f.First, f.Second), std::make_pair(f.Second, f.First) })
+        if ((this->LVBlood.count(pair.first) || this->RVBlood.count(pair.first)) && !may(pair.second))
+          ++(*holes)[pair];
+    }
     if (firstIsHeart == secondIsHeart)
       continue;
     Triangle t;

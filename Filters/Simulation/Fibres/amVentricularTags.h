@@ -19,7 +19,9 @@
 #include "vtkType.h"
 
 #include <array>
+#include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 class amVentricularTags
@@ -45,8 +47,10 @@ public:
   std::set<int> Heart, LVBlood, RVBlood, BaseRegions;
 
   /// The heart's boundary triangles of a tetrahedral mesh (points x y z, tetrahedra, one label each).
+  /// 'holes', when given, counts the triangles where ventricular blood touches a region other than
+  /// the heart, the other pool or the base (a hole in the segmented wall), per (blood, other) pair.
   std::vector<Triangle> Find(const double* points, const std::vector<std::array<vtkIdType, 4>>& tetrahedra,
-    const std::vector<int>& labels) const;
+    const std::vector<int>& labels, std::map<std::pair<int, int>, vtkIdType>* holes = nullptr) const;
 };
 
 #endif
