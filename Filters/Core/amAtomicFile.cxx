@@ -4,10 +4,11 @@
 #include <atomic>
 #include <cctype>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <csignal>
 #include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -110,13 +111,66 @@ bool amAtomicFile::CanWrite(std::string& why) const
   return true;
 }
 
+bool amAtomicFile::WriteTemporary(const std::string& bytes, std::string& why) const
+{
+  const int fd = ::open(this->Temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0)
+  {
+    why = std::strerror(errno);
+    return false;
+  }
+  std::size_t done = 0;
+  while (done < bytes.size())
+  {
+    const ssize_t n = ::write(fd, bytes.data() + done, std::min<std::size_t>(bytes.size() - done, 1 << 26));
+    if (n < 0 && errno == EINTR)
+      continue;
+    if (n <= 0)
+    {
+      // A short write is followed by the call that names the reason (ENOSPC, EFBIG).
+      why = std::strerror(n < 0 ? errno : ENOSPC);
+      ::close(fd);
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  struct stat st;
+  const bool sized = ::fstat(fd, &st) == 0 && static_cast<std::size_t>(st.st_size) == bytes.size();
+  if (::close(fd) != 0)
+  {
+    why = std::strerror(errno);
+    return false;
+  }
+  if (!sized)
+    why = "the file on the disk does not have the size written";
+  return sized;
+}
+
 bool amAtomicFile::Commit(std::string& why)
 {
+  // fsync reports what a deferred write-back could not store (quota, a full thin-provisioned disk)
+  // while the old file is still in place.
+  const int fd = ::open(this->Temporary.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0 || ::fsync(fd) != 0)
+  {
+    why = "cannot write '" + this->Target + "': " + std::strerror(errno);
+    if (fd >= 0)
+      ::close(fd);
+    return false;
+  }
+  ::close(fd);
   if (std::rename(this->Temporary.c_str(), this->Target.c_str()) != 0)
   {
     why = "cannot rename '" + this->Temporary + "' to '" + this->Target + "': " + std::strerror(errno);
     return false;
   }
   this->Committed = true;
+  // The rename itself reaches the disk with the folder's entry.
+  const int dir = ::open(DirectoryOf(this->Target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0)
+  {
+    ::fsync(dir);
+    ::close(dir);
+  }
   return true;
 }

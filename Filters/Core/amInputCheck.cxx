@@ -8,7 +8,10 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <sys/stat.h>
 #include <vector>
 
 vtkDataArray* amInputCheck::ScalarImage(vtkImageData* image, std::string& why)
@@ -68,4 +71,35 @@ long long amInputCheck::NonFinite(vtkDataArray* scalars)
   for (long long c : counts)
     count += c;
   return count;
+}
+
+bool amInputCheck::ReadableFile(const std::string& path, bool folderAllowed, std::string& why)
+{
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0)
+  {
+    const int code = errno;
+    why = "'" + path + "' " +
+      (code == ENOENT || code == ENOTDIR ? std::string("does not exist.")
+          : code == ELOOP                ? std::string("is a symbolic link loop.")
+                                         : std::string("cannot be read: ") + std::strerror(code) + ".");
+    return false;
+  }
+  if (S_ISREG(st.st_mode) || (folderAllowed && S_ISDIR(st.st_mode)))
+    return true;
+  why = "'" + path + "' is " +
+    (S_ISDIR(st.st_mode)       ? std::string("a folder, not a file.")
+        : S_ISFIFO(st.st_mode) ? std::string("a FIFO (named pipe), not a regular file.")
+        : S_ISSOCK(st.st_mode) ? std::string("a socket, not a regular file.")
+                               : std::string("a device, not a regular file."));
+  return false;
+}
+
+bool amInputCheck::LabelCount(std::size_t count, std::string& why)
+{
+  if (count <= MaximumLabels)
+    return true;
+  why = "The label map holds " + std::to_string(count) + " distinct values, more than the " +
+    std::to_string(MaximumLabels) + " labels a segmentation holds: is this the scan rather than its label map?";
+  return false;
 }

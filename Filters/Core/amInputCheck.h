@@ -26,6 +26,19 @@ public:
   /// The values of a one-component label array as bytes, each a whole number in 0..maximum
   /// (at most 255); false with 'why' naming the first voxel that is not.
   static bool LabelBytes(vtkDataArray* scalars, int maximum, std::vector<unsigned char>& out, std::string& why);
+
+  /// The most distinct values a label map may hold. Atlases hold hundreds of labels; a scan (a CT in
+  /// Hounsfield units, an MR) holds thousands of distinct values even at 8 mm.
+  static constexpr std::size_t MaximumLabels = 1000;
+
+  /// Whether 'count' distinct values can be a label map's; otherwise 'why' says the input looks like
+  /// a scan given where its segmentation belongs.
+  static bool LabelCount(std::size_t count, std::string& why);
+
+  /// Whether a reader may open 'path': it exists and is a regular file (or, with 'folderAllowed', a
+  /// folder). Otherwise 'why' ends "... does not exist.", "... is a symbolic link loop.", "... is a FIFO
+  /// (named pipe), not a regular file." (a reader would block on it until killed), and so on.
+  static bool ReadableFile(const std::string& path, bool folderAllowed, std::string& why);
 };
 
 #endif

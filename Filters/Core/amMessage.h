@@ -20,6 +20,24 @@ public:
   }
   operator std::string() const { return this->Text.str(); }
 
+  /// A text read from a file as it may be shown: bytes outside printable ASCII as \xNN, at most
+  /// 'most' characters (then "..."), so that binary garbage quoted in a message stays one readable
+  /// line of valid UTF-8.
+  static std::string Printable(const std::string& text, std::size_t most = 40)
+  {
+    static const char hex[] = "0123456789abcdef";
+    std::string out;
+    for (std::size_t i = 0; i < text.size() && i < most; ++i)
+    {
+      const unsigned char c = static_cast<unsigned char>(text[i]);
+      if (c >= 0x20 && c < 0x7f)
+        out += static_cast<char>(c);
+      else
+        out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+    }
+    return text.size() > most ? out + "..." : out;
+  }
+
 private:
   std::ostringstream Text;
 };

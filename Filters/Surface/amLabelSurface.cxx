@@ -157,18 +157,11 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
       << this->BackgroundLabel << "): there is no surface to extract.");
     return 0;
   }
-  if (g.Values.size() > 65535)
+  if (!amInputCheck::LabelCount(g.Values.size() - 1, why))
   {
-    vtkErrorMacro("The label map has " << g.Values.size() << " distinct labels; at most 65535 are supported.");
+    vtkErrorMacro(<< why);
     return 0;
   }
-  // A float image of whole numbers is read as labels, but it is more often an intensity image
-  // (a CT in Hounsfield units) than a label map: say so, with the count, rather than mesh it quietly.
-  if (scalars->GetDataType() == VTK_FLOAT || scalars->GetDataType() == VTK_DOUBLE)
-    vtkWarningMacro("The label map is " << scalars->GetDataTypeAsString() << "-typed, as intensity images are; its "
-                                        << g.Values.size() - 1
-                                        << " distinct whole values are taken as labels. Label maps are integer-typed: "
-                                           "check that this input is the segmentation and not the scan.");
   auto rankOf = [&](int v) {
     return static_cast<std::uint16_t>(std::lower_bound(g.Values.begin(), g.Values.end(), v) - g.Values.begin());
   };

@@ -33,13 +33,14 @@
  * normal points from region Labels[0] into region Labels[1], so organ/background faces point
  * outwards). Field data: "VoxelSize" (the smallest spacing, mm; amSurfaceSmoothing uses it to
  * bound displacements), "LabelVoxelVolumes" (label, mm^3 of its voxels, for every label but the
- * background; amTetrahedralize compares its regions' volumes with them), "Provenance". Output port 1 is a vtkTable with one row per region
- * (label, triangles, vertices, edges, Euler characteristic, components, boundary edges,
- * non-manifold edges, wrongly oriented edges, area mm^2, enclosed volume mm^3, voxel volume mm^3):
- * boundary, non-manifold and wrongly oriented edges are zero when the surface is right, and the
- * enclosed volume equals the label's voxel volume.
+ * background; amTetrahedralize compares its regions' volumes with them), "Provenance". Output port 1 is a vtkTable with
+ * one row per region (label, triangles, vertices, edges, Euler characteristic, components, boundary edges, non-manifold
+ * edges, wrongly oriented edges, area mm^2, enclosed volume mm^3, voxel volume mm^3): boundary, non-manifold and
+ * wrongly oriented edges are zero when the surface is right, and the enclosed volume equals the label's voxel volume.
  *
- * Labels must be whole numbers (any scalar type); the image may carry a direction matrix (vertex
+ * Labels must be whole numbers (any scalar type), at most amInputCheck::MaximumLabels (1000) of them
+ * besides the background: an image with more distinct values is a scan given where its label map
+ * belongs, and is refused. The image may carry a direction matrix (vertex
  * positions follow it, and orientation is kept when it mirrors).
  *
  * References: W. E. Lorensen and H. E. Cline, Marching cubes, SIGGRAPH 1987; Z. Wu and J. M.

@@ -155,6 +155,11 @@ int amLabelMapTetrahedralize::RequestData(
     }
     ++voxelsOf[static_cast<int>(v)];
   }
+  if (!amInputCheck::LabelCount(voxelsOf.size() - voxelsOf.count(bg), why))
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
   if (voxelsOf.size() == 1 && voxelsOf.begin()->first == bg)
   {
     vtkErrorMacro("The label map holds only the background label " << bg << ": nothing to mesh.");

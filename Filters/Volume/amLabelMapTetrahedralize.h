@@ -6,7 +6,8 @@
  * Input: a label map (whole-number scalars of any type and any values, e.g. amMorphologyCleaning's
  * output or an int16 atlas; origin, spacing and direction honoured; non-whole values are an
  * error). Every label other than BackgroundLabel becomes a subdomain: CGAL meshes a compact copy
- * (background 0, the labels 1..K in increasing order; 8-bit up to 255 labels, 16-bit up to 65535)
+ * (background 0, the labels 1..K in increasing order; 8-bit up to 255 labels, 16-bit beyond; at most
+ * amInputCheck::MaximumLabels, 1000: more distinct values are a scan, refused)
  * and each region is given its own label back.
  * CGAL's Delaunay refinement meshes the map padded with one voxel of background (so the labels on
  * the image's border keep their whole voxels), starts from points on the boundary of every

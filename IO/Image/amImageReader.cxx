@@ -3,6 +3,7 @@
 #include "amHeaderText.h"
 
 #include "amITKBridge.h"
+#include "amInputCheck.h"
 #include "amMetaImageCheck.h"
 #include "amNiftiCheck.h"
 #include "amNrrdCheck.h"
@@ -66,12 +67,6 @@ bool IsDirectory(const std::string& path)
   return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-bool Exists(const std::string& path)
-{
-  struct stat st;
-  return ::stat(path.c_str(), &st) == 0;
-}
-
 std::string FirstLine(const std::string& text)
 {
   // ITK messages carry the source location first; keep the description, on one line.
@@ -79,6 +74,11 @@ std::string FirstLine(const std::string& text)
   const auto desc = t.find("Description: ");
   if (desc != std::string::npos)
     t = t.substr(desc + 13);
+  // "file.cxx:309: ITK ERROR: GDCMImageIO(0x...): what" -> "what".
+  const auto itk = t.find("ITK ERROR: ");
+  const auto prefixEnd = itk == std::string::npos ? std::string::npos : t.find("): ", itk);
+  if (prefixEnd != std::string::npos)
+    t = t.substr(prefixEnd + 3);
   std::replace(t.begin(), t.end(), '\n', ' ');
   return t;
 }
@@ -614,6 +614,23 @@ bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string
     catch (const itk::ExceptionObject& e)
     {
       error = FirstLine(e.what());
+      // The series reader does not say which slice failed: decode them one by one to name it.
+      for (std::size_t k = 0; k < files.size(); ++k)
+      {
+        auto one = itk::ImageFileReader<amITK::Image3<T>>::New();
+        one->SetImageIO(itk::GDCMImageIO::New());
+        one->SetFileName(files[k]);
+        try
+        {
+          one->Update();
+        }
+        catch (const itk::ExceptionObject& e1)
+        {
+          error = "slice " + std::to_string(k + 1) + " of " + std::to_string(files.size()) + ", '" + files[k] +
+            "', cannot be decoded: " + FirstLine(e1.what());
+          break;
+        }
+      }
     }
   });
   if (!known || !ok)
@@ -655,9 +672,10 @@ bool amImageReader::Load()
     return true;
   this->Cache = nullptr;
   this->CacheKey.clear();
-  if (!Exists(path))
+  std::string why;
+  if (!amInputCheck::ReadableFile(path, true, why))
   {
-    vtkErrorMacro("File or folder '" << path << "' does not exist.");
+    vtkErrorMacro("Cannot read the image: " << why);
     return false;
   }
   RegisterITKFactories();

@@ -183,6 +183,14 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
   {
     if (!dataName.empty())
       std::remove((folder + dataName).c_str());
+    // What ITK and its libraries say names the temporary: name the target instead.
+    const std::string& tmp = file.TemporaryPath();
+    for (auto at = error.find(tmp); at != std::string::npos; at = error.find(tmp, at + target.size()))
+      error.replace(at, tmp.size(), target);
+    const auto itk = error.find("ITK ERROR: ");
+    const auto prefixEnd = itk == std::string::npos ? std::string::npos : error.find("): ", itk);
+    if (prefixEnd != std::string::npos)
+      error.erase(itk, prefixEnd + 3 - itk);
     vtkErrorMacro("Cannot write '" << target << "': " << error);
     return 0;
   }

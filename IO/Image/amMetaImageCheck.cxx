@@ -112,8 +112,14 @@ std::string amMetaImageCheck::Check(const std::string& path, std::string& repair
       break;
     }
   }
-  if (dims.empty() || elementBytes == 0 || dataFile.empty() || dataFile == "LIST" ||
-    dataFile.find('%') != std::string::npos || dataFile.find(' ') != std::string::npos)
+  // ElementDataFile ends every MetaImage header: without it the header is cut short (MetaIO would
+  // only print "DimSize required" and ITK add a stale system error).
+  if (dataFile.empty())
+    return "its MetaImage header ends without ElementDataFile: it is cut short, or not a MetaImage header";
+  if (dims.empty())
+    return "its MetaImage header has no DimSize (the image's size)";
+  if (elementBytes == 0 || dataFile == "LIST" || dataFile.find('%') != std::string::npos ||
+    dataFile.find(' ') != std::string::npos)
     return std::string();
   long long expected = elementBytes;
   if (!amByteCount::Multiply(expected, channels) || channels < 1)

@@ -103,11 +103,24 @@ void KeepWarning(vtkObject*, unsigned long, void* clientData, void* callData)
     static_cast<std::vector<std::string>*>(clientData)->emplace_back(static_cast<const char*>(callData));
 }
 
-/// The text after VTK's "class (0x...): " prefix.
+/// The text after VTK's "ERROR: In file, line N" line and "class (0x...): " prefix, whole (its own
+/// lines and colons kept: a library's message quoted in it).
 std::string Body(const std::string& message)
 {
-  const std::size_t colon = message.rfind("): ");
-  return message.substr(colon == std::string::npos ? 0 : colon + 3);
+  std::size_t start = 0;
+  if (message.compare(0, 10, "ERROR: In ") == 0 || message.compare(0, 12, "Warning: In ") == 0)
+  {
+    const std::size_t eol = message.find('\n');
+    start = eol == std::string::npos ? 0 : eol + 1;
+  }
+  const std::size_t colon = message.find("): ", start);
+  const std::size_t eol = message.find('\n', start);
+  if (colon != std::string::npos && (eol == std::string::npos || colon < eol))
+    start = colon + 3;
+  std::string body = message.substr(start);
+  while (!body.empty() && (body.back() == '\n' || body.back() == ' '))
+    body.pop_back();
+  return body;
 }
 
 /// Executes a queued writer; an empty string, or why it failed. Its warnings are appended.
@@ -151,7 +164,9 @@ std::string WriteOne(const Job& job, int level, std::vector<std::string>& warnin
   writer->AddObserver(vtkCommand::ErrorEvent, keep);
   writer->AddObserver(vtkCommand::WarningEvent, keep);
   writer->SetInputData(job.Data);
-  writer->SetFileName(file.TemporaryPath().c_str());
+  // Into memory, then to the disk with checked system calls: VTK 9.2's XML writers free unallocated
+  // arrays when a write to a file fails part-way (a full disk, a file size limit).
+  writer->WriteToOutputStringOn();
   // Inline base64 ("binary"), not appended: Debian 12's expat (2.5.0+deb12u5, with the backported
   // reparse deferral) breaks VTK 9.2's reading of appended data beyond a few kB.
   writer->SetDataModeToBinary();
@@ -168,6 +183,8 @@ std::string WriteOne(const Job& job, int level, std::vector<std::string>& warnin
       return vtkErrorCode::GetStringFromErrorCode(code);
     return message.empty() ? "the VTK XML writer failed" : Body(message);
   }
+  if (!file.WriteTemporary(writer->GetOutputString(), why))
+    return why;
   if (!file.Commit(why))
     return why;
   return std::string();

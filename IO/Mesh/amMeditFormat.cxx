@@ -1,5 +1,7 @@
 #include "amMeditFormat.h"
 
+#include "amMessage.h"
+
 #include "amTextOutput.h"
 
 #include <algorithm>
@@ -223,6 +225,13 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
                 std::to_string(nv) + ")");
           b.Connectivity.push_back(id - 1);
         }
+        // An element naming one vertex twice has no area or volume: no solver can use it.
+        const auto first = b.Connectivity.end() - nodes;
+        for (auto a = first; a != b.Connectivity.end(); ++a)
+          if (std::find(a + 1, b.Connectivity.end(), *a) != b.Connectivity.end())
+            return t.Fail(error,
+              key + " #" + std::to_string(i + 1) + " uses vertex " + std::to_string(*a + 1) +
+                " twice: a degenerate element");
         long long ref;
         if (!t.Integer(ref, error, "an element reference"))
           return false;
@@ -247,7 +256,7 @@ bool amMeditFormat::ReadMesh(std::istream& in, Mesh& mesh, std::string& error)
       break;
     }
     else
-      return t.Fail(error, "unknown or unsupported section '" + key + "'");
+      return t.Fail(error, "unknown or unsupported section '" + amMessage::Printable(key) + "'");
   }
   if (!sawVersion)
     return t.Fail(error, "not a Medit mesh: no MeshVersionFormatted keyword");
@@ -327,7 +336,7 @@ bool amMeditFormat::ReadSolution(std::istream& in, Mesh& mesh, std::string& erro
     else if (key == "End")
       break;
     else
-      return t.Fail(error, "unknown or unsupported section '" + key + "' in a .sol file");
+      return t.Fail(error, "unknown or unsupported section '" + amMessage::Printable(key) + "' in a .sol file");
   }
   if (!sawSol)
     return t.Fail(error, "no SolAtVertices section");

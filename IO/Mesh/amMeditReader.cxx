@@ -1,5 +1,6 @@
 #include "amMeditReader.h"
 
+#include "amInputCheck.h"
 #include "amMeditFormat.h"
 #include "amProvenance.h"
 
@@ -59,6 +60,12 @@ int amMeditReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInfor
     return 0;
   }
   const std::string path(this->FileName);
+  std::string why;
+  if (!amInputCheck::ReadableFile(path, false, why))
+  {
+    vtkErrorMacro("Cannot read the Medit mesh: " << why);
+    return 0;
+  }
   std::ifstream in(path);
   if (!in)
   {

@@ -1,5 +1,6 @@
 #include "amOpenCARPReader.h"
 
+#include "amInputCheck.h"
 #include "amOpenCARPWriter.h"
 
 #include "vtkCellArray.h"
@@ -79,6 +80,12 @@ int amOpenCARPReader::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
   }
   const std::string base = amOpenCARPWriter::BaseName(this->FileName);
   std::string why;
+  for (const char* ending : { ".pts", ".elem" })
+    if (!amInputCheck::ReadableFile(base + ending, false, why))
+    {
+      vtkErrorMacro("Cannot read the openCARP mesh: " << why);
+      return 0;
+    }
   Lines pts{ std::ifstream(base + ".pts"), base + ".pts" };
   Lines elem{ std::ifstream(base + ".elem"), base + ".elem" };
   if (!pts.In || !elem.In)
@@ -147,6 +154,14 @@ int amOpenCARPReader::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
       }
       cell[a] = static_cast<vtkIdType>(ids[a]);
     }
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (cell[a] == cell[b])
+        {
+          vtkErrorMacro(
+            "Cannot read " << elem.Where() << ": node " << cell[a] << " appears twice: a degenerate tetrahedron.");
+          return 0;
+        }
     cells->InsertNextCell(4, cell);
     regions->InsertNextValue(static_cast<int>(region));
   }

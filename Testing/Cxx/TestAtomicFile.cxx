@@ -1,9 +1,12 @@
 #include "amAtomicFile.h"
 #include "amTestUtilities.h"
 
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -71,4 +74,40 @@ TEST(AtomicFile, TheNextWriterRemovesTheTemporariesOfKilledRuns)
   EXPECT_TRUE(amTest::Exists(other));
   std::remove(live.c_str());
   std::remove(other.c_str());
+}
+
+TEST(AtomicFile, CheckedWritesKeepTheOldFileUnderASizeLimit)
+{
+  const std::string target = amTest::TempPath("atomic_limit.bin");
+  {
+    std::ofstream(target) << "old";
+  }
+  // In a child process: the file size limit is the process's own.
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0)
+  {
+    signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{ 1000, 1000 };
+    setrlimit(RLIMIT_FSIZE, &limit);
+    amAtomicFile f(target);
+    std::string why;
+    const bool wrote = f.WriteTemporary(std::string(5000, 'x'), why);
+    _exit(!wrote && why == "File too large" ? 0 : 1);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  std::ifstream in(target);
+  std::string text;
+  in >> text;
+  EXPECT_EQ(text, "old");
+  // Without a limit: written, checked, committed.
+  amAtomicFile f(target);
+  std::string why;
+  ASSERT_TRUE(f.WriteTemporary(std::string(5000, 'y'), why)) << why;
+  ASSERT_TRUE(f.Commit(why)) << why;
+  struct stat st;
+  ASSERT_EQ(::stat(target.c_str(), &st), 0);
+  EXPECT_EQ(st.st_size, 5000);
 }

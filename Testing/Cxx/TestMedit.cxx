@@ -218,7 +218,7 @@ TEST(Medit, MalformedFilesNameTheLine)
   vtkNew<amMeditReader> reader;
   vtkNew<amTest::ErrorCatcher> errors;
   ReadBack(reader, "/no/such.mesh", errors);
-  EXPECT_TRUE(errors->ErrorContains("Cannot open Medit mesh '/no/such.mesh'")) << errors->AllErrors();
+  EXPECT_TRUE(errors->ErrorContains("'/no/such.mesh' does not exist")) << errors->AllErrors();
 }
 
 TEST(Medit, SolutionWithWrongCountIsRefused)

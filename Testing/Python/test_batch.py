@@ -154,8 +154,10 @@ class Batch(unittest.TestCase):
         # A case named '..' would write into the parent of --output; two rows with one output folder
         # would mix their files: both refused before anything runs.
         for rows, words in (("case,spacing\n..,10\n", "'..'"),
-                            ("case,spacing,output\na,10,%s/same\nb,10,%s/same\n" % (self.dir, self.dir),
-                             "write into one folder")):
+                            ("case,spacing,output\na,10,%s/same\n" % self.dir, "lies outside --output"),
+                            ("case,spacing,output\na,10,../same\n", "lies outside --output"),
+                            ("case,spacing,output\na,10,same\nb,10,same\n", "write into one folder"),
+                            ("case,spacing,output\na,10,same\nb,10,same/inner\n", "write into one folder")):
             with open(self.manifest, "w") as f:
                 f.write(rows)
             code, stdout, stderr = run("batch", self.pipeline, self.manifest, "--output", self.out)

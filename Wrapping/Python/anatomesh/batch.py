@@ -3,7 +3,9 @@
     anatomesh batch PIPELINE.xml MANIFEST.csv [--jobs N] [--resume] [--output DIR] [--set NAME=VALUE ...]
 
 The manifest's header names pipeline variables (and optionally ``case``, the case's name); each row is a case.
-A case's output folder is its ``output`` column, or DIR/CASE. Every case runs as its own ``anatomesh run``
+The manifest may be UTF-8 (with or without a byte-order mark) or, with its byte-order mark, UTF-16 or UTF-32.
+A case's output folder is DIR/CASE, or DIR/OUTPUT for an ``output`` column; it must lie inside DIR (no ``..``,
+no absolute path, unless ``--outputs-anywhere``) and no two cases may share one. Every case runs as its own ``anatomesh run``
 process, its progress and messages in CASE_OUTPUT/anatomesh.log, so one failing (or crashing) case never stops
 the others. ``--jobs N`` runs N cases at once. ``--resume`` skips a case whose folder holds a complete run marker
 (anatomesh-run.json, written last) for the same pipeline and variables. Under ``mpirun -n K`` (mpi4py) the ranks
@@ -17,6 +19,7 @@ the command or the manifest (named with its line), 128 + the signal's number whe
 import concurrent.futures
 import csv
 import html
+import io
 import os
 import signal
 import subprocess
@@ -24,7 +27,7 @@ import sys
 import threading
 import time
 
-from . import marker
+from . import atomic, marker
 
 
 class ManifestError(Exception):
@@ -55,9 +58,12 @@ class Stop:
 def read_manifest(path, declared):
     """Cases as (name, variables) from the CSV manifest; variables must be declared by the pipeline."""
     try:
-        with open(path, newline="") as f:
-            rows = list(csv.reader(f))
-    except (OSError, UnicodeDecodeError) as e:
+        with open(path, "rb") as f:
+            raw = f.read()
+        rows = list(csv.reader(io.StringIO(_decode(raw), newline="")))
+    except OSError as e:
+        raise ManifestError("%s: cannot read the manifest: %s" % (path, e.strerror or e))
+    except (UnicodeDecodeError, csv.Error) as e:
         raise ManifestError("%s: cannot read the manifest: %s" % (path, e))
     rows = [(n + 1, r) for n, r in enumerate(rows) if any(cell.strip() for cell in r)]
     if len(rows) < 2:
@@ -82,11 +88,46 @@ def read_manifest(path, declared):
     return cases
 
 
+def _decode(raw):
+    """The manifest's text: a byte-order mark (as spreadsheets write them) says its encoding, else UTF-8."""
+    import codecs
+    for bom, encoding in ((codecs.BOM_UTF8, "utf-8"), (codecs.BOM_UTF32_LE, "utf-32-le"),
+                          (codecs.BOM_UTF32_BE, "utf-32-be"), (codecs.BOM_UTF16_LE, "utf-16-le"),
+                          (codecs.BOM_UTF16_BE, "utf-16-be")):
+        if raw.startswith(bom):
+            return raw[len(bom):].decode(encoding)
+    return raw.decode("utf-8")
+
+
+def case_folders(work, output, anywhere=False):
+    """Each case's output folder: the manifest's 'output' (relative to --output) or --output/CASE. Every
+    folder lies inside --output unless 'anywhere' (the user's --outputs-anywhere), and no two cases share
+    one. Returns an error message, or None."""
+    root = os.path.realpath(output)
+    folders = {}
+    for name, variables in work:
+        given = variables.get("output")
+        variables["output"] = os.path.join(output, given if given else name)
+        real = os.path.realpath(variables["output"])
+        if not anywhere and real != root and not real.startswith(root + os.sep):
+            return "case %r: output %r lies outside --output %s (give --outputs-anywhere to allow it)" % (
+                name, given, output)
+        if real == root:
+            return "case %r: output %r is --output itself; each case needs a folder of its own" % (name, given)
+        inside = [other for path, other in folders.items()
+                  if path == real or path.startswith(real + os.sep) or real.startswith(path + os.sep)]
+        if inside:
+            return "cases %r and %r write into one folder, %s" % (inside[0], name, variables["output"])
+        folders[real] = name
+    return None
+
+
 def run_case(pipeline, name, variables, resume, report=False):
     """Runs one case in its own process; returns its summary row."""
     folder = variables["output"]
     row = {"case": name, "output": folder, "log": os.path.join(folder, "anatomesh.log")}
-    done = marker.read(folder) if resume else None
+    done = marker.read(folder, warn=lambda text: sys.stderr.write("anatomesh: warning: %s\n" % text)) \
+        if resume else None
     if done and done.get("status") == "complete" and done.get("pipeline") == os.path.abspath(pipeline) and all(
             done.get("variables", {}).get(k) == v for k, v in variables.items()):
         row.update(status="skipped (complete)", exit=0, seconds=done.get("seconds", 0.0),
@@ -158,19 +199,20 @@ def write_summary(folder, rows):
         table.append([row.get(h, "") for h in head] +
                      [row["figures"].get(f, {}).get(k, "") for f, k in figure_columns])
     os.makedirs(folder, exist_ok=True)
-    with open(os.path.join(folder, "batch_summary.csv"), "w", newline="") as f:
-        csv.writer(f).writerows(table)
+    text = io.StringIO()
+    csv.writer(text).writerows(table)
+    atomic.write_text(os.path.join(folder, "batch_summary.csv"), text.getvalue())
     failed = sum(1 for r in rows if r["status"] in ("failed", "interrupted"))
-    with open(os.path.join(folder, "batch_summary.html"), "w") as f:
-        f.write("<!DOCTYPE html><html><head><meta charset='utf-8'><title>Anatomesh batch</title>"
-                "<style>td,th{border:1px solid #bbb;padding:2px 6px}table{border-collapse:collapse}"
-                ".failed{background:#fdd}</style></head><body>\n")
-        f.write("<h1>Anatomesh batch: %d cases, %d failed or interrupted</h1>\n<table>\n" % (len(rows), failed))
-        f.write("<tr>" + "".join("<th>%s</th>" % html.escape(str(h)) for h in table[0]) + "</tr>\n")
-        for row, cells in zip(rows, table[1:]):
-            cls = " class='failed'" if row["status"] in ("failed", "interrupted") else ""
-            f.write("<tr%s>" % cls + "".join(_cell(h, c, folder) for h, c in zip(table[0], cells)) + "</tr>\n")
-        f.write("</table></body></html>\n")
+    page = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>Anatomesh batch</title>"
+            "<style>td,th{border:1px solid #bbb;padding:2px 6px}table{border-collapse:collapse}"
+            ".failed{background:#fdd}</style></head><body>\n",
+            "<h1>Anatomesh batch: %d cases, %d failed or interrupted</h1>\n<table>\n" % (len(rows), failed),
+            "<tr>" + "".join("<th>%s</th>" % html.escape(str(h)) for h in table[0]) + "</tr>\n"]
+    for row, cells in zip(rows, table[1:]):
+        cls = " class='failed'" if row["status"] in ("failed", "interrupted") else ""
+        page.append("<tr%s>" % cls + "".join(_cell(h, c, folder) for h, c in zip(table[0], cells)) + "</tr>\n")
+    page.append("</table></body></html>\n")
+    atomic.write_text(os.path.join(folder, "batch_summary.html"), "".join(page))
 
 
 def _cell(column, value, folder):
@@ -209,17 +251,11 @@ def main(args):
     for name, values in cases:
         variables = dict(given)
         variables.update(values)
-        variables.setdefault("output", os.path.join(args.output, name))
         work.append((name, variables))
-    # One folder per case: two cases writing into one folder at once would mix their files.
-    folders = {}
-    for name, variables in work:
-        real = os.path.realpath(variables["output"])
-        if real in folders:
-            sys.stderr.write("anatomesh: error: %s: cases %r and %r write into one folder, %s\n" % (
-                args.manifest, folders[real], name, variables["output"]))
-            return 2
-        folders[real] = name
+    problem = case_folders(work, args.output, args.outputs_anywhere)
+    if problem:
+        sys.stderr.write("anatomesh: error: %s: %s\n" % (args.manifest, problem))
+        return 2
     comm, rank, size = _mpi()
     mine = [(i, w) for i, w in enumerate(work) if i % size == rank]
     previous = {number: signal.signal(number, Stop.request) for number in (signal.SIGTERM, signal.SIGINT)}

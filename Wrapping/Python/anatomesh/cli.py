@@ -286,9 +286,10 @@ def _report(args):
     if not os.path.isdir(args.folder):
         sys.stderr.write("anatomesh: error: %s: not a folder\n" % args.folder)
         return 1
-    record = m.read(args.folder)
+    record = m.read(args.folder, warn=lambda text: sys.stderr.write("anatomesh: warning: %s\n" % text))
     if record is None:
-        sys.stderr.write("anatomesh: warning: %s has no %s: reporting on every file in it\n" % (args.folder, m.NAME))
+        sys.stderr.write("anatomesh: warning: %s has no %s%s: reporting on every file in it\n" % (
+            args.folder, "usable " if os.path.lexists(m.path(args.folder)) else "", m.NAME))
     elif record.get("status") != "complete":
         sys.stderr.write("anatomesh: warning: %s: the run did not complete (%s)\n" % (
             args.folder, record.get("error", record.get("status"))))
@@ -331,6 +332,8 @@ def main(argv=None):
     bat.add_argument("--output", metavar="DIR", default="batch",
                      help="folder of the summary, and of each case's output when the manifest has no 'output'")
     bat.add_argument("--set", action="append", metavar="NAME=VALUE", help="a variable for every case")
+    bat.add_argument("--outputs-anywhere", action="store_true",
+                     help="let the manifest's output column name folders outside --output (absolute paths, ..)")
     bat.add_argument("--report", action="store_true", help="each case writes its report.html")
     flt = sub.add_parser("filters", help="list the filter catalogue")
     flt.add_argument("--verbose", "-v", action="store_true", help="show properties")

@@ -51,12 +51,55 @@ def write_failed(folder, pipeline, variables, message):
         pass
 
 
-def read(folder):
+def read(folder, warn=None):
+    """The folder's marker, or None when it has none or it is malformed (not JSON, not an object, a field
+    of the wrong type: a marker hand-edited or written by something else). A malformed marker is then
+    'not complete', and warn (if given) is called with a message naming it."""
     try:
-        with open(path(folder)) as f:
-            return json.load(f)
-    except (OSError, ValueError):
+        with open(path(folder), "rb") as f:
+            record = json.loads(f.read().decode("utf-8"))
+    except FileNotFoundError:
         return None
+    except (OSError, ValueError) as e:
+        problem = getattr(e, "strerror", None) or str(e)
+    else:
+        problem = malformed(record)
+        if problem is None:
+            return record
+    if warn is not None:
+        warn("%s: ignored, it is malformed (%s); the case counts as not complete" % (path(folder), problem))
+    return None
+
+
+def _number(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool) and x == x and abs(x) != float("inf")
+
+
+def malformed(record):
+    """What is wrong with a marker's content, or None."""
+    if not isinstance(record, dict):
+        return "a JSON %s, not an object" % type(record).__name__
+    checks = (("status", lambda v: v in ("complete", "failed"), "'complete' or 'failed'"),
+              ("pipeline", lambda v: isinstance(v, str), "a path"),
+              ("variables", lambda v: isinstance(v, dict) and all(isinstance(x, str) for x in v.values()),
+               "an object of texts"),
+              ("seconds", _number, "a number"),
+              ("files", lambda v: isinstance(v, list) and all(isinstance(x, str) for x in v), "a list of paths"),
+              ("stage_seconds", lambda v: isinstance(v, dict) and all(_number(x) for x in v.values()),
+               "an object of numbers"),
+              ("figures", lambda v: isinstance(v, dict) and all(isinstance(x, dict) for x in v.values()),
+               "an object of objects"),
+              ("warnings", lambda v: isinstance(v, list) and all(isinstance(x, str) for x in v), "a list of texts"),
+              ("error", lambda v: isinstance(v, str), "a text"))
+    for key, good, what in checks:
+        if key in record and not good(record[key]):
+            return "%r should be %s" % (key, what)
+    for key in ("status", "pipeline", "variables"):
+        if key not in record:
+            return "no %r" % key
+    if record["status"] == "complete" and "seconds" not in record:
+        return "no 'seconds'"
+    return None
 
 
 def figures(data):

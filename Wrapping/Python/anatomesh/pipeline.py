@@ -27,7 +27,8 @@ import sys
 import time
 import xml.parsers.expat
 
-from . import catalogue
+from . import atomic, catalogue
+from . import touched as touched_files
 
 FORMAT_VERSION = "1"
 
@@ -226,6 +227,11 @@ class Pipeline:
                     where, "an integer" if conv is int else "a number", v))
             if conv is float and number != number:
                 raise self._error(line, "%s is NaN" % where)
+            if conv is float and abs(number) == float("inf"):
+                raise self._error(line, "%s must be finite, got %r" % (where, v))
+            if conv is int and not -2**31 <= number < 2**31:
+                raise self._error(line, "%s is out of an integer's range (%d to %d), got %s" % (
+                    where, -2**31, 2**31 - 1, v))
             if prop.boolean and number not in (0, 1):
                 raise self._error(line, "%s is a boolean (0 or 1), got %r" % (where, v))
             if prop.enumeration and number not in prop.enumeration.values():
@@ -308,8 +314,10 @@ class Pipeline:
         return read, written
 
     def _check_files(self):
-        """Every file the pipeline reads exists; no output may overwrite a file the pipeline reads (by path,
-        however written, or by inode), and no two outputs may go to one file."""
+        """Every file the pipeline reads exists and is a regular file (or a DICOM folder); no output may
+        overwrite a file the pipeline reads (by path, however written, or by inode), the files each reader and
+        writer touches besides its own (a detached header's data file, sidecar tables, a series' frames)
+        included; and no two outputs may go to one file."""
         def key(path):
             real = os.path.realpath(path)
             try:
@@ -320,18 +328,26 @@ class Pipeline:
 
         read, written = self._files()
         for path, line in read:  # a missing input stops the run before anything is computed or written
-            if not any(os.path.exists(path + ending) for ending in ("", ".pts")):  # .pts: openCARP's base name
-                raise self._error(line, "input file %s does not exist" % path)
-        inputs = [(path, line, key(path)) for path, line in read]
+            problem = touched_files.unreadable(path)
+            if problem:
+                raise self._error(line, "input file %s %s" % (path, problem))
+        inputs = [(t, path, line, key(t)) for path, line in read for t in touched_files.paths(path, False)]
         seen = {}
         for path, line in written:
-            real, inode = key(path)
-            for ipath, iline, (ireal, iinode) in inputs:
-                if real == ireal or (inode is not None and inode == iinode):
-                    raise self._error(line, "output %s would overwrite the input %s (line %d)" % (path, ipath, iline))
-            if real in seen:
-                raise self._error(line, "two outputs go to %s (the other at line %d)" % (path, seen[real]))
-            seen[real] = line
+            pattern = touched_files.series_pattern(path)
+            own = touched_files.paths(path, True)
+            for target in own + touched_files.sidecars(path):
+                real, inode = key(target)
+                for t, ipath, iline, (ireal, iinode) in inputs:
+                    if real == ireal or (inode is not None and inode == iinode) or (
+                            pattern and pattern.match(ireal)):
+                        raise self._error(line, "output %s would overwrite the input %s (line %d)%s" % (
+                            path, ipath, iline, "" if t == ipath else ", whose data is in %s" % t))
+                if target not in own:
+                    continue
+                if real in seen:
+                    raise self._error(line, "two outputs go to %s (the other at line %d)" % (target, seen[real]))
+                seen[real] = line
 
     # -- execution -----------------------------------------------------------------------------
     def build(self):
@@ -381,8 +397,27 @@ class Pipeline:
         """The error for a failed update of step: named after the filter that reported the first
         error (an upstream one, often), with that filter's line and type."""
         culprit = by_name.get(errors[0][0], step) if errors else step
-        return self._error(culprit.line, "filter %r (%s) failed: %s" % (
-            culprit.name, culprit.proxy.name, errors[0][1] if errors else fallback))
+        message = errors[0][1] if errors else fallback
+        # What a filter refuses in its input (a scan where a label map belongs) comes from a file: name it.
+        sources = [] if self._reads(culprit) else sorted(set(self._files_upstream(culprit, by_name)))
+        if sources and not any(f in message for f in sources):
+            message += " (input read from %s)" % ", ".join(sources)
+        return self._error(culprit.line, "filter %r (%s) failed: %s" % (culprit.name, culprit.proxy.name, message))
+
+    @staticmethod
+    def _reads(step):
+        return [values[0] for prop, values, _ in step.properties
+                if prop.kind == "string" and prop.name.endswith("FileName") and values and values[0]]
+
+    def _files_upstream(self, step, by_name, seen=None):
+        """The files the readers upstream of a step read."""
+        seen = set() if seen is None else seen
+        for _, upstream, _, _ in step.inputs:
+            if upstream in seen or upstream not in by_name:
+                continue
+            seen.add(upstream)
+            up = by_name[upstream]
+            yield from self._reads(up) or self._files_upstream(up, by_name, seen)
 
     def run(self, progress=None, log=None):
         """Build and execute; write every writer and <Output>. Returns a list of written files.
@@ -407,61 +442,69 @@ class Pipeline:
         from anatomesh import amConcurrentXMLWriter
         files = amConcurrentXMLWriter()
         collections = []
-        writers = {}  # file name: the writer step
-        for step in self.steps:
-            if not step.proxy.is_writer:
-                continue
-            algorithm = step.algorithm
-            path = algorithm.GetFileName()
-            _make_parent(path, self, step.line)
-            connection = algorithm.GetInputConnection(0, 0)
-            upstream = connection.GetProducer()
-            upstream.Update(connection.GetIndex())
-            data = upstream.GetOutputDataObject(connection.GetIndex())
-            for port in range(1, algorithm.GetNumberOfInputPorts()):  # a second input (openCARP's surfaces)
-                if algorithm.GetNumberOfInputConnections(port) == 1:
-                    extra = algorithm.GetInputConnection(port, 0)
-                    extra.GetProducer().Update(extra.GetIndex())
-            if errors or data is None:
-                raise self._failure(by_name, step, errors, "no input")
-            # No Python observer may run on the worker: the writer's time is the queue's.
-            algorithm.RemoveAllObservers()
-            algorithm.GetExecutive().RemoveAllObservers()
-            if not files.QueueWriter(algorithm, path):
-                raise self._writer_failure(writers, files)
-            writers[path] = step
-            written.append(path)
-            self.written_data[path] = data
-        for upstream, port, path, line in self.outputs:
-            step = by_name[upstream]
-            index = self._port_index(step, port, line)
-            algorithm = step.algorithm
-            algorithm.UpdateInformation()
-            algorithm.Update(index)  # returns nothing in VTK 9.2: errors come through the watcher
-            if errors or algorithm.GetOutputDataObject(index) is None:
-                raise self._failure(by_name, step, errors, "no output")
-            _make_parent(path, self, line)
-            if os.path.splitext(path)[1].lower() == ".pvd":
-                written.extend(write_time_series(algorithm, index, path,
-                                                 lambda: (errors[0][0] + ": " + errors[0][1]) if errors else None,
-                                                 watcher.clock, files, collections))
+        try:
+            writers = {}  # file name: the writer step
+            for step in self.steps:
+                if not step.proxy.is_writer:
+                    continue
+                algorithm = step.algorithm
+                path = algorithm.GetFileName()
+                _make_parent(path, self, step.line)
+                connection = algorithm.GetInputConnection(0, 0)
+                upstream = connection.GetProducer()
+                upstream.Update(connection.GetIndex())
+                data = upstream.GetOutputDataObject(connection.GetIndex())
+                for port in range(1, algorithm.GetNumberOfInputPorts()):  # a second input (openCARP's surfaces)
+                    if algorithm.GetNumberOfInputConnections(port) == 1:
+                        extra = algorithm.GetInputConnection(port, 0)
+                        extra.GetProducer().Update(extra.GetIndex())
+                if errors or data is None:
+                    raise self._failure(by_name, step, errors, "no input")
+                # No Python observer may run on the worker: the writer's time is the queue's.
+                algorithm.RemoveAllObservers()
+                algorithm.GetExecutive().RemoveAllObservers()
+                if not files.QueueWriter(algorithm, path):
+                    raise self._writer_failure(writers, files)
+                writers[path] = step
+                written.append(path)
+                self.written_data[path] = data
+            for upstream, port, path, line in self.outputs:
+                step = by_name[upstream]
+                index = self._port_index(step, port, line)
+                algorithm = step.algorithm
+                algorithm.UpdateInformation()
+                algorithm.Update(index)  # returns nothing in VTK 9.2: errors come through the watcher
+                if errors or algorithm.GetOutputDataObject(index) is None:
+                    raise self._failure(by_name, step, errors, "no output")
+                _make_parent(path, self, line)
+                if os.path.splitext(path)[1].lower() == ".pvd":
+                    def failed():
+                        return (errors[0][0] + ": " + errors[0][1]) if errors else None
+                    written.extend(write_time_series(algorithm, index, path, failed, watcher.clock, files,
+                                                     collections))
+                    self.written_data[path] = algorithm.GetOutputDataObject(index)
+                    continue
+                with watcher.clock.running(WRITING):
+                    write_vtk_xml(algorithm.GetOutputDataObject(index), path, files)
+                written.append(path)
                 self.written_data[path] = algorithm.GetOutputDataObject(index)
-                continue
             with watcher.clock.running(WRITING):
-                write_vtk_xml(algorithm.GetOutputDataObject(index), path, files)
-            written.append(path)
-            self.written_data[path] = algorithm.GetOutputDataObject(index)
-        with watcher.clock.running(WRITING):
-            finished = files.Finish()
-            for i in range(files.GetNumberOfWarnings()):
-                path, _, text = files.GetWarning(i).partition(": ")
-                step = writers.get(path)
-                watcher.warnings.append("%s: %s" % (step.name if step else path, _message_body(text)))
-                sys.stderr.write("anatomesh: warning: %s: %s\n" % (step.name if step else path, _message_body(text)))
-            if not finished:
-                raise self._writer_failure(writers, files)
-            for commit in collections:
-                commit()
+                finished = files.Finish()
+                for i in range(files.GetNumberOfWarnings()):
+                    path, _, text = files.GetWarning(i).partition(": ")
+                    step = writers.get(path)
+                    watcher.warnings.append("%s: %s" % (step.name if step else path, _message_body(text)))
+                    sys.stderr.write("anatomesh: warning: %s: %s\n" % (step.name if step else path, _message_body(text)))
+                if not finished:
+                    raise self._writer_failure(writers, files, collections)
+                for series in collections:
+                    series.commit()
+        finally:
+            # A series not committed (the run failed) leaves no staging folder; the queue is done first.
+            if collections:
+                files.Finish()
+            for series in collections:
+                series.discard()
         watcher.finish()
         return written
 
@@ -492,9 +535,12 @@ class Pipeline:
             if len(users) == 1 and users[0] is not None and not users[0].proxy.is_writer and not per_frame(users[0]):
                 by_name[upstream].algorithm.GetExecutive().SetReleaseDataFlag(index, 1)
 
-    def _writer_failure(self, writers, files):
-        """The queue's first failure: named after its writer step when a writer failed."""
+    def _writer_failure(self, writers, files, collections=()):
+        """The queue's first failure: named after its writer step when a writer failed (a series' frame by
+        its final path)."""
         message = files.GetErrorMessage()
+        for series in collections:
+            message = series.named(message)
         path, _, why = message.partition(": ")
         step = writers.get(path)
         if step is None:
@@ -517,7 +563,7 @@ class _Watcher:
         algorithm.AddObserver("StartEvent", lambda obj, event: self.clock.start(name))
         algorithm.AddObserver("EndEvent", lambda obj, event: self.clock.stop(name))
         def error_cb(obj, event, data=None):
-            message = str(data) if data is not None else "error"
+            message = str(data) if data is not None else "(its message is not valid text)"
             self.errors.append((name, _message_body(message) or message))
 
         error_cb.CallDataType = "string0"
@@ -547,8 +593,16 @@ class _Watcher:
 
 def _message_body(message):
     """VTK's text "ERROR: In file, line N\\nclass (0x..): message" as its message alone."""
-    text = message.strip().splitlines()
-    return re.sub(r"^\w+ \(0x[0-9a-f]+\): ", "", text[-1] if text else "").strip()
+    lines = message.strip().splitlines()
+    # The message is everything after the "class (0x...): " prefix, its own lines included (a DICOM
+    # folder's list of series).
+    for i, line in enumerate(lines):
+        m = re.match(r"^\w+ \(0x[0-9a-f]+\): ", line)
+        if m:
+            return "\n".join([line[m.end():]] + lines[i + 1:]).strip()
+    if lines and re.match(r"^(ERROR|Warning): In .*, line \d+$", lines[0]):
+        lines = lines[1:]
+    return "\n".join(lines).strip()
 
 
 class StageClock:
@@ -606,19 +660,13 @@ def _write_csv(table, path):
     """A vtkTable as comma-separated values with a header row, written atomically."""
     if table is None or not table.IsA("vtkTable"):
         raise PipelineError("%s: .csv takes a table, got %s" % (path, table.GetClassName() if table else "nothing"))
-    folder, base = os.path.split(os.path.abspath(path))
-    tmp = temporary_path(folder, os.path.splitext(base)[0], ".csv")
     columns = [table.GetColumn(c) for c in range(table.GetNumberOfColumns())]
-    try:
-        with open(tmp, "w") as f:
+    with atomic.replacing(path) as tmp:
+        with open(tmp, "w", encoding="utf-8") as f:
             f.write(",".join(c.GetName() for c in columns) + "\n")
             for r in range(table.GetNumberOfRows()):
                 f.write(",".join("%.10g" % c.GetTuple1(r) if c.IsNumeric() else str(c.GetValue(r))
                                  for c in columns) + "\n")
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
 
 
 def _finish(files):
@@ -627,12 +675,55 @@ def _finish(files):
         raise PipelineError(files.GetErrorMessage())
 
 
+class _Series:
+    """A time series' frames, written into a staging folder beside the .pvd (.STEM.tmpPID.frames) and
+    moved into place with the .pvd written last by commit(): a failed run leaves the old series (frames and
+    .pvd) as it was. discard() removes the staging folder of a series not committed."""
+
+    def __init__(self, folder, stem, path):
+        import shutil
+        pattern = re.compile(r"^\.%s\.tmp(\d+)\.frames$" % re.escape(stem))
+        for name in os.listdir(folder):  # what a killed run left
+            m = pattern.match(name)
+            if m and int(m.group(1)) != os.getpid() and not atomic._alive(int(m.group(1))):
+                shutil.rmtree(os.path.join(folder, name), ignore_errors=True)
+        self.folder, self.path, self.names, self.text = folder, path, [], None
+        self.staging = os.path.join(folder, ".%s.tmp%d.frames" % (stem, os.getpid()))
+        shutil.rmtree(self.staging, ignore_errors=True)
+        try:
+            os.mkdir(self.staging)
+        except OSError as e:
+            raise OSError(e.errno, e.strerror, path) from None
+
+    def named(self, message):
+        """A message about a staged frame, naming the series and the frame."""
+        prefix = self.staging + os.sep
+        if message.startswith(prefix):
+            frame, _, why = message[len(prefix):].partition(": ")
+            return "%s: frame %s: %s" % (self.path, frame, why)
+        return message.replace(prefix, self.folder + os.sep)
+
+    def commit(self):
+        try:
+            for name in self.names:
+                os.replace(os.path.join(self.staging, name), os.path.join(self.folder, name))
+        except OSError as e:
+            raise OSError(e.errno, e.strerror, self.path) from None
+        atomic.write_text(self.path, self.text)
+        self.discard()
+
+    def discard(self):
+        import shutil
+        shutil.rmtree(self.staging, ignore_errors=True)
+
+
 def write_time_series(algorithm, port, path, error=lambda: None, clock=None, files=None, collections=None):
     """Write every time step an algorithm's output port advertises as NAME_NNNN.vtu (or .vtp/.vti)
-    beside a ParaView collection NAME.pvd; without time steps, one file. The .pvd is written last,
-    so a failed run never leaves a collection naming missing files. Returns the paths written.
-    With 'files' (an amConcurrentXMLWriter) the frames are queued there, and the .pvd is written
-    by a function appended to 'collections', to call once the queue is finished."""
+    beside a ParaView collection NAME.pvd; without time steps, one file. The frames are staged and moved
+    into place with the .pvd written last (see _Series), so a failed run never leaves a collection naming
+    missing files, nor new frames under an old collection. Returns the paths written.
+    With 'files' (an amConcurrentXMLWriter) the frames are queued there, and the series (a _Series) is
+    appended to 'collections', to commit once the queue is finished (or discard after a failure)."""
     from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
     algorithm.UpdateInformation()
     info = algorithm.GetOutputInformation(port)
@@ -641,37 +732,39 @@ def write_time_series(algorithm, port, path, error=lambda: None, clock=None, fil
     stem = os.path.splitext(os.path.basename(path))[0]
     exts = {"vtkUnstructuredGrid": ".vtu", "vtkPolyData": ".vtp", "vtkImageData": ".vti"}
     entries, written = [], []
-    for k, t in enumerate(times):
-        if t is None:
-            algorithm.Update(port)
-        else:
-            algorithm.UpdateTimeStep(t)
-        data = algorithm.GetOutputDataObject(port)
-        message = error()
-        if message or data is None:
-            raise PipelineError("%s: time step %s failed: %s" % (path, t, message or "no output"))
-        ext = exts.get(data.GetClassName())
-        if ext is None:
-            raise PipelineError("%s: cannot write a %s as a time series" % (path, data.GetClassName()))
-        name = "%s_%04d%s" % (stem, k, ext)
-        with (clock or StageClock()).running(WRITING):
-            write_vtk_xml(data, os.path.join(folder, name), files)
-        written.append(os.path.join(folder, name))
-        entries.append('    <DataSet timestep="%r" part="0" file="%s"/>' % (0.0 if t is None else t, name))
-    text = ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n'
-            + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n")
-
-    def commit():
-        tmp = temporary_path(folder, stem, ".pvd")
-        with open(tmp, "w") as f:
-            f.write(text)
-        os.replace(tmp, path)
-
-    written.append(path)
-    if files is None:
-        commit()
-    else:
-        collections.append(commit)
+    series = _Series(folder, stem, path)
+    if collections is not None:
+        collections.append(series)
+    try:
+        for k, t in enumerate(times):
+            if t is None:
+                algorithm.Update(port)
+            else:
+                algorithm.UpdateTimeStep(t)
+            data = algorithm.GetOutputDataObject(port)
+            message = error()
+            if message or data is None:
+                raise PipelineError("%s: time step %s failed: %s" % (path, t, message or "no output"))
+            ext = exts.get(data.GetClassName())
+            if ext is None:
+                raise PipelineError("%s: cannot write a %s as a time series" % (path, data.GetClassName()))
+            name = "%s_%04d%s" % (stem, k, ext)
+            with (clock or StageClock()).running(WRITING):
+                try:
+                    write_vtk_xml(data, os.path.join(series.staging, name), files)
+                except PipelineError as e:
+                    raise PipelineError(series.named(str(e))) from None
+            series.names.append(name)
+            written.append(os.path.join(folder, name))
+            entries.append('    <DataSet timestep="%r" part="0" file="%s"/>' % (0.0 if t is None else t, name))
+        series.text = ('<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n  <Collection>\n'
+                       + "\n".join(entries) + "\n  </Collection>\n</VTKFile>\n")
+        written.append(path)
+        if files is None:
+            series.commit()
+    finally:
+        if files is None:
+            series.discard()
     return written
 
 
@@ -707,34 +800,6 @@ def _plain_field_data(data):
     return copy
 
 
-def temporary_path(folder, stem, ext):
-    """A temporary file name beside the target (".STEM.tmpPID EXT"), after removing those a killed run of
-    another process left for the same target (their process is gone)."""
-    pattern = re.compile(r"^\.%s\.tmp(\d+)(_\d+)?%s$" % (re.escape(stem), re.escape(ext)))
-    try:
-        names = os.listdir(folder or ".")
-    except OSError:
-        names = []
-    for name in names:
-        m = pattern.match(name)
-        if m and int(m.group(1)) != os.getpid() and not _alive(int(m.group(1))):
-            try:
-                os.remove(os.path.join(folder, name))
-            except OSError:
-                pass
-    return os.path.join(folder, ".%s.tmp%d%s" % (stem, os.getpid(), ext))
-
-
-def _alive(pid):
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
-
-
 def write_vtk_xml(data, path, files=None):
     """Write a data object to a VTK XML file (.vti, .vtp, .vtu, .vtm), or a table to .csv, atomically.
     A .vti, .vtp or .vtu goes through amConcurrentXMLWriter (its format settings are the project's
@@ -762,19 +827,39 @@ def write_vtk_xml(data, path, files=None):
         return
     from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
     writer = vtkXMLMultiBlockDataWriter()
-    folder, base = os.path.split(os.path.abspath(path))
-    tmp = temporary_path(folder, os.path.splitext(base)[0], ext)
-    writer.SetFileName(tmp)
-    writer.SetInputData(data)
     # As amConcurrentXMLWriter writes: inline base64 (Debian 12's expat breaks VTK 9.2's reading of
     # appended data), zlib's fastest level.
     writer.SetDataModeToBinary()
     writer.SetCompressorTypeToZLib()
     writer.SetCompressionLevel(1)
+    writer.SetInputData(data)
+    _write_multiblock(writer, path)
+
+
+def _write_multiblock(writer, path):
+    """VTK writes a .vtm's blocks into a folder named after it, which the .vtm names: both are written in a
+    temporary folder beside the target, then the blocks' folder and the .vtm are moved into place."""
+    import shutil
+    import tempfile
+    folder, base = os.path.split(os.path.abspath(path))
+    stem = os.path.splitext(base)[0]
     try:
-        if not writer.Write() or writer.GetErrorCode() or not os.path.exists(tmp):
-            raise PipelineError("%s: the VTK XML writer failed (is %s a %s?)" % (path, data.GetClassName(), ext))
-        os.replace(tmp, path)
+        work = tempfile.mkdtemp(prefix=".%s.tmp%d_" % (stem, os.getpid()), dir=folder)
+    except OSError as e:
+        raise OSError(e.errno, e.strerror, path) from None
+    try:
+        writer.SetFileName(os.path.join(work, base))
+        if not writer.Write() or writer.GetErrorCode() or not os.path.exists(os.path.join(work, base)):
+            raise PipelineError("%s: the VTK XML writer failed (a full disk, or no %s data)" % (
+                path, writer.GetInput().GetClassName()))
+        blocks, target = os.path.join(work, stem), os.path.join(folder, stem)
+        if os.path.isdir(blocks):
+            if os.path.isdir(target):
+                os.rename(target, os.path.join(work, "old"))
+            os.rename(blocks, target)
+        with atomic.replacing(path) as tmp:
+            os.rename(os.path.join(work, base), tmp)
+    except OSError as e:
+        raise OSError(e.errno, e.strerror, path) from None
     finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+        shutil.rmtree(work, ignore_errors=True)

@@ -7,20 +7,19 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+from .. import atomic  # noqa: E402
+
 # The clinical layout: columns I-III, aVR-aVF, V1-V3, V4-V6.
 LAYOUT = [["I", "aVR", "V1", "V4"], ["II", "aVL", "V2", "V5"], ["III", "aVF", "V3", "V6"]]
 
 
 def _save(fig, path):
     """Saved under a temporary name and renamed: a failed write leaves no partial picture."""
-    tmp = path + ".tmp%d.png" % os.getpid()
     try:
-        fig.savefig(tmp, dpi=100)
-        os.replace(tmp, path)
+        with atomic.replacing(path) as tmp:
+            fig.savefig(tmp, dpi=100, format="png")
     finally:
         plt.close(fig)
-        if os.path.exists(tmp):
-            os.remove(tmp)
 
 
 def quality_histogram(quality, path, bar=10.0):

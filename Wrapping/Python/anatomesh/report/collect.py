@@ -37,8 +37,14 @@ def series(pvd):
     """A .pvd's frames: (time, absolute path), in time order."""
     root = ET.parse(pvd).getroot()
     folder = os.path.dirname(pvd)
-    frames = [(float(d.get("timestep", "0")), os.path.join(folder, d.get("file")))
-              for d in root.iter("DataSet") if d.get("file")]
+    frames = []
+    for d in root.iter("DataSet"):
+        if d.get("file"):
+            try:
+                t = float(d.get("timestep", "0"))
+            except ValueError:
+                raise ValueError("timestep %r is not a number" % d.get("timestep")) from None
+            frames.append((t, os.path.join(folder, d.get("file"))))
     return sorted(frames)
 
 
@@ -74,7 +80,7 @@ def find(folder):
     for pvd in (p for p in files if p.endswith(".pvd")):
         try:
             frames = series(pvd)
-        except (ET.ParseError, OSError) as e:
+        except (ET.ParseError, OSError, ValueError) as e:
             found["unreadable"].append("%s cannot be read: %s" % (pvd, e))
             continue
         framed.update(f for _, f in frames)

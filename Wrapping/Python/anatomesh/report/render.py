@@ -1,4 +1,5 @@
 """One off-screen VTK view saved as a PNG: props, a title, an optional colour legend, a camera."""
+import errno
 import os
 
 import vtkmodules.vtkRenderingFreeType  # noqa: F401  (text)
@@ -8,6 +9,7 @@ from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkCommonCore import vtkPoints, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkRenderingAnnotation import vtkLegendBoxActor, vtkScalarBarActor
+from .. import atomic
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkDataSetMapper, vtkRenderWindow, vtkRenderer, vtkTextActor,
                                          vtkWindowToImageFilter)
 
@@ -123,16 +125,11 @@ def save_png(path, props, title, view=(0.0, -1.0, 0.0), up=(0.0, 0.0, 1.0), zoom
     grab.SetInput(window)
     grab.ReadFrontBufferOff()
     grab.Update()
-    tmp = path + ".tmp%d.png" % os.getpid()
     writer = vtkPNGWriter()
     writer.SetInputData(grab.GetOutput())
-    writer.SetFileName(tmp)
-    writer.Write()
     window.Finalize()
-    try:
+    with atomic.replacing(path) as tmp:
+        writer.SetFileName(tmp)
+        writer.Write()
         if writer.GetErrorCode() != 0 or not os.path.isfile(tmp) or os.path.getsize(tmp) == 0:
-            raise OSError(writer.GetErrorCode(), "could not write the picture", path)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+            raise OSError(errno.EIO, "could not write the picture (a full disk?)", path)
