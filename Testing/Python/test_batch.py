@@ -85,6 +85,11 @@ class Batch(unittest.TestCase):
             self.assertEqual(json.load(f)["status"], "failed")
         html = open(os.path.join(self.out, "batch_summary.html")).read()
         self.assertIn("3 cases, 1 failed", html)
+        # Every manifest variable, counts as integers, each case's folder and log linked.
+        self.assertEqual((rows["coarse"]["spacing"], rows["broken"]["noise"]), ("10", "-5"))
+        self.assertRegex(rows["fine"]["quality.csv: tetrahedra"], r"^\d+$")
+        self.assertIn("<a href='coarse'>coarse</a>", html)
+        self.assertIn("<a href='fine/anatomesh.log'>", html)
 
         # Resume: complete cases are skipped, the failed one runs again (and fails again); with --report the
         # skipped cases get their report, linked from the summary.

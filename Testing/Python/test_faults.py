@@ -35,11 +35,17 @@ WRITING = """
     <Property name="FileName" value="${output}/ct.nii.gz"/></Filter>
   <Filter name="wm" type="MeditWriter"><Input from="t"/><Property name="FileName" value="${output}/mesh.mesh"/></Filter>
   <Filter name="wg" type="GmshWriter"><Input from="t"/><Property name="FileName" value="${output}/mesh.msh"/></Filter>
+  <Filter name="wx" type="XdmfWriter"><Input from="t"/><Property name="FileName" value="${output}/mesh.xdmf"/></Filter>
+  <Filter name="wc" type="OpenCARPWriter"><Input from="t"/><Property name="FileName" value="${output}/mesh.pts"/>
+  </Filter>
+  <Filter name="wa" type="ImageWriter"><Input from="p" port="Labels"/>
+    <Property name="FileName" value="${output}/labels.mha"/></Filter>
   <Output from="q" port="Mesh" file="${output}/mesh.vtu"/>
   <Output from="q" port="Table" file="${output}/quality.csv"/>
 </AnatomeshPipeline>
 """
-TARGETS = ("ct.nii.gz", "mesh.mesh", "mesh.msh", "mesh.vtu", "quality.csv")
+TARGETS = ("ct.nii.gz", "labels.mha", "mesh.mesh", "mesh.msh", "mesh.xdmf", "mesh_facets.xdmf", "mesh.pts",
+           "mesh.elem", "mesh.vtu", "quality.csv")
 
 # A quick case for the batch: the phantom's labels at 10 mm.
 SMALL = """

@@ -701,6 +701,31 @@ class PipelineErrors(unittest.TestCase):
         self.assertIn("--set names variables the pipeline does not declare: bogus", stderr)
         self.assertNotIn("Traceback", stderr)
 
+    def test_defaults_that_follow_other_variables(self):
+        # $(...) computes a default from the variables above it; --set replaces it, and what follows it.
+        from anatomesh.pipeline import Pipeline
+        path = pipeline_file("arithmetic.xml", """
+            <AnatomeshPipeline version="1">
+              <Variable name="spacing" default="1"/>
+              <Variable name="tolerance" default="$(0.5 * ${spacing})"/>
+              <Variable name="deviation" default="$(0.5 * ${tolerance})"/>
+              <Variable name="size" default="$(max(4, 4 * ${spacing}) - (1 - 1))"/>
+            </AnatomeshPipeline>""")
+        self.assertEqual({k: Pipeline(path).variables[k] for k in ("tolerance", "deviation", "size")},
+                         {"tolerance": "0.5", "deviation": "0.25", "size": "4"})
+        given = Pipeline(path, {"spacing": "3"}).variables
+        self.assertEqual((given["tolerance"], given["deviation"], given["size"]), ("1.5", "0.75", "12"))
+        self.assertEqual(Pipeline(path, {"spacing": "3", "tolerance": "2"}).variables["deviation"], "1")
+        # The main job's sizes follow its spacing unless set.
+        job = Pipeline(os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"), {"spacing": "3"}).variables
+        self.assertEqual((job["tolerance"], job["deviation"], job["size"]), ("1.5", "0.75", "12"))
+        for text, words in (("$(2 ** 8)", "only numbers"), ("$(1 / 0)", "division by zero"),
+                            ("$(__import__('os'))", "only numbers"), ("$(1 +)", "cannot compute")):
+            self.expect_error("arithmetic_bad.xml", """
+                <AnatomeshPipeline version="1">
+                  <Variable name="x" default="%s"/>
+                </AnatomeshPipeline>""" % text, ":2: cannot compute", words)
+
     def test_version(self):
         code, stdout, _ = run("--version")
         self.assertEqual(code, 0)

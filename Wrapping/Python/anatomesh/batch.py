@@ -125,7 +125,8 @@ def case_folders(work, output, anywhere=False):
 def run_case(pipeline, name, variables, resume, report=False):
     """Runs one case in its own process; returns its summary row."""
     folder = variables["output"]
-    row = {"case": name, "output": folder, "log": os.path.join(folder, "anatomesh.log")}
+    row = {"case": name, "output": folder, "log": os.path.join(folder, "anatomesh.log"),
+           "variables": {k: v for k, v in variables.items() if k != "output"}}
     done = marker.read(folder, warn=lambda text: sys.stderr.write("anatomesh: warning: %s\n" % text)) \
         if resume else None
     if done and done.get("status") == "complete" and done.get("pipeline") == os.path.abspath(pipeline) and all(
@@ -192,12 +193,16 @@ def write_summary(folder, rows):
             for key in values:
                 if (file, key) not in figure_columns:
                     figure_columns.append((file, key))
-    head = ["case", "status", "exit", "seconds", "output", "log", "error"] + (
+    variables = []  # every variable a case was run with, in the manifest's order
+    for row in rows:
+        variables += [k for k in row.get("variables", {}) if k not in variables]
+    head = ["case"] + variables + ["status", "exit", "seconds", "output", "log", "error"] + (
         ["report"] if any("report" in r for r in rows) else [])
     table = [head + ["%s: %s" % c for c in figure_columns]]
     for row in rows:
-        table.append([row.get(h, "") for h in head] +
-                     [row["figures"].get(f, {}).get(k, "") for f, k in figure_columns])
+        cells = dict(row, **row.get("variables", {}))
+        table.append([cells.get(h, "") for h in head] +
+                     [_plain(row["figures"].get(f, {}).get(k, "")) for f, k in figure_columns])
     os.makedirs(folder, exist_ok=True)
     text = io.StringIO()
     csv.writer(text).writerows(table)
@@ -215,11 +220,18 @@ def write_summary(folder, rows):
     atomic.write_text(os.path.join(folder, "batch_summary.html"), "".join(page))
 
 
+def _plain(value):
+    """A figure as it reads: a count as an integer (939123, not 939123.0)."""
+    return int(value) if isinstance(value, float) and value.is_integer() and abs(value) < 2**53 else value
+
+
 def _cell(column, value, folder):
-    """A summary cell; a case's report is a link (relative to the summary, so the folder can move)."""
-    if column == "report" and value:
+    """A summary cell; a case's report, folder and log are links (relative to the summary, so the folder can
+    move)."""
+    if column in ("report", "output", "log") and value:
         target = os.path.relpath(value, folder)
-        return "<td><a href='%s'>report</a></td>" % html.escape(target, quote=True)
+        text = "report" if column == "report" else target
+        return "<td><a href='%s'>%s</a></td>" % (html.escape(target, quote=True), html.escape(text))
     return "<td>%s</td>" % html.escape(str(value))
 
 

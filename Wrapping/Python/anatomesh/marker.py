@@ -102,6 +102,12 @@ def malformed(record):
     return None
 
 
+def _figure(value):
+    """A figure rounded to 4 decimals; a whole number (a count) as an integer."""
+    x = round(float(value), 4)
+    return int(x) if x.is_integer() and abs(x) < 2**53 else x
+
+
 def figures(data):
     """Key figures of a run's outputs: each label map's volumes (cm3), the surface's Hausdorff distance, the
     mesh quality table's whole-mesh row, the smallest Dice, the ECG's QRS, QT and T polarities."""
@@ -129,7 +135,7 @@ def figures(data):
             if "MeanQuality" in columns and "Region" in columns:
                 for r in range(obj.GetNumberOfRows()):
                     if columns["Region"].GetValue(r) == -1:
-                        out[name] = {k: round(float(columns[c].GetValue(r)), 4) for k, c in (
+                        out[name] = {k: _figure(columns[c].GetValue(r)) for k, c in (
                             ("tetrahedra", "ne"), ("mean Q", "MeanQuality"), ("worst Q", "MaximumQuality"),
                             ("smallest dihedral", "MinimumDihedralAngle"))}
             elif "TPolarity" in columns and "Lead" in columns:

@@ -109,7 +109,39 @@ class Pipeline:
                 raise self._error(line, "unknown variable ${%s} (defined: %s)" % (
                     name, ", ".join(sorted(self.variables)) or "none"))
             return self.variables[name]
-        return re.sub(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}", repl, text)
+        text = re.sub(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}", repl, text)
+        return re.sub(r"\$\(([^()]*(?:\([^()]*\)[^()]*)*)\)", lambda m: self._arithmetic(m.group(1), line), text)
+
+    def _arithmetic(self, expression, line):
+        """$(EXPRESSION): numbers, + - * /, parentheses, min() and max(), after the variables are expanded
+        ("$(0.5 * ${spacing})"), so that defaults follow each other. The value as the shortest text that reads
+        back to it."""
+        import ast
+        import operator
+        ops = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
+               ast.USub: operator.neg, ast.UAdd: operator.pos}
+
+        def value(node):
+            if isinstance(node, ast.Expression):
+                return value(node.body)
+            if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) \
+                    and not isinstance(node.value, bool):
+                return node.value
+            if isinstance(node, ast.BinOp) and type(node.op) in ops:
+                return ops[type(node.op)](value(node.left), value(node.right))
+            if isinstance(node, ast.UnaryOp) and type(node.op) in ops:
+                return ops[type(node.op)](value(node.operand))
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in ("min", "max") \
+                    and node.args and not node.keywords:
+                return {"min": min, "max": max}[node.func.id](value(a) for a in node.args)
+            raise ValueError("only numbers, + - * /, parentheses, min() and max()")
+        try:
+            result = value(ast.parse(expression.strip(), mode="eval"))
+        except (SyntaxError, ValueError, ZeroDivisionError, OverflowError) as e:
+            raise self._error(line, "cannot compute $(%s): %s" % (expression, e)) from None
+        if isinstance(result, float) and result.is_integer() and abs(result) < 2**53:
+            result = int(result)
+        return repr(result)
 
     def _parse(self):
         root = _parse_xml(self.path)
