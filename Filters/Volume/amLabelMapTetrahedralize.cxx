@@ -493,7 +493,8 @@ int amLabelMapTetrahedralize::RequestData(
 
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   // Every point in a tetrahedron, and the element bars checked whatever the parameters.
-  const std::string barWarning = amQualityBars::Finish(output, interfaces, this->NumberOfSlivers);
+  const std::string barWarning = amQualityBars::Finish(output, interfaces, this->NumberOfSlivers,
+    "Smaller FacetSize, FacetDistance or CellSize, or a larger MaximumSurfaceDeviation, frees them.");
   if (!barWarning.empty())
     vtkWarningMacro(<< barWarning);
   std::ostringstream params;

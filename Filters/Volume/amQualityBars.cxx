@@ -43,17 +43,18 @@ amQualityBars::Result amQualityBars::Check(vtkUnstructuredGrid* mesh, double max
   return r;
 }
 
-std::string amQualityBars::Finish(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, vtkIdType& poor)
+std::string amQualityBars::Finish(
+  vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, vtkIdType& poor, const std::string& remedy)
 {
   // Every point in a tetrahedron: solvers that assemble over all points need it.
   amUnusedPoints::Remove(mesh, interfaces);
   const Result bars = Check(mesh);
   poor = bars.Poor;
-  return Warning(mesh, bars);
+  return Warning(mesh, bars, remedy);
 }
 
 std::string amQualityBars::Warning(
-  vtkUnstructuredGrid* mesh, const Result& r, double maximumQuality, double minimumDihedral)
+  vtkUnstructuredGrid* mesh, const Result& r, const std::string& remedy, double maximumQuality, double minimumDihedral)
 {
   if (r.AboveQuality == 0 && r.BelowDihedral == 0)
     return "";
@@ -78,6 +79,6 @@ std::string amQualityBars::Warning(
     if (vtkDataArray* regions = mesh->GetCellData()->GetArray("Region"))
       text << " in region " << regions->GetComponent(r.WorstCell, 0);
   }
-  text << ". A finer surface (smaller TargetSize or Tolerance) or a larger MaximumSurfaceDeviation frees them.";
+  text << ". " << remedy;
   return text.str();
 }

@@ -33,14 +33,14 @@ struct Result
 Result Check(vtkUnstructuredGrid* mesh, double maximumQuality = 10.0, double minimumDihedral = 10.0);
 
 /// The tetrahedralizers' last step: the points no tetrahedron uses removed (amUnusedPoints), the
-/// bars checked; returns the warning ("" when the bars hold) and sets 'poor' to the elements that
-/// miss them.
-std::string Finish(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, vtkIdType& poor);
+/// bars checked; returns the warning ("" when the bars hold), ending with 'remedy' (the calling
+/// filter's properties that free such elements), and sets 'poor' to the elements that miss them.
+std::string Finish(vtkUnstructuredGrid* mesh, vtkPolyData* interfaces, vtkIdType& poor, const std::string& remedy);
 
 /// The warning for a result that misses a bar ("" when both hold), naming the worst element's
-/// centroid and region.
-std::string Warning(
-  vtkUnstructuredGrid* mesh, const Result& result, double maximumQuality = 10.0, double minimumDihedral = 10.0);
+/// centroid and region, then 'remedy'.
+std::string Warning(vtkUnstructuredGrid* mesh, const Result& result, const std::string& remedy,
+  double maximumQuality = 10.0, double minimumDihedral = 10.0);
 }
 
 #endif

@@ -369,7 +369,8 @@ int amTetrahedralize::RequestData(
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
   // Every point in a tetrahedron, and the element bars checked whatever the parameters.
-  const std::string barWarning = amQualityBars::Finish(output, interfaces, this->NumberOfSlivers);
+  const std::string barWarning = amQualityBars::Finish(output, interfaces, this->NumberOfSlivers,
+    "A finer surface (a smaller TargetSize or Tolerance upstream) or a larger MaximumSurfaceDeviation frees them.");
   if (!barWarning.empty())
     vtkWarningMacro(<< barWarning);
   std::ostringstream params;

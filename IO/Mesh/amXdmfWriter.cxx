@@ -1,6 +1,6 @@
 #include "amXdmfWriter.h"
 
-#include "amTextOutput.h"
+#include "amXdmfGrid.h"
 
 #include "amAtomicFile.h"
 #include "amTetraFaces.h"
@@ -19,7 +19,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -29,6 +28,7 @@ vtkStandardNewMacro(amXdmfWriter);
 amXdmfWriter::amXdmfWriter()
   : FileName(nullptr)
   , RegionArrayName(nullptr)
+  , HeavyDataFormat(HDF5)
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(0);
@@ -61,6 +61,13 @@ int amXdmfWriter::Write()
   this->Modified();
   this->Update();
   return this->LastWriteOk ? 1 : 0;
+}
+
+std::string amXdmfWriter::HeavyDataFileName(const std::string& path)
+{
+  const std::string ending = ".xdmf";
+  const bool has = path.size() > ending.size() && path.compare(path.size() - ending.size(), ending.size(), ending) == 0;
+  return (has ? path.substr(0, path.size() - ending.size()) : path) + ".h5";
 }
 
 std::string amXdmfWriter::FacetsFileName(const std::string& path)
@@ -150,97 +157,80 @@ int amXdmfWriter::WriteData(vtkDataObject* data)
   }
 
   // Two files, each one grid (as meshio and FEniCSx's XDMFFile read them): the mesh with its cell
-  // tags, and the facets with theirs.
+  // tags, and the facets with theirs, on the same points.
+  std::vector<double> geometry;
+  geometry.reserve(3 * static_cast<std::size_t>(used));
+  for (vtkIdType i = 0; i < np; ++i)
+    if (number[i] >= 0)
+      geometry.insert(geometry.end(), &xyz[3 * i], &xyz[3 * i] + 3);
+  amXdmfGrid mesh;
+  mesh.Name = "mesh";
+  mesh.TopologyType = "Tetrahedron";
+  mesh.NodesPerElement = 4;
+  mesh.Geometry = &geometry;
+  mesh.TagNames = tagNames;
+  mesh.Topology.reserve(4 * tets.size());
+  for (const auto& t : tets)
+    for (int a = 0; a < 4; ++a)
+      mesh.Topology.push_back(number[t[a]]);
+  mesh.Attributes.push_back({ "cell_tags", 1, std::vector<std::int64_t>(labels.begin(), labels.end()), {} });
+  // The fibres and sheets where the mesh has them (Ventricular Fibres), after the tags: FEniCSx's
+  // read_meshtags takes a grid's first attribute.
+  for (const char* name : { "Fibers", "Sheets" })
+  {
+    vtkDataArray* vectors = grid->GetCellData()->GetArray(name);
+    if (!vectors || vectors->GetNumberOfComponents() != 3)
+      continue;
+    amXdmfGrid::Attribute a{ name, 3, {}, std::vector<double>(3 * static_cast<std::size_t>(nc)) };
+    for (vtkIdType c = 0; c < nc; ++c)
+      vectors->GetTuple(c, &a.Reals[3 * c]);
+    mesh.Attributes.push_back(std::move(a));
+  }
+  amXdmfGrid facets;
+  facets.Name = "facet_tags";
+  facets.TopologyType = "Triangle";
+  facets.NodesPerElement = 3;
+  facets.Geometry = &geometry;
+  facets.TagNames = tagNames;
+  amXdmfGrid::Attribute facetTags{ "facet_tags", 1, {}, {} };
+  for (const auto& f : faces)
+  {
+    for (int a = 0; a < 3; ++a)
+      facets.Topology.push_back(number[f.Points[a]]);
+    facetTags.Integers.push_back(1000LL * f.First + (f.Second == amTetraFaces::Outside() ? 0 : f.Second));
+  }
+  facets.Attributes.push_back(std::move(facetTags));
+
   const std::string facetsTarget = FacetsFileName(target);
-  amAtomicFile meshFile(target), facetsFile(facetsTarget);
+  const bool hdf5 = this->HeavyDataFormat == HDF5;
+  amAtomicFile meshFile(target), facetsFile(facetsTarget), meshData(HeavyDataFileName(target)),
+    facetsData(HeavyDataFileName(facetsTarget));
   std::string why;
   if (!meshFile.CanWrite(why) || !facetsFile.CanWrite(why))
   {
     vtkErrorMacro("Cannot write '" << target << "': " << why << ".");
     return 0;
   }
-  auto head = [&](amTextOutput& out, const char* grid, const char* topologyType, std::size_t count, int per) {
-    out << "<?xml version=\"1.0\"?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-        << "<!-- Anatomesh: lengths in mm, patient frame LPS; tags: regions, 1000 x higher + lower per interface "
-           "(0: outside) -->\n"
-        << "<Xdmf Version=\"3.0\">\n  <Domain>\n    <Grid Name=\"" << grid << "\" GridType=\"Uniform\">\n";
-    // The tags' names, as meshio reads field data (and Gmsh's physical names give them).
-    out << "      <Information Name=\"Information\" Value=\"" << tagNames.size() << "\"><![CDATA[<main>";
-    for (const auto& kv : tagNames)
-      out << "<map key=\"" << kv.second << "\" dim=\"" << (kv.first >= 1000 || kv.first == 0 ? 2 : 3) << "\">"
-          << kv.first << "</map>";
-    out << "</main>]]></Information>\n";
-    out << "      <Topology TopologyType=\"" << topologyType << "\" NumberOfElements=\"" << count
-        << "\" NodesPerElement=\"" << per << "\">\n        <DataItem Dimensions=\"" << count << " " << per
-        << "\" NumberType=\"Int\" Format=\"XML\">\n";
-  };
-  auto geometry = [&](amTextOutput& out) {
-    out << "        </DataItem>\n      </Topology>\n      <Geometry GeometryType=\"XYZ\">\n        <DataItem "
-           "Dimensions=\""
-        << used << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">\n";
-    for (vtkIdType i = 0; i < np; ++i)
-      if (number[i] >= 0)
-        out << xyz[3 * i] << " " << xyz[3 * i + 1] << " " << xyz[3 * i + 2] << "\n";
-    out << "        </DataItem>\n      </Geometry>\n";
-  };
-  auto attribute = [&](amTextOutput& out, const char* name, std::size_t count) {
-    out << "      <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-        << "        <DataItem Dimensions=\"" << count << "\" NumberType=\"Int\" Format=\"XML\">\n";
-  };
-  const char* tail = "        </DataItem>\n      </Attribute>\n    </Grid>\n  </Domain>\n</Xdmf>\n";
+  auto nameOfFile = [](const std::string& path) { return path.substr(path.find_last_of('/') + 1); };
+  struct Part
   {
-    std::ofstream stream(meshFile.TemporaryPath());
-    amTextOutput out(stream);
-    head(out, "mesh", "Tetrahedron", static_cast<std::size_t>(nc), 4);
-    for (const auto& t : tets)
-      out << number[t[0]] << " " << number[t[1]] << " " << number[t[2]] << " " << number[t[3]] << "\n";
-    geometry(out);
-    attribute(out, "cell_tags", static_cast<std::size_t>(nc));
-    for (int l : labels)
-      out << l << "\n";
-    // The fibres and sheets where the mesh has them (Ventricular Fibres), after the tags: FEniCSx's
-    // read_meshtags takes a grid's first attribute.
-    for (const char* name : { "Fibers", "Sheets" })
+    const amXdmfGrid& Grid;
+    amAtomicFile& Text;
+    amAtomicFile& Data;
+  };
+  for (const Part& part : { Part{ mesh, meshFile, meshData }, Part{ facets, facetsFile, facetsData } })
+  {
+    std::string xdmf, h5;
+    if (!part.Grid.Make(hdf5 ? nameOfFile(part.Data.TargetPath()) : std::string(), xdmf, h5, why) ||
+      (hdf5 && !part.Data.WriteTemporary(h5, why)) || !part.Text.WriteTemporary(xdmf, why))
     {
-      vtkDataArray* vectors = grid->GetCellData()->GetArray(name);
-      if (!vectors || vectors->GetNumberOfComponents() != 3)
-        continue;
-      out << "        </DataItem>\n      </Attribute>\n      <Attribute Name=\"" << name
-          << "\" AttributeType=\"Vector\" Center=\"Cell\">\n        <DataItem Dimensions=\"" << nc
-          << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">\n";
-      double v[3];
-      for (vtkIdType c = 0; c < nc; ++c)
-      {
-        vectors->GetTuple(c, v);
-        out << v[0] << " " << v[1] << " " << v[2] << "\n";
-      }
-    }
-    out << tail;
-    if (!out.Flush())
-    {
-      vtkErrorMacro("Cannot write '" << target << "': output error (disk full?).");
+      vtkErrorMacro("Cannot write '" << part.Text.TargetPath() << "': " << why << ".");
       return 0;
     }
+    this->UpdateProgress(&part.Grid == &mesh ? 0.6 : 0.9);
   }
-  this->UpdateProgress(0.6);
-  {
-    std::ofstream stream(facetsFile.TemporaryPath());
-    amTextOutput out(stream);
-    head(out, "facet_tags", "Triangle", faces.size(), 3);
-    for (const auto& f : faces)
-      out << number[f.Points[0]] << " " << number[f.Points[1]] << " " << number[f.Points[2]] << "\n";
-    geometry(out);
-    attribute(out, "facet_tags", faces.size());
-    for (const auto& f : faces)
-      out << 1000LL * f.First + (f.Second == amTetraFaces::Outside() ? 0 : f.Second) << "\n";
-    out << tail;
-    if (!out.Flush())
-    {
-      vtkErrorMacro("Cannot write '" << facetsTarget << "': output error (disk full?).");
-      return 0;
-    }
-  }
-  if (!meshFile.Commit(why) || !facetsFile.Commit(why))
+  // The heavy data first: an .xdmf never names an .h5 that is not there.
+  if ((hdf5 && (!meshData.Commit(why) || !facetsData.Commit(why))) || !meshFile.Commit(why) || !facetsFile.Commit(why))
   {
     vtkErrorMacro("Cannot write '" << target << "': " << why);
     return 0;
@@ -255,4 +245,5 @@ void amXdmfWriter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)") << "\n";
+  os << indent << "HeavyDataFormat: " << (this->HeavyDataFormat == HDF5 ? "HDF5" : "XML") << "\n";
 }

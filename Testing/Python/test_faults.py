@@ -44,8 +44,8 @@ WRITING = """
   <Output from="q" port="Table" file="${output}/quality.csv"/>
 </AnatomeshPipeline>
 """
-TARGETS = ("ct.nii.gz", "labels.mha", "mesh.mesh", "mesh.msh", "mesh.xdmf", "mesh_facets.xdmf", "mesh.pts",
-           "mesh.elem", "mesh.vtu", "quality.csv")
+TARGETS = ("ct.nii.gz", "labels.mha", "mesh.mesh", "mesh.msh", "mesh.xdmf", "mesh_facets.xdmf", "mesh.h5",
+           "mesh_facets.h5", "mesh.pts", "mesh.elem", "mesh.vtu", "quality.csv")
 
 # A quick case for the batch: the phantom's labels at 10 mm.
 SMALL = """

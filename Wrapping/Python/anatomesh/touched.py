@@ -1,6 +1,6 @@
 """The files a reader or a writer touches: its own file, and those beside it that its format implies (a
 detached header's data file, the label tables written beside a label map, an openCARP mesh's parts, an XDMF
-mesh's facets, a time series' frames). The pipeline's same-file guard compares all of them."""
+mesh's facets and HDF5 files, a time series' frames). The pipeline's same-file guard compares all of them."""
 import errno
 import os
 import re
@@ -58,8 +58,8 @@ def paths(path, writing):
         base = path if base is None else base
         out += [base + e for e in (".pts", ".elem", ".lon") if base + e != path]
     xdmf = _stem(path, (".xdmf",))
-    if xdmf is not None:
-        out.append(xdmf + "_facets.xdmf")
+    if xdmf is not None:  # the facets, and both files' HDF5 heavy data
+        out += [xdmf + "_facets.xdmf", xdmf + ".h5", xdmf + "_facets.h5"]
     return out
 
 
