@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <dirent.h>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -412,6 +413,23 @@ bool amImageReader::LoadFile(const std::string& path)
 
 bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string& onlyFile)
 {
+  // GDCM opens every entry of the folder: a FIFO or a device among them would block it.
+  if (DIR* d = opendir(folder.c_str()))
+  {
+    std::string why;
+    while (const dirent* e = readdir(d))
+    {
+      const std::string name = e->d_name;
+      // (A dangling link GDCM skips as it would any file it cannot open.)
+      if (name == "." || name == ".." || amInputCheck::ReadableFile(folder + "/" + name, true, why) ||
+        why.find("does not exist") != std::string::npos)
+        continue;
+      closedir(d);
+      vtkErrorMacro("Cannot read the DICOM folder '" << folder << "': " << why);
+      return false;
+    }
+    closedir(d);
+  }
   auto names = itk::GDCMSeriesFileNames::New();
   std::vector<std::string> files;
   std::string uid;

@@ -265,6 +265,10 @@ std::string amNiftiCheck::Check(const std::string& path, bool finiteVoxels)
   else
   {
     std::string img = path.substr(0, path.size() - (compressed ? 7 : 4)) + ".img";
+    // A pipe or a device would block the reading (or never end).
+    for (const std::string& data : { img, img + ".gz" })
+      if (amInflate::FileSize(data) >= 0 && !amInflate::IsRegularFile(data))
+        return "its data file '" + data + "' is not a regular file";
     long long bytes = amInflate::FileSize(img);
     if (bytes < 0 && amInflate::FileSize(img + ".gz") >= 0)
     {

@@ -320,6 +320,36 @@ class Faults(unittest.TestCase):
                           <Output from="r" file="${output}/x.%s"/>
                         </AnatomeshPipeline>""" % (kind, path, "vti" if kind == "ImageReader" else "vtu"),
                                  path, words)
+        with self.subTest("fifo_in_a_dicom_folder"):
+            folder = os.path.join(ROOT, "dicom_with_fifo")
+            os.makedirs(folder, exist_ok=True)
+            if not os.path.exists(os.path.join(folder, "slice.dcm")):
+                os.mkfifo(os.path.join(folder, "slice.dcm"))
+            self.refused("fifo_dicom", """
+                <AnatomeshPipeline version="1">
+                  <Filter name="r" type="ImageReader"><Property name="FileName" value="%s"/></Filter>
+                  <Output from="r" file="${output}/x.vti"/>
+                </AnatomeshPipeline>""" % folder, "slice.dcm", "a FIFO (named pipe), not a regular file")
+        with self.subTest("fifo_as_an_analyze_data_file"):
+            header = os.path.join(ROOT, "pair.hdr")
+            hdr = bytearray(348)
+            hdr[0:4] = (348).to_bytes(4, "little")
+            for k, v in enumerate((3, 4, 4, 4, 1, 1, 1, 1)):  # dim
+                hdr[40 + 2 * k:42 + 2 * k] = v.to_bytes(2, "little")
+            hdr[70:72] = (2).to_bytes(2, "little")  # uint8
+            hdr[72:74] = (8).to_bytes(2, "little")
+            import struct
+            for k in range(8):
+                hdr[76 + 4 * k:80 + 4 * k] = struct.pack("<f", 1.0)
+            hdr[344:348] = b"ni1\0"
+            write(header, bytes(hdr))
+            if not os.path.exists(os.path.join(ROOT, "pair.img")):
+                os.mkfifo(os.path.join(ROOT, "pair.img"))
+            self.refused("fifo_img", """
+                <AnatomeshPipeline version="1">
+                  <Filter name="r" type="ImageReader"><Property name="FileName" value="%s"/></Filter>
+                  <Output from="r" file="${output}/x.vti"/>
+                </AnatomeshPipeline>""" % header, "pair.img", "not a regular file")
         # The readers refuse them too, for Python and ParaView users (no pipeline check before them).
         script = textwrap.dedent("""
             import sys, anatomesh
