@@ -23,9 +23,11 @@ packages=(
   qttools5-dev qtxmlpatterns5-dev-tools
 )
 
-# The test suite also fuzzes the parsers (clang's libFuzzer) and reads the meshes back in Gmsh, meshio (whose
-# XDMF reader needs h5py) and FEniCSx (python3-dolfinx, which solves on them).
-if [ "$mode" = test ]; then packages+=(clang libclang-rt-14-dev gmsh python3-gmsh python3-h5py python3-dolfinx); fi
+# The test suite also fuzzes the parsers (clang's libFuzzer), checks the C++ layout (clang-format) and reads the
+# meshes back in Gmsh, meshio (whose XDMF reader needs h5py) and FEniCSx (python3-dolfinx, which solves on them).
+if [ "$mode" = test ]; then
+  packages+=(clang clang-format libclang-rt-14-dev gmsh python3-gmsh python3-h5py python3-dolfinx)
+fi
 
 # ParaView 5.11's Python package ships its own VTK 9.2 'vtkmodules' and conflicts with python3-vtk9.
 conflicting=()

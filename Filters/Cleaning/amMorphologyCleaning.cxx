@@ -49,7 +49,7 @@ struct Box
   int Size(int a) const { return this->Hi[a] - this->Lo[a] + 1; }
 };
 
-template <typename FilterType>
+template<typename FilterType>
 Mask::Pointer Morph(Mask* in, const Ball& ball)
 {
   auto f = FilterType::New();
@@ -243,9 +243,7 @@ int amMorphologyCleaning::RequestData(
       sp[a] = spacing[a];
     mask->SetSpacing(sp);
     mask->Allocate();
-    auto roiId = [&](int i, int j, int k) {
-      return (static_cast<size_t>(k) * box.Size(1) + j) * box.Size(0) + i;
-    };
+    auto roiId = [&](int i, int j, int k) { return (static_cast<size_t>(k) * box.Size(1) + j) * box.Size(0) + i; };
     auto globalId = [&](int i, int j, int k) {
       return (static_cast<vtkIdType>(k + box.Lo[2]) * dims[1] + (j + box.Lo[1])) * dims[0] + (i + box.Lo[0]);
     };
@@ -267,11 +265,20 @@ int amMorphologyCleaning::RequestData(
         ball.CreateStructuringElement();
         switch (this->Operation)
         {
-          case Erode: result = Morph<itk::BinaryErodeImageFilter<Mask, Mask, Ball>>(result, ball); break;
-          case Dilate: result = Morph<itk::BinaryDilateImageFilter<Mask, Mask, Ball>>(result, ball); break;
-          case Open: result = Morph<itk::BinaryMorphologicalOpeningImageFilter<Mask, Mask, Ball>>(result, ball); break;
-          case Close: result = Morph<itk::BinaryMorphologicalClosingImageFilter<Mask, Mask, Ball>>(result, ball); break;
-          default: break;
+          case Erode:
+            result = Morph<itk::BinaryErodeImageFilter<Mask, Mask, Ball>>(result, ball);
+            break;
+          case Dilate:
+            result = Morph<itk::BinaryDilateImageFilter<Mask, Mask, Ball>>(result, ball);
+            break;
+          case Open:
+            result = Morph<itk::BinaryMorphologicalOpeningImageFilter<Mask, Mask, Ball>>(result, ball);
+            break;
+          case Close:
+            result = Morph<itk::BinaryMorphologicalClosingImageFilter<Mask, Mask, Ball>>(result, ball);
+            break;
+          default:
+            break;
         }
       }
       if (this->MinimumComponentVolume > 0 || this->KeepLargestComponent)
@@ -355,7 +362,8 @@ int amMorphologyCleaning::RequestData(
     indicator->SetSpacing(sp);
     indicator->Allocate();
     int done = 0;
-    const int total = static_cast<int>(std::count_if(present.begin(), present.end(), [](vtkIdType c) { return c > 0; }));
+    const int total =
+      static_cast<int>(std::count_if(present.begin(), present.end(), [](vtkIdType c) { return c > 0; }));
     for (int l = 0; l < 256; ++l)
     {
       if (!present[l])

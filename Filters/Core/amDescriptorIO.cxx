@@ -6,7 +6,7 @@
 namespace
 {
 /// Calls 'call' (read or write) until 'bytes' have passed, retrying interrupted calls.
-template <typename Byte, typename Call>
+template<typename Byte, typename Call>
 bool Transfer(int fd, Byte* p, std::size_t bytes, Call call)
 {
   while (bytes > 0)
@@ -27,13 +27,12 @@ namespace amDescriptorIO
 {
 bool WriteAll(int fd, const void* data, std::size_t bytes)
 {
-  return Transfer(fd, static_cast<const char*>(data), bytes,
-    [](int f, const char* p, std::size_t n) { return ::write(f, p, n); });
+  return Transfer(
+    fd, static_cast<const char*>(data), bytes, [](int f, const char* p, std::size_t n) { return ::write(f, p, n); });
 }
 
 bool ReadAll(int fd, void* data, std::size_t bytes)
 {
-  return Transfer(
-    fd, static_cast<char*>(data), bytes, [](int f, char* p, std::size_t n) { return ::read(f, p, n); });
+  return Transfer(fd, static_cast<char*>(data), bytes, [](int f, char* p, std::size_t n) { return ::read(f, p, n); });
 }
 }

@@ -4,9 +4,8 @@
 #include <cmath>
 #include <limits>
 
-bool amGradedSizeField::Build(const std::vector<std::array<double, 3>>& points,
-  const std::vector<double>& sizes, double gradation, double maximumSize, const double bounds[6],
-  std::string& why, long long maximumNodes)
+bool amGradedSizeField::Build(const std::vector<std::array<double, 3>>& points, const std::vector<double>& sizes,
+  double gradation, double maximumSize, const double bounds[6], std::string& why, long long maximumNodes)
 {
   if (points.empty() || points.size() != sizes.size())
   {
@@ -82,8 +81,8 @@ bool amGradedSizeField::Build(const std::vector<std::array<double, 3>>& points,
       {
         const int linear = (dk * 3 + dj) * 3 + di;
         if (linear < 0)
-          earlier.push_back({ di, dj, dk,
-            static_cast<float>(slope * this->H * std::sqrt(double(di * di + dj * dj + dk * dk))) });
+          earlier.push_back(
+            { di, dj, dk, static_cast<float>(slope * this->H * std::sqrt(double(di * di + dj * dj + dk * dk))) });
       }
   // A node with all 26 neighbours in the grid takes them at fixed index offsets (the same minima
   // in the same order as the checked path).
@@ -149,8 +148,8 @@ double amGradedSizeField::Evaluate(const double x[3]) const
   for (int c = 0; c < 8; ++c)
   {
     const int i = base[0] + (c & 1), j = base[1] + ((c >> 1) & 1), k = base[2] + ((c >> 2) & 1);
-    const double w = ((c & 1) ? f[0] : 1 - f[0]) * (((c >> 1) & 1) ? f[1] : 1 - f[1]) *
-      (((c >> 2) & 1) ? f[2] : 1 - f[2]);
+    const double w =
+      ((c & 1) ? f[0] : 1 - f[0]) * (((c >> 1) & 1) ? f[1] : 1 - f[1]) * (((c >> 2) & 1) ? f[2] : 1 - f[2]);
     v += w * this->Values[static_cast<size_t>((k * ny + j) * nx + i)];
   }
   return std::min(std::max(v, this->Minimum), this->Maximum);

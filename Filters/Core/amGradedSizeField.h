@@ -25,9 +25,8 @@ class ANATOMESHFILTERSCORE_EXPORT amGradedSizeField
 public:
   /// Build from sizes at points (sizes must be finite and > 0; returns false with 'why').
   /// gradation >= 1; maximumSize <= 0 means unbounded. bounds: xmin xmax ymin ymax zmin zmax.
-  bool Build(const std::vector<std::array<double, 3>>& points, const std::vector<double>& sizes,
-    double gradation, double maximumSize, const double bounds[6], std::string& why,
-    long long maximumNodes = 8000000);
+  bool Build(const std::vector<std::array<double, 3>>& points, const std::vector<double>& sizes, double gradation,
+    double maximumSize, const double bounds[6], std::string& why, long long maximumNodes = 8000000);
 
   /// The size at x (outside the grid: the value at the nearest grid point).
   double Evaluate(const double x[3]) const;

@@ -18,10 +18,10 @@
 
 namespace amITK
 {
-template <typename T>
+template<typename T>
 using Image3 = itk::Image<T, 3>;
 
-template <typename T>
+template<typename T>
 vtkSmartPointer<vtkImageData> ToVTK(const Image3<T>* image, const char* scalarName)
 {
   auto out = vtkSmartPointer<vtkImageData>::New();
@@ -50,7 +50,7 @@ vtkSmartPointer<vtkImageData> ToVTK(const Image3<T>* image, const char* scalarNa
   return out;
 }
 
-template <typename T>
+template<typename T>
 typename Image3<T>::Pointer FromVTK(vtkImageData* in)
 {
   auto image = Image3<T>::New();
@@ -94,25 +94,50 @@ typename Image3<T>::Pointer FromVTK(vtkImageData* in)
 }
 
 /// Calls f.template operator()<T>() for the C++ type of an ITK component type; false if unsupported.
-template <typename F>
+template<typename F>
 bool DispatchComponent(itk::IOComponentEnum type, F&& f)
 {
   using C = itk::IOComponentEnum;
   switch (type)
   {
-    case C::UCHAR: f(static_cast<unsigned char*>(nullptr)); return true;
-    case C::CHAR: f(static_cast<signed char*>(nullptr)); return true;
-    case C::USHORT: f(static_cast<unsigned short*>(nullptr)); return true;
-    case C::SHORT: f(static_cast<short*>(nullptr)); return true;
-    case C::UINT: f(static_cast<unsigned int*>(nullptr)); return true;
-    case C::INT: f(static_cast<int*>(nullptr)); return true;
-    case C::ULONG: f(static_cast<unsigned long*>(nullptr)); return true;
-    case C::LONG: f(static_cast<long*>(nullptr)); return true;
-    case C::ULONGLONG: f(static_cast<unsigned long long*>(nullptr)); return true;
-    case C::LONGLONG: f(static_cast<long long*>(nullptr)); return true;
-    case C::FLOAT: f(static_cast<float*>(nullptr)); return true;
-    case C::DOUBLE: f(static_cast<double*>(nullptr)); return true;
-    default: return false;
+    case C::UCHAR:
+      f(static_cast<unsigned char*>(nullptr));
+      return true;
+    case C::CHAR:
+      f(static_cast<signed char*>(nullptr));
+      return true;
+    case C::USHORT:
+      f(static_cast<unsigned short*>(nullptr));
+      return true;
+    case C::SHORT:
+      f(static_cast<short*>(nullptr));
+      return true;
+    case C::UINT:
+      f(static_cast<unsigned int*>(nullptr));
+      return true;
+    case C::INT:
+      f(static_cast<int*>(nullptr));
+      return true;
+    case C::ULONG:
+      f(static_cast<unsigned long*>(nullptr));
+      return true;
+    case C::LONG:
+      f(static_cast<long*>(nullptr));
+      return true;
+    case C::ULONGLONG:
+      f(static_cast<unsigned long long*>(nullptr));
+      return true;
+    case C::LONGLONG:
+      f(static_cast<long long*>(nullptr));
+      return true;
+    case C::FLOAT:
+      f(static_cast<float*>(nullptr));
+      return true;
+    case C::DOUBLE:
+      f(static_cast<double*>(nullptr));
+      return true;
+    default:
+      return false;
   }
 }
 

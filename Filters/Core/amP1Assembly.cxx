@@ -74,8 +74,8 @@ std::array<double, 6> amP1Assembly::FiberTensor(double sigmaL, double sigmaT, co
     d * u[1] * u[2], d * u[0] * u[2] };
 }
 
-void amP1Assembly::Assemble(const std::vector<std::array<double, 6>>* conductivity, amSparseMatrix& mass,
-  amSparseMatrix& stiffness) const
+void amP1Assembly::Assemble(
+  const std::vector<std::array<double, 6>>* conductivity, amSparseMatrix& mass, amSparseMatrix& stiffness) const
 {
   const vtkIdType n = static_cast<vtkIdType>(this->Points.size());
   mass.BuildPattern(n, this->Tetrahedra);

@@ -33,8 +33,8 @@ public:
 
   /// Assemble M and K (both get the mesh's pattern). conductivity: one symmetric tensor per
   /// tetrahedron (XX YY ZZ XY YZ XZ), or nullptr for the identity.
-  void Assemble(const std::vector<std::array<double, 6>>* conductivity, amSparseMatrix& mass,
-    amSparseMatrix& stiffness) const;
+  void Assemble(
+    const std::vector<std::array<double, 6>>* conductivity, amSparseMatrix& mass, amSparseMatrix& stiffness) const;
 
   /// Barycentric gradients (4 x 3) and the unsigned volume of tetrahedron t.
   void Gradients(vtkIdType t, double g[4][3], double& volume) const;

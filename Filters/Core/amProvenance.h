@@ -23,8 +23,8 @@ public:
 
   /// Append "<filter> <version>: <parameters>" to output's Provenance, after the entries
   /// carried by input (may be null).
-  static void Record(vtkDataObject* output, vtkDataObject* input, const std::string& filter,
-    const std::string& parameters);
+  static void Record(
+    vtkDataObject* output, vtkDataObject* input, const std::string& filter, const std::string& parameters);
 
   /// All entries of obj's Provenance joined by newlines (empty if none).
   static std::string Get(vtkDataObject* obj);

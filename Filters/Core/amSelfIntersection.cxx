@@ -5,16 +5,16 @@
 
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_set>
 #include <map>
+#include <unordered_set>
 
 std::vector<vtkIdType> amSelfIntersection::Vertices(
   const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& points, int background)
@@ -167,8 +167,8 @@ std::vector<vtkIdType> amSelfIntersection::AllTriangles(
   return amSelfIntersection::AllTriangles(mesh, points, nullptr);
 }
 
-std::vector<vtkIdType> amSelfIntersection::AllTriangles(const amSurfaceMesh& mesh,
-  const std::vector<std::array<double, 3>>& points, const std::vector<vtkIdType>* among)
+std::vector<vtkIdType> amSelfIntersection::AllTriangles(
+  const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& points, const std::vector<vtkIdType>* among)
 {
   const vtkIdType nt = mesh.NumberOfTriangles();
   std::vector<TriangleBox> boxes;
@@ -217,7 +217,9 @@ std::vector<vtkIdType> amSelfIntersection::AllTriangles(const amSurfaceMesh& mes
         lo[d] = std::min(lo[d], static_cast<double>(b.min_coord(d)));
         hi[d] = std::max(hi[d], static_cast<double>(b.max_coord(d)));
       }
-    const int axis = hi[0] - lo[0] >= std::max(hi[1] - lo[1], hi[2] - lo[2]) ? 0 : hi[1] - lo[1] >= hi[2] - lo[2] ? 1 : 2;
+    const int axis = hi[0] - lo[0] >= std::max(hi[1] - lo[1], hi[2] - lo[2]) ? 0
+      : hi[1] - lo[1] >= hi[2] - lo[2]                                       ? 1
+                                                                             : 2;
     std::vector<double> lows(boxes.size());
     for (size_t i = 0; i < boxes.size(); ++i)
       lows[i] = boxes[i].min_coord(axis);

@@ -94,9 +94,9 @@ struct amSparseCholesky::Internal
   Internal()
   {
     cholmod_l_start(&this->Common);
-    this->Common.print = 0;      // no messages on stdout
+    this->Common.print = 0; // no messages on stdout
     this->Common.error_handler = nullptr;
-    this->Common.final_ll = 0;   // LDL' stays LDL'
+    this->Common.final_ll = 0; // LDL' stays LDL'
   }
   ~Internal()
   {

@@ -51,7 +51,7 @@ public:
 
   std::vector<vtkIdType> RingStart; // CSR: neighbours of each vertex (through edges)
   std::vector<vtkIdType> Ring;
-  std::vector<vtkIdType> RingEdge;  // the edge to each neighbour
+  std::vector<vtkIdType> RingEdge;            // the edge to each neighbour
   std::vector<vtkIdType> VertexTriangleStart; // CSR: triangles around each vertex
   std::vector<vtkIdType> VertexTriangles;
   std::vector<unsigned char> Kind; // VertexKind

@@ -22,7 +22,7 @@ namespace
 struct DirectedEdge
 {
   vtkIdType Lo, Hi;
-  int Forward;           // 1 when traversed Lo -> Hi
+  int Forward;                  // 1 when traversed Lo -> Hi
   vtkIdType CornerLo, CornerHi; // corner nodes (3 * local triangle + k) of Lo and Hi
   bool operator<(const DirectedEdge& o) const
   {
@@ -41,8 +41,8 @@ vtkIdType Find(std::vector<vtkIdType>& parent, vtkIdType a)
 }
 }
 
-bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regions, std::string& why,
-  int background, const char* labelsName)
+bool amSurfaceTopology::Analyse(
+  vtkPolyData* surface, std::vector<Region>& regions, std::string& why, int background, const char* labelsName)
 {
   regions.clear();
   if (!surface || !surface->GetPolys())
@@ -151,9 +151,9 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
           e1[0] * e2[1] - e1[1] * e2[0] };
         out.Area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         ++local;
-        out.Volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                        p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                        p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
+        out.Volume +=
+          (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+            p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
           6.0;
       }
       std::sort(verts.begin(), verts.end());
@@ -196,8 +196,9 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
         if (count == 2)
           for (vtkIdType* c : { &edges[i].CornerLo, &edges[i].CornerHi })
           {
-            const vtkIdType x = Find(corner, *c), y = Find(corner, *(c == &edges[i].CornerLo ? &edges[i + 1].CornerLo
-                                                                                             : &edges[i + 1].CornerHi));
+            const vtkIdType x = Find(corner, *c),
+                            y = Find(
+                              corner, *(c == &edges[i].CornerLo ? &edges[i + 1].CornerLo : &edges[i + 1].CornerHi));
             if (x != y)
               corner[std::max(x, y)] = std::min(x, y);
           }
@@ -215,8 +216,7 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
       std::sort(fans.begin(), fans.end());
       fans.erase(std::unique(fans.begin(), fans.end()), fans.end());
       for (size_t f = 1; f < fans.size(); ++f)
-        out.NonManifoldVertices += fans[f].first == fans[f - 1].first &&
-          (f < 2 || fans[f - 2].first != fans[f].first);
+        out.NonManifoldVertices += fans[f].first == fans[f - 1].first && (f < 2 || fans[f - 2].first != fans[f].first);
       out.Euler = out.Vertices - out.Edges + out.Triangles;
     }
   });
@@ -226,8 +226,8 @@ bool amSurfaceTopology::Analyse(vtkPolyData* surface, std::vector<Region>& regio
 vtkSmartPointer<vtkTable> amSurfaceTopology::ToTable(const std::vector<Region>& regions)
 {
   auto table = vtkSmartPointer<vtkTable>::New();
-  const char* intNames[] = { "Label", "Triangles", "Vertices", "Edges", "EulerCharacteristic",
-    "Components", "BoundaryEdges", "NonManifoldEdges", "MisorientedEdges", "NonManifoldVertices" };
+  const char* intNames[] = { "Label", "Triangles", "Vertices", "Edges", "EulerCharacteristic", "Components",
+    "BoundaryEdges", "NonManifoldEdges", "MisorientedEdges", "NonManifoldVertices" };
   for (const char* name : intNames)
   {
     vtkNew<vtkIdTypeArray> a;
@@ -245,8 +245,8 @@ vtkSmartPointer<vtkTable> amSurfaceTopology::ToTable(const std::vector<Region>& 
   for (size_t r = 0; r < regions.size(); ++r)
   {
     const Region& g = regions[r];
-    const long long v[] = { g.Label, g.Triangles, g.Vertices, g.Edges, g.Euler, g.Components,
-      g.BoundaryEdges, g.NonManifoldEdges, g.MisorientedEdges, g.NonManifoldVertices };
+    const long long v[] = { g.Label, g.Triangles, g.Vertices, g.Edges, g.Euler, g.Components, g.BoundaryEdges,
+      g.NonManifoldEdges, g.MisorientedEdges, g.NonManifoldVertices };
     for (int c = 0; c < 10; ++c)
       vtkIdTypeArray::SafeDownCast(table->GetColumn(c))->SetValue(static_cast<vtkIdType>(r), v[c]);
     vtkDoubleArray::SafeDownCast(table->GetColumn(10))->SetValue(static_cast<vtkIdType>(r), g.Area);

@@ -39,8 +39,8 @@ public:
 
   /// Analyse every region of surface (triangles only). Returns false with 'why' set when the
   /// surface has no such array, non-triangle cells, or NaN coordinates.
-  static bool Analyse(vtkPolyData* surface, std::vector<Region>& regions, std::string& why,
-    int background = 0, const char* labelsName = "Labels");
+  static bool Analyse(vtkPolyData* surface, std::vector<Region>& regions, std::string& why, int background = 0,
+    const char* labelsName = "Labels");
 
   /// One row per region, columns named as the Region fields.
   static vtkSmartPointer<vtkTable> ToTable(const std::vector<Region>& regions);

@@ -39,8 +39,8 @@ public:
 
   /// points: x y z of every node (3 doubles each); tetrahedra: node indices; labels: one per
   /// tetrahedron, or null (all equal: only the boundary is returned).
-  static std::vector<Face> Find(const double* points, const std::vector<std::array<vtkIdType, 4>>& tetrahedra,
-    const int* labels);
+  static std::vector<Face> Find(
+    const double* points, const std::vector<std::array<vtkIdType, 4>>& tetrahedra, const int* labels);
 
   /// The faces of one tetrahedron only (the mesh's boundary), each as its sorted node triple, in
   /// the order of those triples.

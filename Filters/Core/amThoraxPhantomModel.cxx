@@ -102,7 +102,7 @@ amThoraxPhantomModel::amThoraxPhantomModel()
 
   this->NumberOfRibPairs = 7;
   this->RibRadius = 4.5;
-  this->RibRing[0] = 8.0; // ring = inner body cross-section at the rib's height, shrunk by this (mm)
+  this->RibRing[0] = 8.0;  // ring = inner body cross-section at the rib's height, shrunk by this (mm)
   this->RibRing[1] = 20.0; // half-width (mm) of the gaps at the sternum and at the spine
   this->RibZTop = 60.0;
   this->RibSpacing = 20.0;
@@ -266,15 +266,15 @@ unsigned char amThoraxPhantomModel::LabelAt(const double x[3]) const
 
 double amThoraxPhantomModel::HounsfieldUnits(int label)
 {
-  static const double hu[NumberOfLabels] = { -1000.0, 40.0, -100.0, -850.0, -850.0, 50.0, 300.0, 300.0, 300.0,
-    700.0, 700.0 };
+  static const double hu[NumberOfLabels] = { -1000.0, 40.0, -100.0, -850.0, -850.0, 50.0, 300.0, 300.0, 300.0, 700.0,
+    700.0 };
   return (label >= 0 && label < NumberOfLabels) ? hu[label] : 0.0;
 }
 
 const char* amThoraxPhantomModel::LabelName(int label)
 {
-  static const char* names[NumberOfLabels] = { "Background", "SoftTissue", "Fat", "RightLung", "LeftLung",
-    "Myocardium", "LeftVentricleBlood", "RightVentricleBlood", "Aorta", "Spine", "Ribs" };
+  static const char* names[NumberOfLabels] = { "Background", "SoftTissue", "Fat", "RightLung", "LeftLung", "Myocardium",
+    "LeftVentricleBlood", "RightVentricleBlood", "Aorta", "Spine", "Ribs" };
   return (label >= 0 && label < NumberOfLabels) ? names[label] : "Unknown";
 }
 
@@ -397,9 +397,9 @@ void amThoraxPhantomModel::StandardElectrodes(double positions[9][3])
   // Body: superquadric with half-axes 150 (left-right), 105 (front-back), 100 mm (up-down); the
   // heart sits at z = -25 mm, in front (-y) and to the left (+x) of the centre.
   static const double electrodes[9][3] = {
-    { -125.0, 0.0, 80.0 },   // RA: right shoulder
-    { 125.0, 0.0, 80.0 },    // LA: left shoulder
-    { 110.0, 0.0, -85.0 },   // LL: left lower torso
+    { -125.0, 0.0, 80.0 },    // RA: right shoulder
+    { 125.0, 0.0, 80.0 },     // LA: left shoulder
+    { 110.0, 0.0, -85.0 },    // LL: left lower torso
     { -15.0, -105.0, -30.0 }, // V1: right sternal border
     { 15.0, -105.0, -30.0 },  // V2: left sternal border
     { 37.5, -102.0, -35.0 },  // V3: half-way from V2 to V4

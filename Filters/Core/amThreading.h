@@ -24,7 +24,7 @@ public:
   /// vtkSMPTools::For for short loops run many times (solver vector work): below 'serial'
   /// iterations the body runs on the calling thread, as waking the pool would cost more than the
   /// loop itself. Chunks are disjoint, so the result never depends on the thread count.
-  template <typename Functor>
+  template<typename Functor>
   static void For(vtkIdType first, vtkIdType last, Functor&& f, vtkIdType serial = 50000)
   {
     if (last - first < serial)
@@ -36,7 +36,7 @@ public:
   /// The smallest i in [first, last) for which ok(i) is false, or 'last' when there is none: ok
   /// runs on the threads (each chunk stops at its first failure), so a check over millions of
   /// voxels names the same first bad one as the serial loop would. ok may write i's own output.
-  template <typename Functor>
+  template<typename Functor>
   static vtkIdType FirstFailure(vtkIdType first, vtkIdType last, Functor&& ok)
   {
     std::atomic<vtkIdType> failed(last);
@@ -57,7 +57,7 @@ public:
   /// std::sort with both halves sorted at once on the threads, then merged (VTK's STDThread
   /// backend sorts on one thread). Elements that compare equal may come out in another order
   /// than std::sort would leave them: for orders where equal elements are alike.
-  template <typename Iterator>
+  template<typename Iterator>
   static void Sort(Iterator first, Iterator last)
   {
     if (last - first < 100000)

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-void amTriangleLocator::Build(const std::vector<std::array<double, 3>>& points,
-  const std::vector<std::array<vtkIdType, 3>>& triangles)
+void amTriangleLocator::Build(
+  const std::vector<std::array<double, 3>>& points, const std::vector<std::array<vtkIdType, 3>>& triangles)
 {
   const vtkIdType nt = static_cast<vtkIdType>(triangles.size());
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),

@@ -24,8 +24,7 @@ class ANATOMESHFILTERSCORE_EXPORT amTriangleLocator
 {
 public:
   /// Bin the triangles (their corners are copied).
-  void Build(const std::vector<std::array<double, 3>>& points,
-    const std::vector<std::array<vtkIdType, 3>>& triangles);
+  void Build(const std::vector<std::array<double, 3>>& points, const std::vector<std::array<vtkIdType, 3>>& triangles);
 
   /// Closest point of the triangle set to x: returns the squared distance, sets closest and the
   /// triangle index (-1 and +inf when there is no triangle).
@@ -64,7 +63,7 @@ private:
   struct alignas(64) Record
   {
     double Centre[3];
-    double Radius; // about the centroid, slightly inflated (BoundingSphere)
+    double Radius;    // about the centroid, slightly inflated (BoundingSphere)
     double Normal[3]; // not normalised: only its sign along a query normal is used
     double Corner[3][3];
   };

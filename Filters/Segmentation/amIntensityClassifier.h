@@ -21,12 +21,11 @@
  * open to the sides), each class's centre held in its anatomical range (amTissueMixture: any
  * contrast phase, kernel and noise); a class the scan does not show (no contrast, no fat) has an
  * empty range, except bone, which without a peak of its own (a crop, thin bone at coarse voxels)
- * starts half-way from soft tissue to cortical bone (700 HU), above any contrast. Field data "TissueClasses" gives each class's centre, spread, weight
- * (fraction of the body), whether it was found, and its upper boundary (HU). A scan with no soft
- * tissue class (not a CT in HU) is an error that says so.
- * ClassifyWindowed applies Ranges or Otsu to the 8-bit windowed values instead of the raw ones.
- * ExteriorAir (default on): the air around the patient is label 0 connected (across faces) to the
- * sides of the image (the borders of the first two index axes; not the ends of the third, where a
+ * starts half-way from soft tissue to cortical bone (700 HU), above any contrast. Field data "TissueClasses" gives each
+ * class's centre, spread, weight (fraction of the body), whether it was found, and its upper boundary (HU). A scan with
+ * no soft tissue class (not a CT in HU) is an error that says so. ClassifyWindowed applies Ranges or Otsu to the 8-bit
+ * windowed values instead of the raw ones. ExteriorAir (default on): the air around the patient is label 0 connected
+ * (across faces) to the sides of the image (the borders of the first two index axes; not the ends of the third, where a
  * trachea may leave the field of view). A voxel of another class that touches it, is darker than
  * ExteriorThreshold (default -480 HU, half-way between air and soft tissue) and has a voxel at least
  * that bright within two voxels along an axis is mostly air: partial volume of the skin, which

@@ -36,9 +36,9 @@ std::vector<double> amPolarContour::Find(
   double cu, double cv, const std::vector<double>& previous, const Parameters& p) const
 {
   const int nr = std::max(2, static_cast<int>(std::floor(p.MaximumRadius / RadialStep)) + 1); // r = n * step
-  const int window = static_cast<int>(std::lround(3.0 / RadialStep));                      // 3 mm outside
-  const int half = static_cast<int>(std::lround(1.5 / RadialStep));                        // edge over 3 mm
-  const int ns = nr + window + half;                                                        // samples per ray
+  const int window = static_cast<int>(std::lround(3.0 / RadialStep));                         // 3 mm outside
+  const int half = static_cast<int>(std::lround(1.5 / RadialStep));                           // edge over 3 mm
+  const int ns = nr + window + half;                                                          // samples per ray
   const int na = NumberOfRays;
   // Costs per sample (RadialStep mm), as documented per mm.
   const double inside = 4.0 * RadialStep, outside = 2.0 * RadialStep, area = p.AreaCost * RadialStep,
@@ -122,8 +122,7 @@ std::vector<double> amPolarContour::Find(
   return radii;
 }
 
-std::vector<double> amPolarContour::RadiiOf(
-  const unsigned char* mask, double cu, double cv, double maximumRadius) const
+std::vector<double> amPolarContour::RadiiOf(const unsigned char* mask, double cu, double cv, double maximumRadius) const
 {
   std::vector<double> radii(NumberOfRays, 0.0);
   const int nr = static_cast<int>(std::floor(maximumRadius / RadialStep));

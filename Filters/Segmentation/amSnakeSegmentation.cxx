@@ -327,10 +327,9 @@ int amSnakeSegmentation::RequestData(
     {
       const std::array<double, 3>& seed = organSeeds[li][static_cast<size_t>(organ.AirSeed)];
       double w[3];
-      input->TransformContinuousIndexToPhysicalPoint(
-        seed[0] + extent[0], seed[1] + extent[2], seed[2] + extent[4], w);
-      vtkErrorMacro("Seed (" << w[0] << ", " << w[1] << ", " << w[2] << ") for label " << label
-                             << " lies in air (mean " << tracker.SeedMean(static_cast<size_t>(organ.AirSeed))
+      input->TransformContinuousIndexToPhysicalPoint(seed[0] + extent[0], seed[1] + extent[2], seed[2] + extent[4], w);
+      vtkErrorMacro("Seed (" << w[0] << ", " << w[1] << ", " << w[2] << ") for label " << label << " lies in air (mean "
+                             << tracker.SeedMean(static_cast<size_t>(organ.AirSeed))
                              << " HU around it); move it into the organ, or set AllowAirSeeds.");
       return 0;
     }

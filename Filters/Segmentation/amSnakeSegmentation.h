@@ -221,8 +221,8 @@ public:
   /// Polar contours: the intensity below which a pixel is not the structure (default -30, HU:
   /// half-way between fat, -100, and soft tissue, +40); an outward intensity drop that counts as
   /// one unit of edge evidence, counted up to three units (default 40: every edge of 120 or more
-  /// counts alike, so a dissection flap inside does not beat the wall outside); the largest radius, mm (default 30); the largest
-  /// growth of a radius from one slice to the next, mm (default 2).
+  /// counts alike, so a dissection flap inside does not beat the wall outside); the largest radius, mm (default 30);
+  /// the largest growth of a radius from one slice to the next, mm (default 2).
   vtkSetMacro(OutsideThreshold, double);
   vtkGetMacro(OutsideThreshold, double);
   vtkSetClampMacro(EdgeContrast, double, 1e-6, 1e9);

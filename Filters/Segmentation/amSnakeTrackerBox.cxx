@@ -29,9 +29,10 @@ bool InsideBox(const unsigned char* mask, const int size[3], int margin, int lo[
         const unsigned char* first = std::find(row, row + nx, 1);
         if (first == row + nx)
           continue;
-        const int last = nx - 1 - static_cast<int>(std::find(std::reverse_iterator<const unsigned char*>(row + nx),
-                                                     std::reverse_iterator<const unsigned char*>(row), 1) -
-                                     std::reverse_iterator<const unsigned char*>(row + nx));
+        const int last = nx - 1 -
+          static_cast<int>(std::find(std::reverse_iterator<const unsigned char*>(row + nx),
+                             std::reverse_iterator<const unsigned char*>(row), 1) -
+            std::reverse_iterator<const unsigned char*>(row + nx));
         s = { std::min(s[0], static_cast<int>(first - row)), std::max(s[1], last), std::min(s[2], j),
           std::max(s[3], j) };
       }
@@ -63,14 +64,15 @@ bool InsideBox(const unsigned char* mask, const int size[3], int margin, int lo[
 
 /// Copies a box of one grid into a box of another of the same size (x rows in one piece).
 template<typename T>
-void CopyBox(const T* from, const int fromSize[3], const int fromLo[3], T* to, const int toSize[3],
-  const int toLo[3], const int box[3])
+void CopyBox(const T* from, const int fromSize[3], const int fromLo[3], T* to, const int toSize[3], const int toLo[3],
+  const int box[3])
 {
   vtkSMPTools::For(0, box[2], [&](vtkIdType k0, vtkIdType k1) {
     for (vtkIdType k = k0; k < k1; ++k)
       for (int j = 0; j < box[1]; ++j)
       {
-        const size_t f = ((static_cast<size_t>(k) + fromLo[2]) * fromSize[1] + (j + fromLo[1])) * fromSize[0] + fromLo[0];
+        const size_t f =
+          ((static_cast<size_t>(k) + fromLo[2]) * fromSize[1] + (j + fromLo[1])) * fromSize[0] + fromLo[0];
         const size_t t = ((static_cast<size_t>(k) + toLo[2]) * toSize[1] + (j + toLo[1])) * toSize[0] + toLo[0];
         std::memcpy(to + t, from + f, sizeof(T) * static_cast<size_t>(box[0]));
       }

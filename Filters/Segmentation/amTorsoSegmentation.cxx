@@ -245,12 +245,12 @@ int amTorsoSegmentation::RequestData(
     const double below[] = { 0, -850, -100, 0, 0, 700 };
     for (int c : { 1, 2, 5 })
       if (classTable->GetComponent(c, 4) == 0.0 && !(windowed && below[c] < lowest))
-        vtkWarningMacro("The scan shows no " << what[c] << " intensity class (no peak of the body's histogram near "
-                                             << below[c] << " HU): " << (c == 1 ? "is it a chest CT?" : "")
-                                             << (c == 2 ? "a very lean patient, or not a CT in HU?" : "")
-                                             << (c == 5 ? "the field of view holds no bone, or its bone is too thin at these voxels to show one (bone "
-                                                            "then starts half-way to cortical bone)."
-                                                          : ""));
+        vtkWarningMacro("The scan shows no "
+          << what[c] << " intensity class (no peak of the body's histogram near " << below[c] << " HU): "
+          << (c == 1 ? "is it a chest CT?" : "") << (c == 2 ? "a very lean patient, or not a CT in HU?" : "")
+          << (c == 5 ? "the field of view holds no bone, or its bone is too thin at these voxels to show one (bone "
+                       "then starts half-way to cortical bone)."
+                     : ""));
   }
   this->UpdateProgress(0.2);
 

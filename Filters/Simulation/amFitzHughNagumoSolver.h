@@ -104,8 +104,14 @@ public:
   vtkSetStringMacro(FiberArrayName);
   vtkGetStringMacro(FiberArrayName);
 #ifndef __VTK_WRAP__
-  [[deprecated("use SetFiberArrayName")]] void SetFibreArrayName(const char* name) { this->SetFiberArrayName(name); }
-  [[deprecated("use GetFiberArrayName")]] const char* GetFibreArrayName() { return this->GetFiberArrayName(); }
+  [[deprecated("use SetFiberArrayName")]] void SetFibreArrayName(const char* name)
+  {
+    this->SetFiberArrayName(name);
+  }
+  [[deprecated("use GetFiberArrayName")]] const char* GetFibreArrayName()
+  {
+    return this->GetFiberArrayName();
+  }
 #endif
   vtkSetClampMacro(TransverseConductivityRatio, double, 0.0, 1.0);
   vtkGetMacro(TransverseConductivityRatio, double);
@@ -159,7 +165,10 @@ public:
   /// needs StimulusStrength 2.
   void AddEndocardialRegion(int label);
   void RemoveAllEndocardialRegions();
-  int GetNumberOfEndocardialRegions() { return static_cast<int>(this->EndocardialRegions.size()); }
+  int GetNumberOfEndocardialRegions()
+  {
+    return static_cast<int>(this->EndocardialRegions.size());
+  }
   /// With EndocardialRegions: how fast (mm/ms) the activation spreads over the endocardium from
   /// StimulusCenter, the Purkinje network's conduction (default 0: the whole endocardium at
   /// once). Each endocardial node's stimulus starts after StimulusStart by its straight-line
@@ -194,8 +203,14 @@ public:
   };
   vtkSetClampMacro(Solver, int, DIRECT, CONJUGATE_GRADIENT);
   vtkGetMacro(Solver, int);
-  void SetSolverToDirect() { this->SetSolver(DIRECT); }
-  void SetSolverToConjugateGradient() { this->SetSolver(CONJUGATE_GRADIENT); }
+  void SetSolverToDirect()
+  {
+    this->SetSolver(DIRECT);
+  }
+  void SetSolverToConjugateGradient()
+  {
+    this->SetSolver(CONJUGATE_GRADIENT);
+  }
   ///@}
 
   ///@{

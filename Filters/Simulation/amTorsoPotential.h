@@ -207,8 +207,8 @@ private:
   struct Model;
   std::unique_ptr<Model> State;
   std::vector<double> ActiveElectrodes; // ElectrodePositions, or the Landmarks input's
-  int LoopIndex;                 // -1: not looping over the heart's times
-  std::vector<double> LoopTimes; // the heart's times of the running loop
+  int LoopIndex;                        // -1: not looping over the heart's times
+  std::vector<double> LoopTimes;        // the heart's times of the running loop
   bool Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* heart);
   bool Solve(vtkUnstructuredGrid* heart, double time);
   bool Flush();

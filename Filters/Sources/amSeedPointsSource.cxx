@@ -92,8 +92,8 @@ int amSeedPointsSource::RequestData(vtkInformation*, vtkInformationVector**, vtk
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   const int n = this->GetNumberOfSeeds();
   if (static_cast<int>(this->Labels.size()) > n)
-    vtkWarningMacro(<< this->Labels.size() << " seed labels for " << n << " seeds: the last "
-                    << this->Labels.size() - n << " label(s) belong to no seed and are not used.");
+    vtkWarningMacro(<< this->Labels.size() << " seed labels for " << n << " seeds: the last " << this->Labels.size() - n
+                    << " label(s) belong to no seed and are not used.");
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> vertices;

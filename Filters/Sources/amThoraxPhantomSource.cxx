@@ -54,7 +54,7 @@ inline double GaussianNoise(uint64_t seed, uint64_t index)
 }
 
 // Runs body(begin, end) over [0, n) in chunks so progress can be reported from this thread.
-template <typename Body>
+template<typename Body>
 bool ChunkedFor(amThoraxPhantomSource* self, vtkIdType n, double p0, double p1, Body&& body)
 {
   const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(n, 20));
@@ -157,8 +157,8 @@ bool amThoraxPhantomSource::ComputeGeometry(int dims[3], double origin[3])
   {
     if (!(this->Spacing[i] > 0.0) || !std::isfinite(this->Spacing[i]))
     {
-      vtkErrorMacro("Spacing must be positive and finite; got " << this->Spacing[0] << " " << this->Spacing[1]
-                                                                << " " << this->Spacing[2] << " mm.");
+      vtkErrorMacro("Spacing must be positive and finite; got " << this->Spacing[0] << " " << this->Spacing[1] << " "
+                                                                << this->Spacing[2] << " mm.");
       return false;
     }
     if (!(this->FieldOfView[i] >= this->Spacing[i]) || !std::isfinite(this->FieldOfView[i]))
@@ -201,8 +201,7 @@ int amThoraxPhantomSource::RequestInformation(
   return 1;
 }
 
-int amThoraxPhantomSource::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int amThoraxPhantomSource::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   int dims[3];
   double origin[3];
@@ -273,8 +272,8 @@ int amThoraxPhantomSource::RequestData(
               if (ns > 1)
               {
                 boundary = (i > 0 && lab[id - 1] != l) || (i + 1 < nx && lab[id + 1] != l) ||
-                  (j > 0 && lab[id - nx] != l) || (j + 1 < ny && lab[id + nx] != l) ||
-                  (k > 0 && lab[id - nxy] != l) || (k + 1 < nz && lab[id + nxy] != l);
+                  (j > 0 && lab[id - nx] != l) || (j + 1 < ny && lab[id + nx] != l) || (k > 0 && lab[id - nxy] != l) ||
+                  (k + 1 < nz && lab[id + nxy] != l);
               }
               if (!boundary)
               {
@@ -394,8 +393,8 @@ void amThoraxPhantomSource::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Spacing: " << this->Spacing[0] << " " << this->Spacing[1] << " " << this->Spacing[2] << " mm\n";
-  os << indent << "FieldOfView: " << this->FieldOfView[0] << " " << this->FieldOfView[1] << " "
-     << this->FieldOfView[2] << " mm\n";
+  os << indent << "FieldOfView: " << this->FieldOfView[0] << " " << this->FieldOfView[1] << " " << this->FieldOfView[2]
+     << " mm\n";
   os << indent << "NoiseStandardDeviation: " << this->NoiseStandardDeviation << " HU\n";
   os << indent << "BlurSigma: " << this->BlurSigma << " mm\n";
   os << indent << "PartialVolumeSamples: " << this->PartialVolumeSamples << "\n";

@@ -159,8 +159,7 @@ int amCurvatureMetric::RequestData(
   vtkSMPTools::For(0, static_cast<vtkIdType>(sheetOfTriangle.size()), [&](vtkIdType t0, vtkIdType t1) {
     for (vtkIdType t = t0; t < t1; ++t)
     {
-      const int a = std::min(mesh.Labels[t][0], mesh.Labels[t][1]),
-                b = std::max(mesh.Labels[t][0], mesh.Labels[t][1]);
+      const int a = std::min(mesh.Labels[t][0], mesh.Labels[t][1]), b = std::max(mesh.Labels[t][0], mesh.Labels[t][1]);
       sheetOfTriangle[t] = (static_cast<long long>(a) << 32) ^ static_cast<unsigned int>(b);
     }
   });
@@ -420,8 +419,8 @@ int amCurvatureMetric::RequestData(
     const double a = std::min(h1[v], firstSmaller || !this->Anisotropic ? cap[v] : capLarge[v]);
     const double b = std::min(h2[v], !firstSmaller || !this->Anisotropic ? cap[v] : capLarge[v]);
     const double n = std::min(a, b);
-    const Eigen::Matrix3d M = c.D1 * c.D1.transpose() / (a * a) + c.D2 * c.D2.transpose() / (b * b) +
-      c.N * c.N.transpose() / (n * n);
+    const Eigen::Matrix3d M =
+      c.D1 * c.D1.transpose() / (a * a) + c.D2 * c.D2.transpose() / (b * b) + c.N * c.N.transpose() / (n * n);
     const double m[6] = { M(0, 0), M(1, 1), M(2, 2), M(0, 1), M(1, 2), M(0, 2) };
     metric->SetTypedTuple(v, m);
     size->SetValue(v, n);
@@ -435,9 +434,8 @@ int amCurvatureMetric::RequestData(
   }
   std::ostringstream params;
   params << "Tolerance=" << eps << " MinimumSize=" << hmin << " MaximumSize=" << hmax
-         << " Gradation=" << this->Gradation << " Anisotropic=" << this->Anisotropic
-         << " NeighborhoodRings=" << rings << " NeighborhoodRadius=" << baseRadius
-         << " ScaleAdaptive=" << this->ScaleAdaptive;
+         << " Gradation=" << this->Gradation << " Anisotropic=" << this->Anisotropic << " NeighborhoodRings=" << rings
+         << " NeighborhoodRadius=" << baseRadius << " ScaleAdaptive=" << this->ScaleAdaptive;
   amProvenance::Record(output, input, "amCurvatureMetric", params.str());
   this->UpdateProgress(1.0);
   return 1;

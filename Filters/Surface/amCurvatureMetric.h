@@ -5,15 +5,14 @@
  *
  * Curvatures: at each vertex a height function h(u,v) = a u^2 + b uv + c v^2 + d u + e v is fitted
  * by least squares to the vertices of its NeighborhoodRings-ring and every vertex within
- * NeighborhoodRadius, in the tangent frame of the area-weighted normal; the shape operator of that graph (first and second fundamental forms, so
- * a tilted normal does not bias it) gives the principal curvatures k1 >= k2 and their directions.
- * The linear terms and the neighbourhood radius (two voxels by default) make it robust on the
- * noisy, staircase-smoothed triangulations of label maps; ScaleAdaptive then fits again over half
- * the size the first fit asks for, so that the curvature is the surface's at the scale of the
- * triangles (a smoothed voxelised sphere of radius 20 voxels: the median of max |k| is 1.8x the
- * truth with the two-voxel fit alone, 1.2x after the scale-adaptive fits). On a multi-material
- * surface the fit uses only the triangles of one interface (one label pair); a vertex on a
- * junction curve takes the fit of the interface it belongs to that bends most.
+ * NeighborhoodRadius, in the tangent frame of the area-weighted normal; the shape operator of that graph (first and
+ * second fundamental forms, so a tilted normal does not bias it) gives the principal curvatures k1 >= k2 and their
+ * directions. The linear terms and the neighbourhood radius (two voxels by default) make it robust on the noisy,
+ * staircase-smoothed triangulations of label maps; ScaleAdaptive then fits again over half the size the first fit asks
+ * for, so that the curvature is the surface's at the scale of the triangles (a smoothed voxelised sphere of radius 20
+ * voxels: the median of max |k| is 1.8x the truth with the two-voxel fit alone, 1.2x after the scale-adaptive fits). On
+ * a multi-material surface the fit uses only the triangles of one interface (one label pair); a vertex on a junction
+ * curve takes the fit of the interface it belongs to that bends most.
  *
  * Metric: the chord of an arc of radius 1/|k| and length h deviates from it by h^2 |k| / 8, but
  * the centre of an equilateral triangle of edge h with its corners on a sphere of curvature |k|
@@ -92,10 +91,22 @@ public:
   vtkSetClampMacro(NeighborhoodRadius, double, 0.0, 1e6);
   vtkGetMacro(NeighborhoodRadius, double);
 #ifndef __VTK_WRAP__
-  [[deprecated("use SetNeighborhoodRings")]] void SetNeighbourhoodRings(int n) { this->SetNeighborhoodRings(n); }
-  [[deprecated("use GetNeighborhoodRings")]] int GetNeighbourhoodRings() { return this->GetNeighborhoodRings(); }
-  [[deprecated("use SetNeighborhoodRadius")]] void SetNeighbourhoodRadius(double r) { this->SetNeighborhoodRadius(r); }
-  [[deprecated("use GetNeighborhoodRadius")]] double GetNeighbourhoodRadius() { return this->GetNeighborhoodRadius(); }
+  [[deprecated("use SetNeighborhoodRings")]] void SetNeighbourhoodRings(int n)
+  {
+    this->SetNeighborhoodRings(n);
+  }
+  [[deprecated("use GetNeighborhoodRings")]] int GetNeighbourhoodRings()
+  {
+    return this->GetNeighborhoodRings();
+  }
+  [[deprecated("use SetNeighborhoodRadius")]] void SetNeighbourhoodRadius(double r)
+  {
+    this->SetNeighborhoodRadius(r);
+  }
+  [[deprecated("use GetNeighborhoodRadius")]] double GetNeighbourhoodRadius()
+  {
+    return this->GetNeighborhoodRadius();
+  }
 #endif
   ///@}
 

@@ -81,7 +81,10 @@ public:
   /// Voxels relabelled in the last run (see the class documentation).
   vtkGetMacro(RelabeledVoxels, vtkIdType);
 #ifndef __VTK_WRAP__
-  [[deprecated("use GetRelabeledVoxels")]] vtkIdType GetRelabelledVoxels() { return this->GetRelabeledVoxels(); }
+  [[deprecated("use GetRelabeledVoxels")]] vtkIdType GetRelabelledVoxels()
+  {
+    return this->GetRelabeledVoxels();
+  }
 #endif
 
 protected:

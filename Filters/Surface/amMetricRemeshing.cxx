@@ -182,9 +182,8 @@ int amMetricRemeshing::RequestData(
   std::ostringstream params;
   params << "Tolerance=" << this->Tolerance << " TargetSize=" << this->TargetSize
          << " NumberOfIterations=" << this->NumberOfIterations << " PreserveVolumes=" << this->PreserveVolumes
-         << " Hausdorff=" << h
-         << " InsertedPoints=" << result.Inserted << " Collapses=" << r.Collapses() << " Flips=" << r.Flips()
-         << " Moves=" << r.Moves();
+         << " Hausdorff=" << h << " InsertedPoints=" << result.Inserted << " Collapses=" << r.Collapses()
+         << " Flips=" << r.Flips() << " Moves=" << r.Moves();
   amProvenance::Record(output, input, "amMetricRemeshing", params.str());
   this->UpdateProgress(1.0);
   return 1;

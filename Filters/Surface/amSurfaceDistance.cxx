@@ -30,8 +30,8 @@ struct OneSided
 
 /// Distances from samples of 'from' to surface 'to' (its locator). vertexDistance gets each
 /// vertex's distance when non-null.
-OneSided Measure(const amSurfaceMesh& from, const amTriangleLocator& locator, double sampling,
-  std::vector<double>* vertexDistance)
+OneSided Measure(
+  const amSurfaceMesh& from, const amTriangleLocator& locator, double sampling, std::vector<double>* vertexDistance)
 {
   const vtkIdType nt = from.NumberOfTriangles(), np = from.NumberOfPoints();
   auto distance = [&](const double x[3]) {

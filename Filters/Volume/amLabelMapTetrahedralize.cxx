@@ -2,8 +2,8 @@
 
 #include "amInputCheck.h"
 #include "amProvenance.h"
-#include "amRegionVolumes.h"
 #include "amQualityBars.h"
+#include "amRegionVolumes.h"
 #include "amTetraGeometry.h"
 #include "amTetraMeshOptimizer.h"
 

@@ -153,13 +153,12 @@ public:
   ///@{
   /// After CGAL, improve the elements as amTetrahedralize does (default on: CGAL's perturbation
   /// and exudation leave elements of Q 13-40 and 1.4-6 degrees on real label maps, the
-  /// improvement none above Q 10 or under 10 degrees): edge removals and 2-3 flips that make the worst element they touch better,
-  /// smoothing and local search on the vertices off the surface (amTetraMeshOptimizer). The
-  /// surface and interface triangles stay as CGAL made them, but for the slivers that need them
-  /// to move (at most MaximumSurfaceDeviation, mm, default 0.2; 0: never; see amTetrahedralize).
-  /// ImprovementPasses: rounds (default 4). NumberOfSlivers: elements left above Q 10 or below 10
-  /// degrees, checked on every run (improved or not); any is a warning with the worst one's
-  /// place; SurfaceDeviation: how far the surface moved (mm).
+  /// improvement none above Q 10 or under 10 degrees): edge removals and 2-3 flips that make the worst element they
+  /// touch better, smoothing and local search on the vertices off the surface (amTetraMeshOptimizer). The surface and
+  /// interface triangles stay as CGAL made them, but for the slivers that need them to move (at most
+  /// MaximumSurfaceDeviation, mm, default 0.2; 0: never; see amTetrahedralize). ImprovementPasses: rounds (default 4).
+  /// NumberOfSlivers: elements left above Q 10 or below 10 degrees, checked on every run (improved or not); any is a
+  /// warning with the worst one's place; SurfaceDeviation: how far the surface moved (mm).
   vtkSetMacro(ImproveQuality, vtkTypeBool);
   vtkGetMacro(ImproveQuality, vtkTypeBool);
   vtkBooleanMacro(ImproveQuality, vtkTypeBool);

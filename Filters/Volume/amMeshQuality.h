@@ -54,9 +54,8 @@ public:
   ///@}
 
   /// Quality measures of one tetrahedron: Q, min/max dihedral (degrees), radius ratio, volume.
-  static void TetraQuality(const double p0[3], const double p1[3], const double p2[3],
-    const double p3[3], double& quality, double& minDihedral, double& maxDihedral,
-    double& radiusRatio, double& volume);
+  static void TetraQuality(const double p0[3], const double p1[3], const double p2[3], const double p3[3],
+    double& quality, double& minDihedral, double& maxDihedral, double& radiusRatio, double& volume);
 
   /// The tetrahedra of 'grid' with their cell data, copied into 'tetrahedra' when the grid has
   /// other cells too (left empty when every cell is a tetrahedron); false when it has none.

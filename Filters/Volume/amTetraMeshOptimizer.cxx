@@ -20,8 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <sstream>
 #include <limits>
+#include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -46,8 +46,7 @@ double amTetraMeshOptimizer::Objective(const double* a, const double* b, const d
   // sin of the dihedral angle at edge ij = 3 V l_ij / (2 A_k A_l) (faces k, l opposite the
   // other two vertices); the regular tetrahedron's is sqrt(8)/3.
   const double minSine = 6.0 * volume *
-    std::min({ lab / (fc * fd), lac / (fb * fd), lad / (fb * fc), lbc / (fa * fd), lbd / (fa * fc),
-      lcd / (fa * fb) });
+    std::min({ lab / (fc * fd), lac / (fb * fd), lad / (fb * fc), lbc / (fa * fd), lbd / (fa * fc), lcd / (fa * fb) });
   return std::min(inverseQ, minSine * 3.0 / std::sqrt(8.0));
 }
 
@@ -63,16 +62,14 @@ std::string amTetraMeshOptimizer::Report::Describe() const
   if (this->SurfaceMoves + this->Relabels + this->SurfaceSplits + this->SurfaceCollapses > 0)
     os << "; around slivers " << this->SurfaceMoves << " surface vertex slides, " << this->Relabels
        << " region changes, " << this->SurfaceSplits << " surface edge splits, " << this->SurfaceCollapses
-       << " surface edge collapses: the surface moved by "
-       << this->SurfaceDeviation << " mm";
+       << " surface edge collapses: the surface moved by " << this->SurfaceDeviation << " mm";
   os << "; " << this->Slivers << " slivers left)";
   return os.str();
 }
 
 amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>& points,
-  std::vector<std::array<int, 4>>& tets, std::vector<int>& regions,
-  const std::vector<std::array<int, 3>>& fixedFaces, const Options& options,
-  const std::function<void(double)>& progress)
+  std::vector<std::array<int, 4>>& tets, std::vector<int>& regions, const std::vector<std::array<int, 3>>& fixedFaces,
+  const Options& options, const std::function<void(double)>& progress)
 {
   Report report;
   Mesh m(points);
@@ -97,8 +94,8 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
         if (m.Alive[t])
         {
           double minDihedral, maxDihedral, radiusRatio, volume;
-          amMeshQuality::TetraQuality(m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]), q[t],
-            minDihedral, maxDihedral, radiusRatio, volume);
+          amMeshQuality::TetraQuality(m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]), q[t], minDihedral,
+            maxDihedral, radiusRatio, volume);
         }
     });
     worst = 0;
@@ -131,48 +128,46 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
   };
   fixEdges();
 
-  const double bad = 1.0 / options.FlipQuality, poor = 1.0 / options.SearchQuality,
-               split = 1.0 / options.SplitQuality;
+  const double bad = 1.0 / options.FlipQuality, poor = 1.0 / options.SearchQuality, split = 1.0 / options.SplitQuality;
   const int maxRing = std::min(options.MaxRing, 15);
   const int rounds = options.MaximumSurfaceDeviation > 0 ? std::max(0, options.SliverRounds) : 0;
   auto improve = [&](int round) {
-  const int passes = round == 0 ? options.Passes : std::min(options.Passes, 2);
-  for (int pass = 0; pass < passes; ++pass)
-  {
-    long changes = 0;
-    // Topology: the bad tetrahedra's edges, then faces.
-    changes += TopologyPass(m, bad, split, maxRing, report);
-    // Geometry: smoothing of every free vertex, then a local search around the bad elements
-    // (in the sliver rounds, only where something changed since the last pass).
-    const size_t nv = m.Inc.size();
-    const std::vector<char> changed = m.Dirty;
-    const long smoothed = SmoothAll(m, nv);
-    report.Moves += smoothed;
-    changes += smoothed;
-    std::vector<char> climb(nv, 0);
-    for (size_t t = 0; t < m.T.size(); ++t)
-      if (m.Alive[t] && m.Q[t] < poor)
-        for (int w : m.T[t])
-          climb[w] = !m.FixedVertex[w] && (round == 0 || changed[w]);
-    for (size_t v = 0; v < nv; ++v)
-      if (climb[v] && Climb(m, static_cast<int>(v)))
-      {
-        ++report.Moves;
-        ++changes;
-      }
-    if (progress)
-      progress((round + static_cast<double>(pass + 1) / passes) / (rounds + 1));
-    if (changes == 0)
-      break;
-  }
+    const int passes = round == 0 ? options.Passes : std::min(options.Passes, 2);
+    for (int pass = 0; pass < passes; ++pass)
+    {
+      long changes = 0;
+      // Topology: the bad tetrahedra's edges, then faces.
+      changes += TopologyPass(m, bad, split, maxRing, report);
+      // Geometry: smoothing of every free vertex, then a local search around the bad elements
+      // (in the sliver rounds, only where something changed since the last pass).
+      const size_t nv = m.Inc.size();
+      const std::vector<char> changed = m.Dirty;
+      const long smoothed = SmoothAll(m, nv);
+      report.Moves += smoothed;
+      changes += smoothed;
+      std::vector<char> climb(nv, 0);
+      for (size_t t = 0; t < m.T.size(); ++t)
+        if (m.Alive[t] && m.Q[t] < poor)
+          for (int w : m.T[t])
+            climb[w] = !m.FixedVertex[w] && (round == 0 || changed[w]);
+      for (size_t v = 0; v < nv; ++v)
+        if (climb[v] && Climb(m, static_cast<int>(v)))
+        {
+          ++report.Moves;
+          ++changes;
+        }
+      if (progress)
+        progress((round + static_cast<double>(pass + 1) / passes) / (rounds + 1));
+      if (changes == 0)
+        break;
+    }
   };
   if (!options.TargetVolumes.empty() && options.MaximumVolumeOffset > 0)
   {
     // Only what the moves disturb is smoothed between the rounds; the passes then start anew.
     std::fill(m.Dirty.begin(), m.Dirty.end(), 0);
-    report.VolumeMoves = PreserveVolumes(
-      m, options.TargetVolumes, options.MaximumVolumeOffset, 1.0 / options.SearchQuality, options.VolumeRounds,
-      report.VolumeDisplacement);
+    report.VolumeMoves = PreserveVolumes(m, options.TargetVolumes, options.MaximumVolumeOffset,
+      1.0 / options.SearchQuality, options.VolumeRounds, report.VolumeDisplacement);
     std::fill(m.Dirty.begin(), m.Dirty.end(), 1);
   }
   improve(0);
@@ -228,8 +223,8 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
     }
     for (int k = 0; k < 4; ++k)
       tets[c][k] = static_cast<int>(ids[k]);
-    if (amTetraGeometry::SignedVolume(&points[3 * ids[0]], &points[3 * ids[1]], &points[3 * ids[2]],
-          &points[3 * ids[3]]) < 0)
+    if (amTetraGeometry::SignedVolume(
+          &points[3 * ids[0]], &points[3 * ids[1]], &points[3 * ids[2]], &points[3 * ids[3]]) < 0)
       std::swap(tets[c][0], tets[c][1]);
     regions[c] = static_cast<int>(regionArray->GetComponent(c, 0));
   }
@@ -319,9 +314,9 @@ bool amTetraMeshOptimizer::ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* s
       if (it == faceOf.end())
         continue;
       const Tri& f = fixed[it->second];
-      const int side = amTetraGeometry::SignedVolume(&points[3 * static_cast<size_t>(f[0])],
-                         &points[3 * static_cast<size_t>(f[1])], &points[3 * static_cast<size_t>(f[2])],
-                         &points[3 * static_cast<size_t>(t[i])]) > 0
+      const int side =
+        amTetraGeometry::SignedVolume(&points[3 * static_cast<size_t>(f[0])], &points[3 * static_cast<size_t>(f[1])],
+          &points[3 * static_cast<size_t>(f[2])], &points[3 * static_cast<size_t>(t[i])]) > 0
         ? 1
         : 0;
       adjacent->SetComponent(it->second, side, static_cast<double>(c));

@@ -43,12 +43,12 @@ class amTetraMeshOptimizer
 public:
   struct Options
   {
-    int Passes = 4;                 // rounds of flips + smoothing
+    int Passes = 4; // rounds of flips + smoothing
     // Thresholds in Q, applied to the objective (1/Q or the dihedral term, whichever is worse):
-    double FlipQuality = 1.6;       // elements above this get flips
-    double SearchQuality = 2.5;     // the vertices of elements above this get the local search
-    int MaxRing = 7;                // largest edge ring the edge removal triangulates
-    double SplitQuality = 5;        // elements with Q above this that no flip mends get an edge split
+    double FlipQuality = 1.6;   // elements above this get flips
+    double SearchQuality = 2.5; // the vertices of elements above this get the local search
+    int MaxRing = 7;            // largest edge ring the edge removal triangulates
+    double SplitQuality = 5;    // elements with Q above this that no flip mends get an edge split
     // Slivers: elements with Q above SliverQuality or a dihedral angle below SliverDihedral
     // (degrees) that the rounds above leave. Where interfaces meet at a junction curve at a small
     // angle, or a surface triangle lies almost flat on another, no element there can be better
@@ -90,14 +90,13 @@ public:
     std::string Describe() const;
   };
 
-  /// points: 3 doubles per vertex (free vertices move, split vertices are appended); tets: 4 vertex ids per tetrahedron,
-  /// positively oriented (rewritten); regions: one label per tetrahedron (rewritten alike);
-  /// fixedFaces: triangles that must remain faces (the surface); the vertices of those faces and
-  /// of the mesh's boundary are fixed. progress(fraction) is called between passes. When
-  /// elements change region (Report::Relabels), the surface is no longer 'fixedFaces': it is the
-  /// faces between different regions and those of the mesh's boundary.
-  static Report Optimize(std::vector<double>& points, std::vector<std::array<int, 4>>& tets,
-    std::vector<int>& regions, const std::vector<std::array<int, 3>>& fixedFaces, const Options& options,
+  /// points: 3 doubles per vertex (free vertices move, split vertices are appended); tets: 4 vertex ids per
+  /// tetrahedron, positively oriented (rewritten); regions: one label per tetrahedron (rewritten alike); fixedFaces:
+  /// triangles that must remain faces (the surface); the vertices of those faces and of the mesh's boundary are fixed.
+  /// progress(fraction) is called between passes. When elements change region (Report::Relabels), the surface is no
+  /// longer 'fixedFaces': it is the faces between different regions and those of the mesh's boundary.
+  static Report Optimize(std::vector<double>& points, std::vector<std::array<int, 4>>& tets, std::vector<int>& regions,
+    const std::vector<std::array<int, 3>>& fixedFaces, const Options& options,
     const std::function<void(double)>& progress = nullptr);
 
   /// The same on a mesh as amTetrahedralize and amLabelMapTetrahedralize make it: 'grid' holds
@@ -107,8 +106,8 @@ public:
   /// array), the cells are replaced (cell data other than Region is dropped), and
   /// the surface's "Tetra" array (the tetrahedron on each side, -1 for none) is recomputed.
   /// False, with why, when the data is not of that form.
-  static bool ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* surface, const Options& options,
-    Report& report, std::string& why, const std::function<void(double)>& progress = nullptr);
+  static bool ImproveGrid(vtkUnstructuredGrid* grid, vtkPolyData* surface, const Options& options, Report& report,
+    std::string& why, const std::function<void(double)>& progress = nullptr);
 
   /// What the operations maximise, in (0, 1] (1: regular), -1 when inverted or flat: the smaller
   /// of 1/Q and the smallest sine of the dihedral angles over that of the regular tetrahedron, so

@@ -2,8 +2,8 @@
 
 #include "amGradedSizeField.h"
 #include "amProvenance.h"
-#include "amRegionVolumes.h"
 #include "amQualityBars.h"
+#include "amRegionVolumes.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amTetGenParts.h"
@@ -328,8 +328,9 @@ int amTetrahedralize::RequestData(
   if (this->SurfaceDeviationUsed < 0)
   {
     vtkDataArray* tolerance = input->GetFieldData()->GetArray("Tolerance");
-    this->SurfaceDeviationUsed =
-      tolerance && tolerance->GetNumberOfTuples() > 0 && tolerance->GetComponent(0, 0) > 0 ? 0.5 * tolerance->GetComponent(0, 0) : 0.2;
+    this->SurfaceDeviationUsed = tolerance && tolerance->GetNumberOfTuples() > 0 && tolerance->GetComponent(0, 0) > 0
+      ? 0.5 * tolerance->GetComponent(0, 0)
+      : 0.2;
   }
 
   // --- Quality improvement: flips and smoothing inside the regions, the surface kept ------------

@@ -148,8 +148,8 @@ public:
   /// four more with the regions changed before any slide where those leave slivers, four more
   /// where those still do with a short surface edge of each sliver first collapsed along its
   /// interface or junction curve (where a junction curve zigzags between elements, or a vertex
-  /// inside an interface sits next to one), and the result with the fewest slivers kept. The triangles of output port 1 are then the mesh's
-  /// faces anew: those that remain keep their cell data, new ones have SourceTriangle -1. The
+  /// inside an interface sits next to one), and the result with the fewest slivers kept. The triangles of output port 1
+  /// are then the mesh's faces anew: those that remain keep their cell data, new ones have SourceTriangle -1. The
   /// mesh's surface is thus within the remeshing's Hausdorff distance plus SurfaceDeviation of
   /// the label surface.
   /// Default -1: half the tolerance the surface was remeshed to (its field data "Tolerance", from

@@ -76,8 +76,8 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     io = itk::NrrdImageIO::New();
   else
   {
-    vtkErrorMacro("Cannot write '" << target << "': unknown extension '" << ext
-                                   << "' (use .nii, .nii.gz, .mha, .mhd or .nrrd).");
+    vtkErrorMacro(
+      "Cannot write '" << target << "': unknown extension '" << ext << "' (use .nii, .nii.gz, .mha, .mhd or .nrrd).");
     return 0;
   }
   amAtomicFile file(target);
@@ -115,21 +115,38 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
   };
   switch (scalars->GetDataType())
   {
-    case VTK_UNSIGNED_CHAR: write(static_cast<unsigned char*>(nullptr)); break;
+    case VTK_UNSIGNED_CHAR:
+      write(static_cast<unsigned char*>(nullptr));
+      break;
     case VTK_SIGNED_CHAR:
-    case VTK_CHAR: write(static_cast<signed char*>(nullptr)); break;
-    case VTK_UNSIGNED_SHORT: write(static_cast<unsigned short*>(nullptr)); break;
-    case VTK_SHORT: write(static_cast<short*>(nullptr)); break;
-    case VTK_UNSIGNED_INT: write(static_cast<unsigned int*>(nullptr)); break;
-    case VTK_INT: write(static_cast<int*>(nullptr)); break;
-    case VTK_FLOAT: write(static_cast<float*>(nullptr)); break;
-    case VTK_DOUBLE: write(static_cast<double*>(nullptr)); break;
+    case VTK_CHAR:
+      write(static_cast<signed char*>(nullptr));
+      break;
+    case VTK_UNSIGNED_SHORT:
+      write(static_cast<unsigned short*>(nullptr));
+      break;
+    case VTK_SHORT:
+      write(static_cast<short*>(nullptr));
+      break;
+    case VTK_UNSIGNED_INT:
+      write(static_cast<unsigned int*>(nullptr));
+      break;
+    case VTK_INT:
+      write(static_cast<int*>(nullptr));
+      break;
+    case VTK_FLOAT:
+      write(static_cast<float*>(nullptr));
+      break;
+    case VTK_DOUBLE:
+      write(static_cast<double*>(nullptr));
+      break;
     default:
-      vtkErrorMacro("Cannot write '" << target << "': scalar type " << scalars->GetDataTypeAsString()
-                                     << " is not supported.");
+      vtkErrorMacro(
+        "Cannot write '" << target << "': scalar type " << scalars->GetDataTypeAsString() << " is not supported.");
       return 0;
   }
-  const std::string folder = target.find('/') == std::string::npos ? std::string() : target.substr(0, target.find_last_of('/') + 1);
+  const std::string folder =
+    target.find('/') == std::string::npos ? std::string() : target.substr(0, target.find_last_of('/') + 1);
   // A detached .mhd header names its data file (.raw or .zraw) after the temporary stem: move the
   // data file to the final stem first, and point the header at it.
   std::string header, dataName;
@@ -175,8 +192,8 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     if (!incomplete.empty() || !repaired.empty())
     {
       ok = false;
-      error = "the file written is incomplete (" + (incomplete.empty() ? std::string("its header needed repair") : incomplete) +
-        "); is the disk full?";
+      error = "the file written is incomplete (" +
+        (incomplete.empty() ? std::string("its header needed repair") : incomplete) + "); is the disk full?";
     }
   }
   if (!ok)

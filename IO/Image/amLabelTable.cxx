@@ -96,8 +96,8 @@ bool amLabelTable::Write(vtkImageData* image, const std::string& imagePath, std:
     return true;
   const std::string file = imagePath.substr(imagePath.find_last_of('/') + 1);
   // 3D Slicer's colour table (FreeSurfer's LUT layout): "value name R G B A", no spaces in names.
-  const bool slicer = WriteTable(PathFor(imagePath), "# Anatomesh label table of " + file + ": value name R G B A\n",
-    names,
+  const bool slicer = WriteTable(
+    PathFor(imagePath), "# Anatomesh label table of " + file + ": value name R G B A\n", names,
     [](int v, const std::string& name, const unsigned char* rgb) {
       char line[512];
       std::snprintf(line, sizeof(line), "%d %s %d %d %d %d\n", v,
@@ -107,7 +107,8 @@ bool amLabelTable::Write(vtkImageData* image, const std::string& imagePath, std:
     why);
   // ITK-SNAP's label description: IDX R G B A(0-1) VIS MSH "LABEL"; 0 is its "Clear Label".
   return slicer &&
-    WriteTable(ItkSnapPathFor(imagePath),
+    WriteTable(
+      ItkSnapPathFor(imagePath),
       "################################################\n"
       "# ITK-SnAP Label Description File\n"
       "# Anatomesh labels of " +

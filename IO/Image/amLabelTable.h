@@ -4,10 +4,10 @@
  *          ("value name R G B A", 0-255), the format 3D Slicer and FreeSurfer's LUT readers take, and
  *          "<stem>.itksnap.txt", ITK-SNAP's label description file (IDX R G B A VIS MSH "LABEL").
  *
- * For a label map (point scalars named "Labels"), names come from the image's field data "LabelNames" (a string array indexed by label value, as
- * amTorsoSegmentation, amIntensityClassifier and amThoraxPhantomSource write it); spaces in a
- * name become '_'. Colours are fixed per value (a golden-angle hue walk; 0 is transparent black),
- * so one label keeps its colour across files. The tables are written atomically like the image.
+ * For a label map (point scalars named "Labels"), names come from the image's field data "LabelNames" (a string array
+ * indexed by label value, as amTorsoSegmentation, amIntensityClassifier and amThoraxPhantomSource write it); spaces in
+ * a name become '_'. Colours are fixed per value (a golden-angle hue walk; 0 is transparent black), so one label keeps
+ * its colour across files. The tables are written atomically like the image.
  */
 #ifndef amLabelTable_h
 #define amLabelTable_h

@@ -19,16 +19,15 @@ public:
   }
 
   /// The compressed bytes of 'raw' at 'level' into 'out' (at most 'space'): their size, 0 if unknown.
-  std::size_t Find(std::uint64_t key, const unsigned char* raw, std::size_t n, int level, unsigned char* out,
-    std::size_t space)
+  std::size_t Find(
+    std::uint64_t key, const unsigned char* raw, std::size_t n, int level, unsigned char* out, std::size_t space)
   {
     std::lock_guard<std::mutex> lock(this->Lock);
     const auto range = this->Blocks.equal_range(key);
     for (auto it = range.first; it != range.second; ++it)
     {
       const Block& b = it->second;
-      if (b.Level == level && b.Raw.size() == n && b.Packed.size() <= space &&
-        std::memcmp(b.Raw.data(), raw, n) == 0)
+      if (b.Level == level && b.Raw.size() == n && b.Packed.size() <= space && std::memcmp(b.Raw.data(), raw, n) == 0)
       {
         std::memcpy(out, b.Packed.data(), b.Packed.size());
         return b.Packed.size();
@@ -37,8 +36,8 @@ public:
     return 0;
   }
 
-  void Add(std::uint64_t key, const unsigned char* raw, std::size_t n, int level, const unsigned char* packed,
-    std::size_t m)
+  void Add(
+    std::uint64_t key, const unsigned char* raw, std::size_t n, int level, const unsigned char* packed, std::size_t m)
   {
     std::lock_guard<std::mutex> lock(this->Lock);
     if (this->Bytes + n > this->Most)
@@ -95,8 +94,8 @@ std::uint64_t Hash(const unsigned char* data, std::size_t n)
 }
 }
 
-std::size_t amCachedZLibCompressor::CompressBuffer(unsigned char const* uncompressedData,
-  std::size_t uncompressedSize, unsigned char* compressedData, std::size_t compressionSpace)
+std::size_t amCachedZLibCompressor::CompressBuffer(unsigned char const* uncompressedData, std::size_t uncompressedSize,
+  unsigned char* compressedData, std::size_t compressionSpace)
 {
   // Small blocks (the last of an array, small arrays) are cheaper to deflate than to keep.
   if (!this->Blocks || uncompressedSize < 4096)

@@ -41,8 +41,7 @@ struct Job
 /// Whether the data has a VTK XML format here.
 bool Writable(vtkDataObject* data)
 {
-  return vtkUnstructuredGrid::SafeDownCast(data) || vtkPolyData::SafeDownCast(data) ||
-    vtkImageData::SafeDownCast(data);
+  return vtkUnstructuredGrid::SafeDownCast(data) || vtkPolyData::SafeDownCast(data) || vtkImageData::SafeDownCast(data);
 }
 
 /// A deep copy of the data, the worker's own.

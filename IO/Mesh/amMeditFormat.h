@@ -26,7 +26,7 @@ public:
   };
   struct Field
   {
-    int Type = 1; // 1 scalar, 2 vector, 3 symmetric tensor
+    int Type = 1;               // 1 scalar, 2 vector, 3 symmetric tensor
     std::vector<double> Values; // per vertex, Components() each
     int Components(int dim) const { return this->Type == 1 ? 1 : this->Type == 2 ? dim : dim * (dim + 1) / 2; }
   };

@@ -1,8 +1,8 @@
 #include "amMeditWriter.h"
 
 #include "amAtomicFile.h"
-#include "amTetraFaces.h"
 #include "amMeditFormat.h"
+#include "amTetraFaces.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -116,11 +116,21 @@ int amMeditWriter::WriteData(vtkDataObject* data)
       case VTK_POLY_VERTEX:
       case VTK_EMPTY_CELL:
         continue;
-      case VTK_LINE: keyword = "Edges"; break;
-      case VTK_TRIANGLE: keyword = "Triangles"; break;
-      case VTK_QUAD: keyword = "Quadrilaterals"; break;
-      case VTK_TETRA: keyword = "Tetrahedra"; break;
-      case VTK_HEXAHEDRON: keyword = "Hexahedra"; break;
+      case VTK_LINE:
+        keyword = "Edges";
+        break;
+      case VTK_TRIANGLE:
+        keyword = "Triangles";
+        break;
+      case VTK_QUAD:
+        keyword = "Quadrilaterals";
+        break;
+      case VTK_TETRA:
+        keyword = "Tetrahedra";
+        break;
+      case VTK_HEXAHEDRON:
+        keyword = "Hexahedra";
+        break;
       default:
         vtkErrorMacro("Cannot write '" << target << "': cell " << c << " has VTK type " << type
                                        << ", which Medit cannot hold (lines, triangles, quads, tetrahedra, "
@@ -174,8 +184,8 @@ int amMeditWriter::WriteData(vtkDataObject* data)
     vtkDataArray* a = input->GetPointData()->GetArray(this->SolutionArrayName);
     if (!a)
     {
-      vtkErrorMacro("Cannot write the solution of '" << target << "': no point-data array '"
-                                                     << this->SolutionArrayName << "'.");
+      vtkErrorMacro(
+        "Cannot write the solution of '" << target << "': no point-data array '" << this->SolutionArrayName << "'.");
       return 0;
     }
     const int k = a->GetNumberOfComponents();

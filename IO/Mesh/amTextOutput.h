@@ -34,7 +34,7 @@ public:
     const auto end = std::to_chars(text, text + sizeof text, x).ptr;
     return this->Append(text, end);
   }
-  template <typename Integer, typename = std::enable_if_t<std::is_integral<Integer>::value>>
+  template<typename Integer, typename = std::enable_if_t<std::is_integral<Integer>::value>>
   amTextOutput& operator<<(Integer x)
   {
     char text[24];

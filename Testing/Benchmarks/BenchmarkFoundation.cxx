@@ -47,7 +47,8 @@ void Phantom(benchmark::State& state)
     voxels = vtkImageData::SafeDownCast(src->GetOutputDataObject(0))->GetNumberOfPoints();
   }
   state.counters["voxels"] = static_cast<double>(voxels);
-  state.counters["voxels/s"] = benchmark::Counter(static_cast<double>(voxels), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["voxels/s"] =
+    benchmark::Counter(static_cast<double>(voxels), benchmark::Counter::kIsIterationInvariantRate);
   state.counters["peak_MB"] = PeakMegabytes();
 }
 BENCHMARK(Phantom)->Arg(20)->Arg(10)->Arg(5)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();

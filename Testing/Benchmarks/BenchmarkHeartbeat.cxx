@@ -10,11 +10,11 @@
 // a self-convergence study of the model we ship.
 #include "../Cxx/amSimulationTestUtilities.h"
 #include "amCardiacLandmarks.h"
-#include "amMitchellSchaeffer.h"
-#include "amMonodomainStepper.h"
 #include "amFitzHughNagumoSolver.h"
 #include "amLabelMapTetrahedralize.h"
 #include "amLeadFieldECG.h"
+#include "amMitchellSchaeffer.h"
+#include "amMonodomainStepper.h"
 #include "amReactionEikonalSolver.h"
 #include "amThoraxPhantomSource.h"
 #include "amTorsoPotential.h"
@@ -71,7 +71,8 @@ void Slab(double dx, double dt)
     double bestD = 1e300;
     for (std::size_t i = 0; i < fem.Points.size(); ++i)
     {
-      const double d = std::fabs(fem.Points[i][0] - x) + std::fabs(fem.Points[i][1] - y) + std::fabs(fem.Points[i][2] - z);
+      const double d =
+        std::fabs(fem.Points[i][0] - x) + std::fabs(fem.Points[i][1] - y) + std::fabs(fem.Points[i][2] - z);
       if (d < bestD)
       {
         bestD = d;

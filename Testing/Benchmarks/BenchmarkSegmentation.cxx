@@ -22,8 +22,8 @@
 #include <chrono>
 #include <map>
 #include <string>
-#include <sys/stat.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 
 namespace
 {

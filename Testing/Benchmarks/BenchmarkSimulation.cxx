@@ -85,7 +85,8 @@ void Phantom(double facet, double cell, double spacing, double endTime, double d
 
 void Slab()
 {
-  std::printf("Niederer-style slab 20 x 7 x 3 mm, fibers along x (conductivity 3.5 / 0.39 mm^2/ms), corner stimulus:\n");
+  std::printf(
+    "Niederer-style slab 20 x 7 x 3 mm, fibers along x (conductivity 3.5 / 0.39 mm^2/ms), corner stimulus:\n");
   std::printf("  %6s %6s %10s %10s %10s %8s\n", "dx", "dt", "P1 ms", "centre ms", "P8 ms", "wall s");
   for (double dx : { 0.5, 0.25, 0.2 })
     for (double dt : { 0.1, 0.05, 0.01 })

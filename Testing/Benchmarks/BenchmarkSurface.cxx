@@ -3,6 +3,8 @@
 // at the same triangle count, on accuracy and triangle quality). Phantom at 1 mm and 0.5 mm and
 // the frog. Prints seconds, triangles, Hausdorff distances and the process's peak memory.
 // Run: build/bin/BenchmarkSurface [--benchmark_filter=...]
+#include "../Cxx/amAnalyticDistance.h"
+#include "../Cxx/amSurfaceTestUtilities.h"
 #include "amCurvatureMetric.h"
 #include "amImageReader.h"
 #include "amLabelSurface.h"
@@ -10,8 +12,6 @@
 #include "amSurfaceDistance.h"
 #include "amSurfaceSmoothing.h"
 #include "amThoraxPhantomSource.h"
-#include "../Cxx/amAnalyticDistance.h"
-#include "../Cxx/amSurfaceTestUtilities.h"
 
 #include "amCgalIsotropicRemeshing.h"
 
@@ -20,8 +20,8 @@
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkDiscreteFlyingEdges3D.h"
-#include "vtkFieldData.h"
 #include "vtkDiscreteMarchingCubes.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -127,11 +127,7 @@ void Extract(benchmark::State& state)
 }
 // (data, method): data 10 = phantom 1 mm, 5 = phantom 0.5 mm, 0 = frog;
 // method 0 = amLabelSurface, 1 = vtkDiscreteFlyingEdges3D, 2 = vtkDiscreteMarchingCubes.
-BENCHMARK(Extract)
-  ->ArgsProduct({ { 10, 5, 0 }, { 0, 1, 2 } })
-  ->Unit(benchmark::kSecond)
-  ->Iterations(1)
-  ->UseRealTime();
+BENCHMARK(Extract)->ArgsProduct({ { 10, 5, 0 }, { 0, 1, 2 } })->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 /// The smoothed 1 mm phantom surface (computed once).
 vtkPolyData* Smoothed()
@@ -149,7 +145,6 @@ vtkPolyData* Smoothed()
   }
   return smooth;
 }
-
 
 /// Triangles, Hausdorff and mean distance to the reference, and the angle figures.
 void SurfaceCounters(benchmark::State& state, vtkPolyData* result, vtkPolyData* reference)
@@ -208,8 +203,8 @@ void Remesh(benchmark::State& state)
     {
       vtkNew<vtkQuadricDecimation> q;
       q->SetInputData(smooth);
-      q->SetTargetReduction(1.0 - static_cast<double>(remeshedTriangles ? remeshedTriangles : 227000) /
-          smooth->GetNumberOfCells());
+      q->SetTargetReduction(
+        1.0 - static_cast<double>(remeshedTriangles ? remeshedTriangles : 227000) / smooth->GetNumberOfCells());
       q->Update();
       result = q->GetOutput();
     }
@@ -285,7 +280,8 @@ void OuterRemesh(benchmark::State& state)
     {
       // Edge length for the same count (equilateral triangles of the surface's area), corrected
       // once by the count the first run gives; the second run is the one timed.
-      const vtkIdType target = ours.count(static_cast<int>(state.range(1))) ? ours[static_cast<int>(state.range(1))] : 92000;
+      const vtkIdType target =
+        ours.count(static_cast<int>(state.range(1))) ? ours[static_cast<int>(state.range(1))] : 92000;
       double area = 0;
       vtkIdType npts;
       const vtkIdType* ids;
@@ -315,7 +311,11 @@ void OuterRemesh(benchmark::State& state)
 }
 // (method, tolerance in 1/100 mm): method 0 = amCurvatureMetric + amMetricRemeshing, 1 = CGAL
 // isotropic_remeshing to the same triangle count.
-BENCHMARK(OuterRemesh)->ArgsProduct({ { 0, 1 }, { 10, 25, 50 } })->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(OuterRemesh)
+  ->ArgsProduct({ { 0, 1 }, { 10, 25, 50 } })
+  ->Unit(benchmark::kSecond)
+  ->Iterations(1)
+  ->UseRealTime();
 }
 
 BENCHMARK_MAIN();

@@ -85,7 +85,8 @@ void Tetrahedralize(benchmark::State& state)
   }
   state.counters["triangles"] = static_cast<double>(surface->GetNumberOfCells());
   state.counters["tetrahedra"] = static_cast<double>(tets);
-  state.counters["tets_per_s"] = benchmark::Counter(static_cast<double>(tets), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["tets_per_s"] =
+    benchmark::Counter(static_cast<double>(tets), benchmark::Counter::kIsIterationInvariantRate);
   const vtkIdType all = table->GetNumberOfRows() - 1;
   state.counters["meanQ"] = table->GetValueByName(all, "MeanQuality").ToDouble();
   state.counters["worstQ"] = table->GetValueByName(all, "MaximumQuality").ToDouble();

@@ -33,8 +33,8 @@ vtkSmartPointer<vtkPolyData> amBench::CgalIsotropicRemeshing(vtkPolyData* surfac
   vtkCellArray* polys = surface->GetPolys();
   for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
     if (n == 3)
-      triangles.push_back({ static_cast<std::size_t>(ids[0]), static_cast<std::size_t>(ids[1]),
-        static_cast<std::size_t>(ids[2]) });
+      triangles.push_back(
+        { static_cast<std::size_t>(ids[0]), static_cast<std::size_t>(ids[1]), static_cast<std::size_t>(ids[2]) });
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   PMP::isotropic_remeshing(faces(mesh), edgeLength, mesh, CGAL::parameters::number_of_iterations(iterations));

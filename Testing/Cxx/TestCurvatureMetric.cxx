@@ -161,8 +161,8 @@ TEST(CurvatureMetric, GradationBoundsSizeGrowth)
   // Isotropic: the trace of the metric is 3 / h^2.
   vtkDataArray* metric = Array(graded, "Metric");
   const double h = hg->GetComponent(0, 0);
-  EXPECT_NEAR(metric->GetComponent(0, 0) + metric->GetComponent(0, 1) + metric->GetComponent(0, 2), 3 / (h * h),
-    1e-6 / (h * h));
+  EXPECT_NEAR(
+    metric->GetComponent(0, 0) + metric->GetComponent(0, 1) + metric->GetComponent(0, 2), 3 / (h * h), 1e-6 / (h * h));
 }
 
 TEST(CurvatureMetric, SmoothedVoxelSphere)

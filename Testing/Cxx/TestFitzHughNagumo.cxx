@@ -95,7 +95,7 @@ TEST(FitzHughNagumo, PlaneWaveSpeedConvergesInSpace)
     EXPECT_GT(order, 1.7); // second order
     EXPECT_LT(order, 2.5);
   }
-  EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.03); // within 3 % on the finest mesh
+  EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.03);  // within 3 % on the finest mesh
   EXPECT_LT(std::fabs(c[3] - Exact) / Exact, 0.001); // what it does: within 0.1 %
 }
 
@@ -137,8 +137,8 @@ TEST(FitzHughNagumo, NiedererSlabActivation)
       return act->GetComponent(out->FindPoint(p[0], p[1], p[2]), 0);
     };
     const double p1 = at(0, 0, 0), centre = at(10, 3.5, 1.5), p8 = at(20, 7, 3);
-    std::printf("Niederer-style slab dx = %.2f mm, dt = 0.05 ms: P1 %.2f ms, centre %.2f ms, P8 %.2f ms\n", dx, p1,
-      centre, p8);
+    std::printf(
+      "Niederer-style slab dx = %.2f mm, dt = 0.05 ms: P1 %.2f ms, centre %.2f ms, P8 %.2f ms\n", dx, p1, centre, p8);
     EXPECT_DOUBLE_EQ(solver->GetActivatedFraction(), 1.0);
     // The far corner is not always last: fronts run faster along the no-flux walls than through the
     // middle, as in the benchmark's own solutions; the corner of the stimulus is first.
@@ -204,7 +204,8 @@ TEST(FitzHughNagumo, TimeDependentOutputAndFullCycle)
   EXPECT_GE(minAct, 0.0);
   EXPECT_LT(maxU500, 0.1);
   const double p0[3] = { 5, 0, 0 }, p1[3] = { 15, 0, 0 }, p2[3] = { 25, 0, 0 };
-  const double a0 = act->GetComponent(out->FindPoint(p0[0], p0[1], p0[2]), 0), a1 = act->GetComponent(out->FindPoint(p1[0], p1[1], p1[2]), 0),
+  const double a0 = act->GetComponent(out->FindPoint(p0[0], p0[1], p0[2]), 0),
+               a1 = act->GetComponent(out->FindPoint(p1[0], p1[1], p1[2]), 0),
                a2 = act->GetComponent(out->FindPoint(p2[0], p2[1], p2[2]), 0);
   EXPECT_LT(a0, a1);
   EXPECT_LT(a1, a2);

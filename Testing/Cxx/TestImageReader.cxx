@@ -109,8 +109,8 @@ TEST(ImageReader, TorsoLabelsAnisotropic)
 }
 TEST(ImageReader, FrogMetaImageCompressed)
 {
-  CheckHeader({ "vtk_frog_tissue_labels/frogtissue.mhd", { 500, 470, 136 }, { 1, 1, 1.5 }, VTK_UNSIGNED_CHAR,
-    { 0, 29 }, "LPS" });
+  CheckHeader(
+    { "vtk_frog_tissue_labels/frogtissue.mhd", { 500, 470, 136 }, { 1, 1, 1.5 }, VTK_UNSIGNED_CHAR, { 0, 29 }, "LPS" });
 }
 TEST(ImageReader, FrogUnderstatedCompressedSizeIsRepaired)
 {
@@ -162,8 +162,8 @@ TEST(ImageReader, TruncatedCompressedStreamIsAnError)
 }
 TEST(ImageReader, HeadMRMetaImage)
 {
-  CheckHeader({ "vtk_head_mr_volume/HeadMRVolume.mhd", { 48, 62, 42 }, { 4, 4, 4 }, VTK_UNSIGNED_CHAR, { 0, 255 },
-    "LPS" });
+  CheckHeader(
+    { "vtk_head_mr_volume/HeadMRVolume.mhd", { 48, 62, 42 }, { 4, 4, 4 }, VTK_UNSIGNED_CHAR, { 0, 255 }, "LPS" });
 }
 TEST(ImageReader, HeadCTNrrdSliceStack)
 {

@@ -146,8 +146,8 @@ TEST(ImageWriter, LabelNamesGoToATableBeside)
   int idx = -1, sr = -1, sg = -1, sb = -1, vis = -1, msh = -1;
   double alpha = -1;
   char label[64];
-  ASSERT_EQ(std::sscanf(snap[5].c_str(), "%d %d %d %d %lf %d %d \"%63[^\"]\"", &idx, &sr, &sg, &sb, &alpha, &vis, &msh,
-              label),
+  ASSERT_EQ(
+    std::sscanf(snap[5].c_str(), "%d %d %d %d %lf %d %d \"%63[^\"]\"", &idx, &sr, &sg, &sb, &alpha, &vis, &msh, label),
     8);
   EXPECT_EQ(idx, 5);
   EXPECT_EQ(std::vector<int>({ sr, sg, sb }), std::vector<int>({ r, g, b }));

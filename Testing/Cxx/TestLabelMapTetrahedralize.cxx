@@ -4,11 +4,11 @@
 #include "amAtlasChain.h" // amTest::DistinctValues
 #include "amImageReader.h"
 #include "amLabelMapTetrahedralize.h"
-#include "amTetraMeshChecks.h"
 #include "amMeshQuality.h"
 #include "amSurfaceTestUtilities.h"
 #include "amSyntheticAtlasSource.h"
 #include "amTestUtilities.h"
+#include "amTetraMeshChecks.h"
 #include "amThoraxPhantomSource.h"
 
 #include "vtkCell.h"

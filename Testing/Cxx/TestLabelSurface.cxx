@@ -4,9 +4,9 @@
 #include "amSurfaceTestUtilities.h"
 #include "amTestUtilities.h"
 
-#include "vtkExecutive.h"
-#include "amThoraxPhantomSource.h"
 #include "amImageReader.h"
+#include "amThoraxPhantomSource.h"
+#include "vtkExecutive.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -72,9 +72,8 @@ void ExpectNoDuplicateOrDegenerate(vtkPolyData* pd)
 
 TEST(LabelSurface, SingleVoxelIsACube)
 {
-  auto img = amTest::LabelMap(3, 3, 3, 2.0, kOrigin, [](double x, double y, double z) {
-    return (x == 2 && y == 2 && z == 2) ? 7 : 0;
-  });
+  auto img = amTest::LabelMap(
+    3, 3, 3, 2.0, kOrigin, [](double x, double y, double z) { return (x == 2 && y == 2 && z == 2) ? 7 : 0; });
   vtkNew<amLabelSurface> ls;
   ls->SetInputData(img);
   ls->Update();

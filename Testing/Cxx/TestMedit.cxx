@@ -1,7 +1,7 @@
 // Medit .mesh/.sol: a round trip keeps every number; malformed files give the line of the problem.
+#include "amBoxMesh.h"
 #include "amMeditReader.h"
 #include "amMeditWriter.h"
-#include "amBoxMesh.h"
 #include "amTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -13,9 +13,9 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <cmath>
-#include <map>
 #include <cstdio>
 #include <fstream>
+#include <map>
 
 namespace
 {

@@ -79,9 +79,8 @@ TEST(MetricRemeshing, TwoMaterialBallUniformSize)
 {
   // A ball of radius 12 voxels split into labels 1 (x < 0) and 2: a junction circle.
   const double origin[3] = { -15.5, -15.5, -15.5 };
-  auto img = amTest::LabelMap(32, 32, 32, 1.0, origin, [](double x, double y, double z) {
-    return x * x + y * y + z * z < 144 ? (x < 0 ? 1 : 2) : 0;
-  });
+  auto img = amTest::LabelMap(32, 32, 32, 1.0, origin,
+    [](double x, double y, double z) { return x * x + y * y + z * z < 144 ? (x < 0 ? 1 : 2) : 0; });
   vtkNew<amLabelSurface> ls;
   ls->SetInputData(img);
   vtkNew<amSurfaceSmoothing> sm;
@@ -326,9 +325,8 @@ TEST(MetricRemeshing, AnisotropicTubeStretchesAlongTheAxis)
   // the same bound. (Before gradation graded each principal size on its own, the anisotropic
   // metric was isotropic in effect and both runs gave the same mesh.)
   const double origin[3] = { -39.5, -11.5, -11.5 };
-  auto img = amTest::LabelMap(80, 24, 24, 1.0, origin, [](double x, double y, double z) {
-    return y * y + z * z < 49 && std::fabs(x) < 32 ? 1 : 0;
-  });
+  auto img = amTest::LabelMap(80, 24, 24, 1.0, origin,
+    [](double x, double y, double z) { return y * y + z * z < 49 && std::fabs(x) < 32 ? 1 : 0; });
   vtkNew<amLabelSurface> ls;
   ls->SetInputData(img);
   vtkNew<amSurfaceSmoothing> sm;
@@ -379,7 +377,8 @@ TEST(MetricRemeshing, AnisotropicTubeStretchesAlongTheAxis)
       nAcross ? across / nAcross : 0.0 };
   };
   const Result iso = run(false), aniso = run(true);
-  std::printf("isotropic: %lld triangles, Hausdorff %.3f, along %.2f across %.2f mm; anisotropic: %lld, %.3f, %.2f, %.2f\n",
+  std::printf(
+    "isotropic: %lld triangles, Hausdorff %.3f, along %.2f across %.2f mm; anisotropic: %lld, %.3f, %.2f, %.2f\n",
     static_cast<long long>(iso.Triangles), iso.Hausdorff, iso.Along, iso.Across,
     static_cast<long long>(aniso.Triangles), aniso.Hausdorff, aniso.Along, aniso.Across);
   // Measured: isotropic 4 042 triangles (edges 1.3 and 1.4 mm), anisotropic 1 782 (3.9 along, 2.0
@@ -455,7 +454,9 @@ TEST(MetricRemeshing, TinyFragmentsNeverBecomeTetrahedra)
       return 0;
     // Single voxels, 2x1 bars and 2x2 plates on a 4-voxel lattice, labels 1 and 2.
     const int ci = (i - 2) % 4, cj = (j - 2) % 4, kind = ((i - 2) / 4 + (j - 2) / 4) % 3;
-    const bool in = kind == 0 ? (ci == 0 && cj == 0 && k == 4) : kind == 1 ? (ci < 2 && cj == 0 && k == 4) : (ci < 2 && cj < 2);
+    const bool in = kind == 0 ? (ci == 0 && cj == 0 && k == 4)
+      : kind == 1             ? (ci < 2 && cj == 0 && k == 4)
+                              : (ci < 2 && cj < 2);
     return in ? 1 + ((i - 2) / 4) % 2 : 0;
   });
   vtkNew<amLabelSurface> ls;
@@ -473,7 +474,9 @@ TEST(MetricRemeshing, TinyFragmentsNeverBecomeTetrahedra)
   std::vector<vtkIdType> parent(static_cast<size_t>(np));
   for (vtkIdType i = 0; i < np; ++i)
     parent[i] = i;
-  std::function<vtkIdType(vtkIdType)> find = [&](vtkIdType x) { return parent[x] == x ? x : parent[x] = find(parent[x]); };
+  std::function<vtkIdType(vtkIdType)> find = [&](vtkIdType x) {
+    return parent[x] == x ? x : parent[x] = find(parent[x]);
+  };
   vtkIdType npts;
   const vtkIdType* ids;
   for (out->GetPolys()->InitTraversal(); out->GetPolys()->GetNextCell(npts, ids);)

@@ -6,11 +6,11 @@
 // near junctions. See README, Known limits.
 #include "amImageReader.h"
 #include "amLabelSurface.h"
+#include "amMetricRemeshing.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
 #include "amSurfaceSmoothing.h"
 #include "amTestUtilities.h"
-#include "amMetricRemeshing.h"
 #include "amThoraxPhantomSource.h"
 
 #include "vtkCellArray.h"
@@ -186,7 +186,6 @@ TEST(SelfIntersection, FrogSmoothedAcrossInterfaces)
   EXPECT_TRUE(amSelfIntersection::AllTriangles(mesh, mesh.Points).empty());
   ExpectNone(out, "smoothed frog");
 }
-
 
 // The whole-surface check of a large surface runs as two halves at once, and a check of a few
 // triangles against the rest finds the same crossings: on the phantom's 2 mm surface (over 100 k

@@ -75,7 +75,7 @@ TEST(SurfaceSmoothing, RemovesTheStaircaseWithinTheBound)
   OuterError(sm->GetOutput(), maxErr, meanErr);
   EXPECT_NEAR(sm->GetUsedMaximumDisplacement(), 0.5 * std::sqrt(3.0), 1e-12);
   EXPECT_GT(rawMean, 0.3);
-  EXPECT_LT(meanErr, 0.12);     // voxels
+  EXPECT_LT(meanErr, 0.12); // voxels
   EXPECT_LT(maxErr, 0.55);
   EXPECT_LT(meanErr, rawMean / 3);
   vtkDataArray* disp = sm->GetOutput()->GetPointData()->GetArray("Displacement");

@@ -48,7 +48,8 @@ struct Cap
       if (this->M.Alive[t])
       {
         const Tet& x = this->M.T[t];
-        const double v = amTetraGeometry::SignedVolume(this->M.X(x[0]), this->M.X(x[1]), this->M.X(x[2]), this->M.X(x[3]));
+        const double v =
+          amTetraGeometry::SignedVolume(this->M.X(x[0]), this->M.X(x[1]), this->M.X(x[2]), this->M.X(x[3]));
         EXPECT_GT(v, 0);
         volume += v;
         worst = std::min(worst, this->M.Q[t]);
@@ -70,7 +71,7 @@ TEST(TetraImprove, SplitFaceMendsACapWithoutAFreeEdge)
   ASSERT_TRUE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 2), 0.2));
   EXPECT_EQ(cap.Alive(), 6);
   EXPECT_EQ(cap.M.Inc.size(), 6u);
-  EXPECT_EQ(cap.M.Inc[5].size(), 6u); // the new vertex is in all six
+  EXPECT_EQ(cap.M.Inc[5].size(), 6u);    // the new vertex is in all six
   EXPECT_LT(cap.Points[3 * 5 + 2], 0.0); // below the face, towards e
   const auto [worstAfter, volumeAfter] = cap.WorstAndVolume();
   EXPECT_GE(worstAfter, 0.2);
@@ -98,7 +99,6 @@ TEST(TetraImprove, SplitFaceUndoneBelowItsGoalAndNeverOnAFixedFace)
   // A face on one element only (the mesh's boundary) has nothing to split into.
   EXPECT_FALSE(amTetraImprove::SplitFace(cap.M, amTetraImprove::Sorted(0, 1, 3), 0.2));
 }
-
 
 // SmoothAll smooths each colour class of SmoothingColours on the threads at once: the mesh it
 // leaves is, bit for bit, the serial loop's over the classes in turn, on two threads and on one.

@@ -12,14 +12,14 @@
 #include "amThoraxPhantomSource.h"
 
 #include "vtkCellArray.h"
-#include "vtkExecutive.h"
-#include "vtkImageData.h"
-#include "vtkMath.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -31,8 +31,8 @@
 
 #include <algorithm>
 #include <array>
-#include <iostream>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <set>
 
@@ -218,8 +218,7 @@ TEST(Tetrahedralize, SizesGrowAwayFromTheSurfaceAtTheGradation)
       }
       for (int i = 0; i < 4; ++i)
         for (int j = i + 1; j < 4; ++j)
-          longest = std::max(longest,
-            std::sqrt(vtkMath::Distance2BetweenPoints(p[i], p[j])));
+          longest = std::max(longest, std::sqrt(vtkMath::Distance2BetweenPoints(p[i], p[j])));
       const double depth = 20 - std::max({ std::fabs(centre[0]), std::fabs(centre[1]), std::fabs(centre[2]) });
       if (depth > 12)
       {
@@ -382,8 +381,8 @@ TEST(Tetrahedralize, PhantomThroughTheChain)
   std::cout << "TetGen: mean Q " << before.Mean << ", worst " << before.Worst << " (off the surface "
             << before.WorstInside << "), " << before.Above10 << " above 10, smallest dihedral "
             << before.MinimumDihedral << "; improved: mean Q " << after.Mean << ", worst " << after.Worst
-            << " (off the surface " << after.WorstInside << "), " << after.Above10
-            << " above 10, smallest dihedral " << after.MinimumDihedral << "\n";
+            << " (off the surface " << after.WorstInside << "), " << after.Above10 << " above 10, smallest dihedral "
+            << after.MinimumDihedral << "\n";
   // The improvement lowers the mean and the worst element off the surface; the worst elements
   // that remain stand on surface triangles with angles of a few degrees or span two surface
   // sheets a voxel apart (all four vertices on the kept surface): no flip or interior move can

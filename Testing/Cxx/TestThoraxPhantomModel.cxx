@@ -50,15 +50,16 @@ TEST(ThoraxPhantomModel, BloodPoolsAreWalledInsideTheHeart)
         while (true)
         {
           const double y[3] = { c[0] + (t + 0.1) * d[0], c[1] + (t + 0.1) * d[1], c[2] + (t + 0.1) * d[2] };
-          const bool inside = pool == M::LeftVentricleBlood ? model.InsideLeftVentricle(y) : model.InsideRightVentricle(y);
+          const bool inside =
+            pool == M::LeftVentricleBlood ? model.InsideLeftVentricle(y) : model.InsideRightVentricle(y);
           if (!inside)
             break;
           t += 0.1;
         }
         for (int i = 0; i < 3; ++i)
           x[i] = c[i] + (t + 3.0) * d[i];
-        EXPECT_TRUE(model.InsideHeart(x)) << M::LabelName(pool) << " wall thinner than 3 mm towards " << d[0] << " "
-                                          << d[1] << " " << d[2];
+        EXPECT_TRUE(model.InsideHeart(x))
+          << M::LabelName(pool) << " wall thinner than 3 mm towards " << d[0] << " " << d[1] << " " << d[2];
         ++checked;
       }
     EXPECT_EQ(checked, 48 * 23);

@@ -1,6 +1,6 @@
 // The thorax phantom source: geometry, exact label volumes, HU statistics, determinism, errors.
-#include "amThoraxPhantomSource.h"
 #include "amTestUtilities.h"
+#include "amThoraxPhantomSource.h"
 
 #include "vtkFieldData.h"
 #include "vtkImageData.h"

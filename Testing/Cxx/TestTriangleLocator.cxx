@@ -69,8 +69,8 @@ TEST(TriangleLocator, WithinDistanceAgreesWithClosestPointWhateverTheHint)
       ASSERT_LT(hint, static_cast<vtkIdType>(tris.size()));
       double c2[3];
       const auto& tri = tris[hint];
-      EXPECT_LE(amTriangleLocator::ClosestPointOnTriangle(x, points[tri[0]].data(), points[tri[1]].data(),
-                  points[tri[2]].data(), c2),
+      EXPECT_LE(amTriangleLocator::ClosestPointOnTriangle(
+                  x, points[tri[0]].data(), points[tri[1]].data(), points[tri[2]].data(), c2),
         r2);
     }
     else

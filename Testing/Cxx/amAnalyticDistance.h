@@ -45,8 +45,8 @@ struct AnalyticDistance
 /// Truth -> surface: the model is sampled on a grid of 'step' mm over the surface's bounds; where two
 /// neighbouring samples differ, the interface point between them (bisection to 1e-4 mm) is
 /// measured to the closest point of the surface.
-inline AnalyticDistance DistanceToPhantom(vtkPolyData* s, double step = 2.0, double resolution = 0.05,
-  double reach = 4.0)
+inline AnalyticDistance DistanceToPhantom(
+  vtkPolyData* s, double step = 2.0, double resolution = 0.05, double reach = 4.0)
 {
   const amThoraxPhantomModel model;
   AnalyticDistance r;

@@ -28,8 +28,8 @@ inline vtkSmartPointer<vtkUnstructuredGrid> BoxMesh(const int n[3], const double
   for (int k = 0; k <= n[2]; ++k)
     for (int j = 0; j <= n[1]; ++j)
       for (int i = 0; i <= n[0]; ++i)
-        points->InsertNextPoint(origin[0] + size[0] * i / n[0], origin[1] + size[1] * j / n[1],
-          origin[2] + size[2] * k / n[2]);
+        points->InsertNextPoint(
+          origin[0] + size[0] * i / n[0], origin[1] + size[1] * j / n[1], origin[2] + size[2] * k / n[2]);
   mesh->SetPoints(points);
   vtkNew<vtkIntArray> regions;
   regions->SetName("Region");

@@ -26,8 +26,8 @@ struct LatticeMatrix
       for (int j = 0; j + 1 < n; ++j)
         for (int i = 0; i + 1 < n; ++i)
         {
-          const vtkIdType c[8] = { id(i, j, k), id(i + 1, j, k), id(i, j + 1, k), id(i + 1, j + 1, k),
-            id(i, j, k + 1), id(i + 1, j, k + 1), id(i, j + 1, k + 1), id(i + 1, j + 1, k + 1) };
+          const vtkIdType c[8] = { id(i, j, k), id(i + 1, j, k), id(i, j + 1, k), id(i + 1, j + 1, k), id(i, j, k + 1),
+            id(i + 1, j, k + 1), id(i, j + 1, k + 1), id(i + 1, j + 1, k + 1) };
           // Kuhn's six: the paths from corner 0 to corner 7 along the axes.
           static const int paths[6][2] = { { 1, 3 }, { 1, 5 }, { 2, 3 }, { 2, 6 }, { 4, 5 }, { 4, 6 } };
           for (const auto& p : paths)

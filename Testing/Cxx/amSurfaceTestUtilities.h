@@ -4,10 +4,10 @@
 
 #include "vtkCellArray.h"
 #include "vtkImageData.h"
-#include "vtkMath.h"
-#include "vtkPolyData.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTable.h"
 
@@ -19,8 +19,8 @@
 namespace amTest
 {
 /// An n0 x n1 x n2 int label map, voxel (i,j,k) at origin + spacing * (i,j,k), labels from f(x,y,z).
-inline vtkSmartPointer<vtkImageData> LabelMap(int n0, int n1, int n2, double spacing, const double origin[3],
-  const std::function<int(double, double, double)>& f)
+inline vtkSmartPointer<vtkImageData> LabelMap(
+  int n0, int n1, int n2, double spacing, const double origin[3], const std::function<int(double, double, double)>& f)
 {
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->SetDimensions(n0, n1, n2);

@@ -64,9 +64,9 @@ inline std::string TempPath(const std::string& name)
 }
 }
 
-#define AM_REQUIRE_SHARED(var, relative)                                                                         \
-  const std::string var = amTest::SharedData(relative);                                                         \
-  if (var.empty())                                                                                              \
+#define AM_REQUIRE_SHARED(var, relative)                                                                               \
+  const std::string var = amTest::SharedData(relative);                                                                \
+  if (var.empty())                                                                                                     \
   GTEST_SKIP() << "shared data '" << relative << "' is absent (expected in " ANATOMESH_SHARED_DATA ")"
 
 #endif

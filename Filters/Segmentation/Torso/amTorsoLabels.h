@@ -34,9 +34,9 @@ enum Class : std::uint8_t
 struct TissueReport
 {
   std::size_t ExteriorVoxels = 0;
-  std::size_t FatPartialVolume = 0; // fat voxels in sheets one voxel thick, handed to neighbours
-  int LungComponents = 0;           // air/lung components inside the body of at least the minimum size
-  bool LungsSplit = false;          // one air component held both lungs, parted where they meet
+  std::size_t FatPartialVolume = 0;  // fat voxels in sheets one voxel thick, handed to neighbours
+  int LungComponents = 0;            // air/lung components inside the body of at least the minimum size
+  bool LungsSplit = false;           // one air component held both lungs, parted where they meet
   bool LungsSplitAtMidPlane = false; // ... and they could not be parted there: split at the mid-plane
   int BoneComponents = 0;
 };

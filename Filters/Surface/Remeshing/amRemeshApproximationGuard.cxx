@@ -109,8 +109,8 @@ bool ApproximationGuard::ClustersStayNear(const std::vector<int>& removed, const
         {
           const auto& sides = this->In.SheetLabels[q.Sheet];
           if ((sides[0] == label || sides[1] == label) &&
-            amTriangleLocator::ClosestPointOnTriangle(
-              x.data(), q.X[0].data(), q.X[1].data(), q.X[2].data(), cl) <= eps2)
+            amTriangleLocator::ClosestPointOnTriangle(x.data(), q.X[0].data(), q.X[1].data(), q.X[2].data(), cl) <=
+              eps2)
           {
             found = true;
             break;

@@ -81,8 +81,7 @@ struct SweptTetrahedron
   {
     const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0], e3 = t[3] - t[0];
     const double six = e1.dot(e2.cross(e3));
-    const double scale =
-      e1.squaredNorm() * e1.norm() + e2.squaredNorm() * e2.norm() + e3.squaredNorm() * e3.norm();
+    const double scale = e1.squaredNorm() * e1.norm() + e2.squaredNorm() * e2.norm() + e3.squaredNorm() * e3.norm();
     this->Flat = !(std::fabs(six) > 1e-9 * scale);
     this->R[0] = e2.cross(e3) / six;
     this->R[1] = e3.cross(e1) / six;

@@ -19,11 +19,11 @@ namespace amRemesh
 class ANATOMESHFILTERSSURFACE_EXPORT Input
 {
 public:
-  std::vector<amTriangleLocator> Ref;     // per sheet: the input triangles
-  std::vector<std::vector<Vec3>> Samples; // per sheet: input vertices, edge midpoints, centroids
-  std::vector<Vec3> Points;               // the input vertices
+  std::vector<amTriangleLocator> Ref;          // per sheet: the input triangles
+  std::vector<std::vector<Vec3>> Samples;      // per sheet: input vertices, edge midpoints, centroids
+  std::vector<Vec3> Points;                    // the input vertices
   std::vector<std::array<int, 2>> SheetLabels; // per sheet: the labels on its two sides
-  double Eps = 0.2;                       // the tolerance (mm)
+  double Eps = 0.2;                            // the tolerance (mm)
 
   /// Locators and samples of every interface of the input (triangles with their sheets, the
   /// input's topology for its edges). Locators on one thread, samples on the other.

@@ -1,5 +1,5 @@
-#include "amRemesher.h"
 #include "amRemeshScheduler.h"
+#include "amRemesher.h"
 #include "amSurfaceMesh.h"
 #include "amThreading.h"
 #include "amVolumeOffsets.h"

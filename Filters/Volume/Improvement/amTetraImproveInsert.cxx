@@ -16,8 +16,7 @@ bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::
   double old = std::numeric_limits<double>::infinity();
   for (int t : tets)
     old = std::min(old, m.Q[t]);
-  const double mid[3] = { 0.5 * (m.X(u)[0] + m.X(v)[0]), 0.5 * (m.X(u)[1] + m.X(v)[1]),
-    0.5 * (m.X(u)[2] + m.X(v)[2]) };
+  const double mid[3] = { 0.5 * (m.X(u)[0] + m.X(v)[0]), 0.5 * (m.X(u)[1] + m.X(v)[1]), 0.5 * (m.X(u)[2] + m.X(v)[2]) };
   const int w = m.AddPoint(mid);
   const int region = m.R[tets[0]];
   std::vector<Tet> before;

@@ -65,8 +65,8 @@ struct Plan
 {
   enum Kind : char
   {
-    None,       // not planned: done at its turn
-    Nothing,    // no flip mends it, and no split is tried: marked tried
+    None,    // not planned: done at its turn
+    Nothing, // no flip mends it, and no split is tried: marked tried
     EdgeRemoval,
     Flip,
   } What = None;
