@@ -157,6 +157,18 @@ inline std::string OrientationCode(const double direction[9])
   }
   return code;
 }
+
+/// An ITK exception's text without its "file.cxx:309: ITK ERROR: ClassIO(0x...): " prefix (the
+/// source location and object address mean nothing to a user); the rest, its lines included, kept.
+inline std::string WithoutLocation(const std::string& text)
+{
+  const auto itk = text.find("ITK ERROR: ");
+  const auto end = itk == std::string::npos ? std::string::npos : text.find("): ", itk);
+  if (end == std::string::npos)
+    return text;
+  const auto start = text.rfind('\n', itk);
+  return text.substr(0, start == std::string::npos ? 0 : start + 1) + text.substr(end + 3);
+}
 }
 
 #endif

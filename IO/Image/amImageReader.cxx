@@ -75,11 +75,7 @@ std::string FirstLine(const std::string& text)
   const auto desc = t.find("Description: ");
   if (desc != std::string::npos)
     t = t.substr(desc + 13);
-  // "file.cxx:309: ITK ERROR: GDCMImageIO(0x...): what" -> "what".
-  const auto itk = t.find("ITK ERROR: ");
-  const auto prefixEnd = itk == std::string::npos ? std::string::npos : t.find("): ", itk);
-  if (prefixEnd != std::string::npos)
-    t = t.substr(prefixEnd + 3);
+  t = amITK::WithoutLocation(t);
   std::replace(t.begin(), t.end(), '\n', ' ');
   return t;
 }

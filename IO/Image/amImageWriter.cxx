@@ -204,10 +204,7 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     const std::string& tmp = file.TemporaryPath();
     for (auto at = error.find(tmp); at != std::string::npos; at = error.find(tmp, at + target.size()))
       error.replace(at, tmp.size(), target);
-    const auto itk = error.find("ITK ERROR: ");
-    const auto prefixEnd = itk == std::string::npos ? std::string::npos : error.find("): ", itk);
-    if (prefixEnd != std::string::npos)
-      error.erase(itk, prefixEnd + 3 - itk);
+    error = amITK::WithoutLocation(error);
     vtkErrorMacro("Cannot write '" << target << "': " << error);
     return 0;
   }

@@ -55,11 +55,6 @@ bool amHdf5Datasets::Write(const std::string& name, const std::int64_t* values, 
   return this->WriteAny(name, values, H5T_NATIVE_INT64, rows, columns);
 }
 
-bool amHdf5Datasets::Write(const std::string& name, const std::int32_t* values, std::size_t rows, std::size_t columns)
-{
-  return this->WriteAny(name, values, H5T_NATIVE_INT32, rows, columns);
-}
-
 bool amHdf5Datasets::Finish(std::string& bytes, std::string& why)
 {
   bytes.clear();

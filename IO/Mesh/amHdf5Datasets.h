@@ -26,7 +26,6 @@ public:
   /// A rows x columns dataset (columns 1: one-dimensional) at "/name", row-major.
   bool Write(const std::string& name, const double* values, std::size_t rows, std::size_t columns);
   bool Write(const std::string& name, const std::int64_t* values, std::size_t rows, std::size_t columns);
-  bool Write(const std::string& name, const std::int32_t* values, std::size_t rows, std::size_t columns);
 
   /// Closes the file and gives its bytes; false, with 'why', if making it or any write failed.
   bool Finish(std::string& bytes, std::string& why);

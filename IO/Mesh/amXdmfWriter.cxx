@@ -63,18 +63,25 @@ int amXdmfWriter::Write()
   return this->LastWriteOk ? 1 : 0;
 }
 
-std::string amXdmfWriter::HeavyDataFileName(const std::string& path)
+namespace
+{
+/// The path without its ".xdmf".
+std::string Stem(const std::string& path)
 {
   const std::string ending = ".xdmf";
   const bool has = path.size() > ending.size() && path.compare(path.size() - ending.size(), ending.size(), ending) == 0;
-  return (has ? path.substr(0, path.size() - ending.size()) : path) + ".h5";
+  return has ? path.substr(0, path.size() - ending.size()) : path;
+}
+}
+
+std::string amXdmfWriter::HeavyDataFileName(const std::string& path)
+{
+  return Stem(path) + ".h5";
 }
 
 std::string amXdmfWriter::FacetsFileName(const std::string& path)
 {
-  const std::string ending = ".xdmf";
-  const bool has = path.size() > ending.size() && path.compare(path.size() - ending.size(), ending.size(), ending) == 0;
-  return (has ? path.substr(0, path.size() - ending.size()) : path) + "_facets.xdmf";
+  return Stem(path) + "_facets.xdmf";
 }
 
 int amXdmfWriter::WriteData(vtkDataObject* data)
@@ -163,12 +170,7 @@ int amXdmfWriter::WriteData(vtkDataObject* data)
   for (vtkIdType i = 0; i < np; ++i)
     if (number[i] >= 0)
       geometry.insert(geometry.end(), &xyz[3 * i], &xyz[3 * i] + 3);
-  amXdmfGrid mesh;
-  mesh.Name = "mesh";
-  mesh.TopologyType = "Tetrahedron";
-  mesh.NodesPerElement = 4;
-  mesh.Geometry = &geometry;
-  mesh.TagNames = tagNames;
+  amXdmfGrid mesh{ "mesh", "Tetrahedron", 4, {}, &geometry, {}, tagNames };
   mesh.Topology.reserve(4 * tets.size());
   for (const auto& t : tets)
     for (int a = 0; a < 4; ++a)
@@ -186,12 +188,7 @@ int amXdmfWriter::WriteData(vtkDataObject* data)
       vectors->GetTuple(c, &a.Reals[3 * c]);
     mesh.Attributes.push_back(std::move(a));
   }
-  amXdmfGrid facets;
-  facets.Name = "facet_tags";
-  facets.TopologyType = "Triangle";
-  facets.NodesPerElement = 3;
-  facets.Geometry = &geometry;
-  facets.TagNames = tagNames;
+  amXdmfGrid facets{ "facet_tags", "Triangle", 3, {}, &geometry, {}, tagNames };
   amXdmfGrid::Attribute facetTags{ "facet_tags", 1, {}, {} };
   for (const auto& f : faces)
   {

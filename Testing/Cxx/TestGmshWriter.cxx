@@ -1,6 +1,7 @@
 // amGmshWriter: a two-region tetrahedral mesh written as Gmsh 4.1 and parsed back section by
 // section (physical groups, entities, nodes, elements); bad input leaves no file.
 #include "amGmshWriter.h"
+#include "amTestMeshes.h"
 #include "amTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -24,22 +25,8 @@ namespace
 {
 vtkSmartPointer<vtkUnstructuredGrid> TwoRegions()
 {
-  auto g = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> p;
-  p->SetDataTypeToDouble();
-  const double x[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.1, 0.2, -1.0 / 3 } };
-  for (const auto& q : x)
-    p->InsertNextPoint(q);
-  g->SetPoints(p);
-  const vtkIdType a[4] = { 0, 1, 2, 3 }, b[4] = { 0, 2, 1, 4 };
-  g->InsertNextCell(VTK_TETRA, 4, a);
-  g->InsertNextCell(VTK_TETRA, 4, b);
-  vtkNew<vtkIntArray> r;
-  r->SetName("Region");
-  r->InsertNextValue(6);
-  r->InsertNextValue(3);
-  g->GetCellData()->AddArray(r);
-  return g;
+  return amTest::TwoTetrahedra({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.1, 0.2, -1.0 / 3 } },
+    { 0, 1, 2, 3 }, { 0, 2, 1, 4 }, 6, 3);
 }
 
 std::map<std::string, std::vector<std::string>> Sections(const std::string& path)

@@ -3,6 +3,7 @@
 // leaves no file.
 #include "amOpenCARPReader.h"
 #include "amOpenCARPWriter.h"
+#include "amTestMeshes.h"
 #include "amTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -30,21 +31,9 @@ namespace
 // Two tetrahedra on five points and a sixth point no tetrahedron uses (as a mesher may leave).
 vtkSmartPointer<vtkUnstructuredGrid> Mesh()
 {
-  auto g = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> p;
-  p->SetDataTypeToDouble();
-  const double x[6][3] = { { 0, 0, 0 }, { 9, 9, 9 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.1, 0.2, -1.0 / 3 } };
-  for (const auto& q : x)
-    p->InsertNextPoint(q);
-  g->SetPoints(p);
-  const vtkIdType a[4] = { 0, 2, 3, 4 }, b[4] = { 0, 3, 2, 5 };
-  g->InsertNextCell(VTK_TETRA, 4, a);
-  g->InsertNextCell(VTK_TETRA, 4, b);
-  vtkNew<vtkIntArray> r;
-  r->SetName("Region");
-  r->InsertNextValue(5);
-  r->InsertNextValue(1);
-  g->GetCellData()->AddArray(r);
+  auto g =
+    amTest::TwoTetrahedra({ { 0, 0, 0 }, { 9, 9, 9 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.1, 0.2, -1.0 / 3 } },
+      { 0, 2, 3, 4 }, { 0, 3, 2, 5 }, 5, 1);
   vtkNew<vtkDoubleArray> f, s;
   f->SetName("Fibers");
   s->SetName("Sheets");

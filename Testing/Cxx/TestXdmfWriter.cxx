@@ -1,5 +1,6 @@
 // amXdmfWriter: a two-region mesh (and an unused point) written with its heavy data in HDF5 and inline;
 // the HDF5 datasets read back through HDF5's C library, the same bytes on a second write, bad input no file.
+#include "amTestMeshes.h"
 #include "amTestUtilities.h"
 #include "amXdmfWriter.h"
 
@@ -22,24 +23,12 @@
 
 namespace
 {
+/// TestGmshWriter's two regions, after a point no tetrahedron uses.
 vtkSmartPointer<vtkUnstructuredGrid> TwoRegionsAndAnUnusedPoint()
 {
-  auto g = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> p;
-  p->SetDataTypeToDouble();
-  const double x[6][3] = { { 9, 9, 9 }, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.1, 0.2, -1.0 / 3 } };
-  for (const auto& q : x)
-    p->InsertNextPoint(q);
-  g->SetPoints(p);
-  const vtkIdType a[4] = { 1, 2, 3, 4 }, b[4] = { 1, 3, 2, 5 };
-  g->InsertNextCell(VTK_TETRA, 4, a);
-  g->InsertNextCell(VTK_TETRA, 4, b);
-  vtkNew<vtkIntArray> r;
-  r->SetName("Region");
-  r->InsertNextValue(6);
-  r->InsertNextValue(3);
-  g->GetCellData()->AddArray(r);
-  return g;
+  return amTest::TwoTetrahedra(
+    { { 9, 9, 9 }, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.1, 0.2, -1.0 / 3 } }, { 1, 2, 3, 4 },
+    { 1, 3, 2, 5 }, 6, 3);
 }
 
 std::string Text(const std::string& path)

@@ -7,7 +7,6 @@ import codecs
 import json
 import os
 import random
-import resource
 import shutil
 import signal
 import subprocess
@@ -16,6 +15,8 @@ import tempfile
 import textwrap
 import time
 import unittest
+
+from test_bad_input import read, write  # the same helpers, one copy
 
 SOURCE = os.path.abspath(os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", "..")))
 TMP = os.environ.get("ANATOMESH_TEST_TMP", tempfile.gettempdir())
@@ -59,16 +60,13 @@ SMALL = """
 """
 
 
-def write(path, data):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "wb" if isinstance(data, bytes) else "w") as f:
-        f.write(data)
-    return path
-
-
-def read(path):
-    with open(path, "rb") as f:
-        return f.read()
+def reading(path, kind="ImageReader"):
+    """A pipeline that reads 'path' with the reader 'kind' and writes what it read."""
+    return """
+        <AnatomeshPipeline version="1">
+          <Filter name="r" type="%s"><Property name="FileName" value="%s"/></Filter>
+          <Output from="r" file="${output}/x.%s"/>
+        </AnatomeshPipeline>""" % (kind, path, "vti" if kind == "ImageReader" else "vtu")
 
 
 def run(*args, timeout=600):
@@ -314,22 +312,13 @@ class Faults(unittest.TestCase):
                                   ("loop", loop, "a symbolic link loop")):
             for kind in ("ImageReader", "MeditReader", "OpenCARPReader"):
                 with self.subTest(name, kind=kind):
-                    self.refused("%s_%s" % (name, kind), """
-                        <AnatomeshPipeline version="1">
-                          <Filter name="r" type="%s"><Property name="FileName" value="%s"/></Filter>
-                          <Output from="r" file="${output}/x.%s"/>
-                        </AnatomeshPipeline>""" % (kind, path, "vti" if kind == "ImageReader" else "vtu"),
-                                 path, words)
+                    self.refused("%s_%s" % (name, kind), reading(path, kind), path, words)
         with self.subTest("fifo_in_a_dicom_folder"):
             folder = os.path.join(ROOT, "dicom_with_fifo")
             os.makedirs(folder, exist_ok=True)
             if not os.path.exists(os.path.join(folder, "slice.dcm")):
                 os.mkfifo(os.path.join(folder, "slice.dcm"))
-            self.refused("fifo_dicom", """
-                <AnatomeshPipeline version="1">
-                  <Filter name="r" type="ImageReader"><Property name="FileName" value="%s"/></Filter>
-                  <Output from="r" file="${output}/x.vti"/>
-                </AnatomeshPipeline>""" % folder, "slice.dcm", "a FIFO (named pipe), not a regular file")
+            self.refused("fifo_dicom", reading(folder), "slice.dcm", "a FIFO (named pipe), not a regular file")
         with self.subTest("fifo_as_an_analyze_data_file"):
             header = os.path.join(ROOT, "pair.hdr")
             hdr = bytearray(348)
@@ -345,11 +334,7 @@ class Faults(unittest.TestCase):
             write(header, bytes(hdr))
             if not os.path.exists(os.path.join(ROOT, "pair.img")):
                 os.mkfifo(os.path.join(ROOT, "pair.img"))
-            self.refused("fifo_img", """
-                <AnatomeshPipeline version="1">
-                  <Filter name="r" type="ImageReader"><Property name="FileName" value="%s"/></Filter>
-                  <Output from="r" file="${output}/x.vti"/>
-                </AnatomeshPipeline>""" % header, "pair.img", "not a regular file")
+            self.refused("fifo_img", reading(header), "pair.img", "not a regular file")
         # The readers refuse them too, for Python and ParaView users (no pipeline check before them).
         script = textwrap.dedent("""
             import sys, anatomesh
@@ -372,21 +357,15 @@ class Faults(unittest.TestCase):
         write(os.path.join(ROOT, "degenerate_carp.elem"), "1\nTt 0 1 1 3 1\n")
         garbage = write(os.path.join(ROOT, "garbage.mesh"), bytes(random.Random(1).randrange(128, 256)
                                                                   for _ in range(3000)))
-        reader = """
-            <AnatomeshPipeline version="1">
-              <Filter name="r" type="%s"><Property name="FileName" value="%s"/></Filter>
-              <Output from="r" file="${output}/x.vtu"/>
-            </AnatomeshPipeline>"""
-        self.refused("degenerate_medit", reader % ("MeditReader", degenerate), "uses vertex 1 twice")
-        self.refused("degenerate_carp", reader % ("OpenCARPReader", os.path.join(ROOT, "degenerate_carp.pts")),
+        self.refused("degenerate_medit", reading(degenerate, "MeditReader"), "uses vertex 1 twice")
+        self.refused("degenerate_carp", reading(os.path.join(ROOT, "degenerate_carp.pts"), "OpenCARPReader"),
                      "appears twice")
-        stderr = self.refused("garbage_medit", reader % ("MeditReader", garbage), "unknown or unsupported section",
+        stderr = self.refused("garbage_medit", reading(garbage, "MeditReader"), "unknown or unsupported section",
                               "\\x")
         self.assertNotIn("failed: error", stderr)
         # A MetaImage header cut short: said so, not "No such file or directory" for a file that exists.
         header = write(os.path.join(ROOT, "cut.mha"), "ObjectType = Image\nNDims = 3\nDimSize = 4 4 4\n")
-        stderr = self.refused("cut_mha", reader.replace("x.vtu", "x.vti") % ("ImageReader", header),
-                              "ends without ElementDataFile")
+        stderr = self.refused("cut_mha", reading(header), "ends without ElementDataFile")
         self.assertNotIn("No such file", stderr)
 
     def test_scan_where_a_label_map_belongs_is_refused_naming_the_file(self):
@@ -424,13 +403,8 @@ class Faults(unittest.TestCase):
                     continue
                 shutil.copyfile(os.path.join(folder, name), os.path.join(two, "%03d.dcm" % n))
                 n += 1
-        reader = """
-            <AnatomeshPipeline version="1">
-              <Filter name="r" type="ImageReader"><Property name="FileName" value="%s"/></Filter>
-              <Output from="r" file="${output}/x.vti"/>
-            </AnatomeshPipeline>"""
         # The message lists both series and says what to set: its lines all reach the user.
-        self.refused("two_series", reader % two, "holds 2 series", "set SeriesUID", ": 20 files, e.g.",
+        self.refused("two_series", reading(two), "holds 2 series", "set SeriesUID", ": 20 files, e.g.",
                      ": 28 files, e.g.")
         # A JPEG 2000 slice whose codestream header is damaged: refused, the slice named.
         broken = os.path.join(ROOT, "broken_j2k")
@@ -444,7 +418,7 @@ class Faults(unittest.TestCase):
         self.assertGreater(start, 0)
         data[start + 4:start + 68] = bytes((37 * i + 11) & 255 for i in range(64))
         write(victim, bytes(data))
-        self.refused("broken_j2k", reader % broken, "cannot be decoded", victim)
+        self.refused("broken_j2k", reading(broken), "cannot be decoded", victim)
 
     # -- properties and the same-file guard ------------------------------------------------------------------
     def test_integers_out_of_range_and_detached_data_files(self):

@@ -20,10 +20,10 @@ def _alive(pid):
     return True
 
 
-def temporary_path(folder, stem, ext):
-    """A temporary file name beside the target (".STEM.tmpPID EXT"), after removing those a killed run of
-    another process left for the same target (their process is gone)."""
-    pattern = re.compile(r"^\.%s\.tmp(\d+)(_\d+)?%s$" % (re.escape(stem), re.escape(ext)))
+def remove_stale(folder, pattern):
+    """Removes the entries of 'folder' whose name matches 'pattern' (a compiled expression whose first group
+    is a process id) and whose process is gone: what a killed run left (files or folders)."""
+    import shutil
     try:
         names = os.listdir(folder or ".")
     except OSError:
@@ -31,10 +31,17 @@ def temporary_path(folder, stem, ext):
     for name in names:
         m = pattern.match(name)
         if m and int(m.group(1)) != os.getpid() and not _alive(int(m.group(1))):
+            path = os.path.join(folder, name)
             try:
-                os.remove(os.path.join(folder, name))
+                shutil.rmtree(path) if os.path.isdir(path) and not os.path.islink(path) else os.remove(path)
             except OSError:
                 pass
+
+
+def temporary_path(folder, stem, ext):
+    """A temporary file name beside the target (".STEM.tmpPID EXT"), after removing those a killed run of
+    another process left for the same target."""
+    remove_stale(folder, re.compile(r"^\.%s\.tmp(\d+)(_\d+)?%s$" % (re.escape(stem), re.escape(ext))))
     return os.path.join(folder, ".%s.tmp%d%s" % (stem, os.getpid(), ext))
 
 

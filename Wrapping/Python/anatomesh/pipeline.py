@@ -713,15 +713,10 @@ class _Series:
     .pvd) as it was. discard() removes the staging folder of a series not committed."""
 
     def __init__(self, folder, stem, path):
-        import shutil
-        pattern = re.compile(r"^\.%s\.tmp(\d+)\.frames$" % re.escape(stem))
-        for name in os.listdir(folder):  # what a killed run left
-            m = pattern.match(name)
-            if m and int(m.group(1)) != os.getpid() and not atomic._alive(int(m.group(1))):
-                shutil.rmtree(os.path.join(folder, name), ignore_errors=True)
+        atomic.remove_stale(folder, re.compile(r"^\.%s\.tmp(\d+)\.frames$" % re.escape(stem)))
         self.folder, self.path, self.names, self.text = folder, path, [], None
         self.staging = os.path.join(folder, ".%s.tmp%d.frames" % (stem, os.getpid()))
-        shutil.rmtree(self.staging, ignore_errors=True)
+        self.discard()  # this process's own, from an earlier series of the same name
         try:
             os.mkdir(self.staging)
         except OSError as e:
