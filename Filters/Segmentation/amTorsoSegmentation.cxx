@@ -291,6 +291,13 @@ int amTorsoSegmentation::RequestData(
       if (std::fabs(direction->GetElement(2, a)) > std::fabs(direction->GetElement(2, tissueParameters.AxialAxis)))
         tissueParameters.AxialAxis = a;
   }
+  // The patient's head is world +z (LPS and RAS alike): gas under the lungs is found along the
+  // index axis closest to it.
+  tissueParameters.SuperiorAxis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::fabs(direction->GetElement(2, a)) > std::fabs(direction->GetElement(2, tissueParameters.SuperiorAxis)))
+      tissueParameters.SuperiorAxis = a;
+  tissueParameters.SuperiorSign = direction->GetElement(2, tissueParameters.SuperiorAxis) > 0 ? 1 : -1;
   const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
   if (tissues.LungComponents == 0)
     vtkWarningMacro("No lungs: no air inside the body of at least " << this->MinimumComponentVolume << " mm^3.");

@@ -27,10 +27,14 @@
  * 3. the lungs are the two largest components of air inside the body (opened by a ball of
  *    LungOpening mm when it is set) whose voxels are mostly of the lung class where the scan tells
  *    aerated lung from gas (gas in the stomach or bowel is never lung), right and left by their centres' world x (x
- * towards the patient's left); where one component holds both (joined at the trachea), it is parted where the lungs
- * meet: its deepest parts, at the least depth where they fall into two lungs, and every voxel to the nearer (where no
- * depth parts it, at the body's mid-plane, with a warning). Other air inside the body goes to its neighbours, or is fat
- * when InputWindow starts above fat's -100 HU (fat then reads as air);
+ * towards the patient's left). Air under the lungs across the diaphragm is not lung: the air is cut into the basins
+ * of its depth (parts joined by necks at least two voxels thinner than their own deepest point), and a basin that
+ * lies, for more than half its voxels, under air of a larger basin with tissue between (down the index axis closest
+ * to the patient's head-feet axis) is gas or abdominal fat joined to a lung through a narrow passage; where one
+ * component holds both (joined at the trachea), it is parted where the lungs meet: its deepest parts, at the least
+ * depth where they fall into two lungs, and every voxel to the nearer (where no depth parts it, at the body's
+ * mid-plane, with a warning). Other air inside the body goes to its neighbours, or is fat when InputWindow starts above
+ * fat's -100 HU (fat then reads as air);
  * 4. the largest bone component is the spine, every other one is rib (or other bone);
  * 5. the organs of input 1 are written over these;
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it

@@ -129,10 +129,20 @@ class ChestCTToECG(unittest.TestCase):
         self.assertEqual(sorted(volume), [0, 1, 2, 3, 4, 5, 6, 7, 9, 10])
         for lung in (3, 4):  # adult lungs hold litres
             self.assertTrue(1000 < volume[lung] < 4000, volume)
+        # The gas and fat under the diaphragm (air below this window) are not lung: the right lung is
+        # the larger, and neither lung's base lies more than 25 mm below the other's.
+        self.assertGreater(volume[3], volume[4])
+        scalars = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(image.GetDimensions()[::-1])
+        base = {}
+        for lung in (3, 4):
+            slices = np.nonzero((scalars == lung).any(axis=(1, 2)))[0]
+            base[lung] = min(image.GetOrigin()[2] + image.GetDirectionMatrix().GetElement(2, 2) * image.GetSpacing()[2] * k
+                             for k in (slices[0], slices[-1]))  # world z of the lowest slice (mm)
+        self.assertLess(abs(base[3] - base[4]), 25.0, base)
         self.assertTrue(100 < volume[5] < 600, volume)  # the myocardium, 10 mm around the pools
         self.assertTrue(10 < volume[9] < 400, volume)  # spine (with the ribs joined to it)
         # The electrodes and the stimulus are computed on this body, not typed.
-        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLUnstructuredGridReader
         marks = vtkXMLPolyDataReader()
         marks.SetFileName(os.path.join(out, "chest_landmarks.vtp"))
         marks.Update()
@@ -159,6 +169,11 @@ class ChestCTToECG(unittest.TestCase):
             figures = json.load(f)["figures"]["chest_ecg_features.csv"]
         print("chest CT ECG: " + ", ".join("%s %s" % item for item in sorted(figures.items())))
         self.assertTrue(80 <= figures["QRS ms"] <= 120, figures)
+        heart = vtkXMLUnstructuredGridReader()
+        heart.SetFileName(os.path.join(out, "chest_heart_0100.vtu"))
+        heart.Update()
+        activation = vtk_to_numpy(heart.GetOutput().GetPointData().GetArray("ActivationTime"))
+        self.assertLess(abs(figures["QRS ms"] - activation.max()), 8.0, activation.max())  # the QRS spans it
         self.assertTrue(320 <= figures["QT ms"] <= 460, figures)
         for lead in ("II", "V5", "V6"):
             self.assertEqual(figures["T %s" % lead], "upright", lead)

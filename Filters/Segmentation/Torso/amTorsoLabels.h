@@ -39,6 +39,7 @@ struct TissueReport
   bool LungsSplit = false;           // one air component held both lungs, parted where they meet
   bool LungsSplitAtMidPlane = false; // ... and they could not be parted there: split at the mid-plane
   int BoneComponents = 0;
+  std::size_t GasBelowLungs = 0; // air voxels under the lungs across tissue: not lung
 };
 
 struct TissueParameters
@@ -49,6 +50,10 @@ struct TissueParameters
   bool LeftoverAirIsFat = false; // air inside the body that is not lung is fat (below the window)
   bool GasIsNotLung = false;     // a component mostly of the air class is gas, not lung (the scan
                                  // tells lung from air)
+  // The index axis closest to the patient's head-feet axis (-1: unknown), and +1 when the index
+  // grows towards the head: air under the lungs across tissue is not lung (GasBelowLungs).
+  int SuperiorAxis = -1;
+  int SuperiorSign = 1;
   // Trabecular bone: voxels brighter than TrabecularLevel (HU) that cortical bone encloses in an
   // axial slice (across index axis AxialAxis), in holes of at most MaximumMarrowArea mm^2.
   const float* HU = nullptr;
@@ -76,6 +81,13 @@ TissueReport Tissues(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
 /// parts it (the component is not two lungs joined by a thinner airway).
 bool SplitJoinedLungs(
   const amVoxelGrid& g, const amVoxelMask& lungs, std::size_t minimumVoxels, std::vector<std::uint8_t>& side);
+
+/// The air below the lungs across the diaphragm: the basins of the air's depth (amVoxel::Basins,
+/// a dynamic of two voxels) of which more than half lies under air of a larger basin with tissue
+/// between, walking down each column along superiorAxis (superiorSign +1: the index grows towards
+/// the head). The stomach's and the bowel's gas, and abdominal fat under a window that shows it as
+/// air, are joined to a lung only through narrow passages; the lungs lie under no other air.
+amVoxelMask GasBelowLungs(const amVoxelGrid& g, const amVoxelMask& air, int superiorAxis, int superiorSign);
 
 struct WallParameters
 {

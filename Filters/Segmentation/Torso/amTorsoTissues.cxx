@@ -177,6 +177,13 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     for (std::size_t v = 0; v < n; ++v)
       lungs[v] = mask[v] && fromCore[v] <= p.LungOpening;
   }
+  const amVoxelMask gas = amTorso::GasBelowLungs(g, lungs, p.SuperiorAxis, p.SuperiorSign);
+  for (std::size_t v = 0; v < n; ++v)
+    if (gas[v])
+    {
+      lungs[v] = 0;
+      ++report.GasBelowLungs;
+    }
   std::vector<int> id;
   std::vector<std::size_t> sizes;
   amVoxel::Components(g, lungs, id, sizes);

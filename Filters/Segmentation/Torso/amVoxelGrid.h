@@ -106,6 +106,15 @@ double GaussianForNoise(const amVoxelGrid& g, double noise, double target);
 /// a large value everywhere when the mask is empty). Felzenszwalb-Huttenlocher, per axis.
 std::vector<float> Distance(const amVoxelGrid& g, const amVoxelMask& mask);
 
+/// The basins of a depth map over the mask (e.g. the distance to the mask's outside): a watershed
+/// that floods from the deepest voxels down, 6-connected. Where two floods meet they merge unless
+/// each has risen at least `dynamic` (the depth's unit) above the level where they meet, so a
+/// basin is a part of the mask joined to the rest by a neck at least that much thinner than its
+/// own deepest point. basin[v] = 0..n-1 (in the order of each basin's first voxel), -1 outside the
+/// mask. Returns n.
+int Basins(const amVoxelGrid& g, const amVoxelMask& mask, const std::vector<float>& depth, double dynamic,
+  std::vector<int>& basin);
+
 /// Hands every voxel whose label is Pending to the most frequent label among its 26 neighbours
 /// that are not Pending, front by front (each front decided from the previous state, so the
 /// result does not depend on the visiting order). Returns the voxels handed over.

@@ -37,7 +37,9 @@ bool amECGFeatures::Measure(const std::vector<double>& times, const std::vector<
   for (std::size_t k = onset; k < nt && times[k] <= times[onset] + 200.0; ++k)
     if (velocity[k] > velocity[peak])
       peak = k;
-  const double quiet = 0.1 * velocity[peak];
+  // 5 %: the last, small regions to activate (the base) still move the leads; the read QRS then
+  // spans the activation, as a QRS duration does.
+  const double quiet = 0.05 * velocity[peak];
   // The J point: the first quiet sample after the peak that stays quiet for 20 ms.
   std::size_t end = nt - 1;
   for (std::size_t k = peak; k < nt; ++k)

@@ -8,7 +8,7 @@
  * - QRS onset: the first time the spatial magnitude sqrt(sum of the leads squared) exceeds 1 % of
  *   its maximum;
  * - QRS end (the J point): the first time after the spatial velocity's peak (sum over leads of
- *   |dV/dt|) from which it stays below 10 % of that peak for 20 ms;
+ *   |dV/dt|) from which it stays below 5 % of that peak for 20 ms;
  * - T end: the last time the spatial magnitude exceeds 1 % of its maximum after the QRS end; QT
  *   is T end less QRS onset;
  * - per lead, within the QRS: R the largest positive value, S the most negative; after it, T the
