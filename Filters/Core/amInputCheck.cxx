@@ -11,6 +11,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <sstream>
 #include <sys/stat.h>
 #include <vector>
 
@@ -36,6 +38,90 @@ vtkDataArray* amInputCheck::ScalarImage(vtkImageData* image, std::string& why)
   return scalars;
 }
 
+namespace
+{
+// Calls f(i, value) for the values i0..i1-1 of the first component, through a typed pointer where
+// the array is a plain buffer (GetComponent is a virtual call per value).
+template<typename F>
+void ForValues(vtkDataArray* scalars, vtkIdType i0, vtkIdType i1, F&& f)
+{
+  if (scalars->HasStandardMemoryLayout() && scalars->GetNumberOfComponents() == 1)
+  {
+    switch (scalars->GetDataType())
+    {
+      vtkTemplateMacro({
+        const VTK_TT* p = static_cast<const VTK_TT*>(scalars->GetVoidPointer(0));
+        for (vtkIdType i = i0; i < i1; ++i)
+          if (!f(i, static_cast<double>(p[i])))
+            return;
+      });
+    }
+    return;
+  }
+  for (vtkIdType i = i0; i < i1; ++i)
+    if (!f(i, scalars->GetComponent(i, 0)))
+      return;
+}
+
+std::string NotALabel(vtkDataArray* scalars, vtkIdType bad, double minimum, double maximum)
+{
+  std::ostringstream why;
+  why << "Voxel " << bad << " has value " << scalars->GetComponent(bad, 0) << ": a label map holds whole numbers "
+      << minimum << ".." << maximum;
+  if (scalars->GetDataType() == VTK_FLOAT || scalars->GetDataType() == VTK_DOUBLE)
+    why << " (this " << scalars->GetDataTypeAsString() << " array looks like an intensity image)";
+  why << ".";
+  return why.str();
+}
+}
+
+bool amInputCheck::LabelCounts(
+  vtkDataArray* scalars, double minimum, double maximum, std::map<int, vtkIdType>& counts, std::string& why)
+{
+  counts.clear();
+  minimum = std::max(minimum, -LargestLabel);
+  maximum = std::min(maximum, LargestLabel);
+  const vtkIdType n = scalars->GetNumberOfTuples(), block = 1 << 16;
+  const vtkIdType blocks = (n + block - 1) / block;
+  std::vector<std::map<int, vtkIdType>> blockCounts(static_cast<std::size_t>(blocks));
+  std::vector<vtkIdType> firstBad(static_cast<std::size_t>(blocks), -1);
+  vtkSMPTools::For(0, blocks, [&](vtkIdType b0, vtkIdType b1) {
+    for (vtkIdType b = b0; b < b1; ++b)
+    {
+      auto& mine = blockCounts[b];
+      // Runs of one label are common: the map is looked up only where the value changes.
+      double last = std::numeric_limits<double>::quiet_NaN();
+      vtkIdType* slot = nullptr;
+      ForValues(scalars, b * block, std::min(n, (b + 1) * block), [&](vtkIdType i, double v) {
+        if (v == last)
+        {
+          ++*slot;
+          return true;
+        }
+        if (!(v >= minimum && v <= maximum) || v != std::floor(v))
+        {
+          firstBad[b] = i;
+          return false;
+        }
+        last = v;
+        slot = &mine[static_cast<int>(v)];
+        ++*slot;
+        return true;
+      });
+    }
+  });
+  for (vtkIdType b = 0; b < blocks; ++b)
+    if (firstBad[b] >= 0)
+    {
+      why = NotALabel(scalars, firstBad[b], minimum, maximum);
+      return false;
+    }
+  for (const auto& mine : blockCounts)
+    for (const auto& lv : mine)
+      counts[lv.first] += lv.second;
+  return true;
+}
+
 bool amInputCheck::LabelBytes(vtkDataArray* scalars, int maximum, std::vector<unsigned char>& out, std::string& why)
 {
   const vtkIdType n = scalars->GetNumberOfTuples();
@@ -50,8 +136,7 @@ bool amInputCheck::LabelBytes(vtkDataArray* scalars, int maximum, std::vector<un
   });
   if (bad < n)
   {
-    why = "Voxel " + std::to_string(bad) + " has value " + std::to_string(scalars->GetComponent(bad, 0)) +
-      ": a label map holds whole numbers 0.." + std::to_string(maximum) + ".";
+    why = NotALabel(scalars, bad, 0, maximum);
     return false;
   }
   return true;

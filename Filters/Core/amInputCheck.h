@@ -7,8 +7,11 @@
 
 #include "AnatomeshFiltersCoreModule.h" // export macro
 
+#include <map>
 #include <string>
 #include <vector>
+
+#include "vtkType.h"
 
 class vtkDataArray;
 class vtkImageData;
@@ -22,6 +25,17 @@ public:
 
   /// The number of NaN and infinite values of the array's first component (GetRange skips NaNs).
   static long long NonFinite(vtkDataArray* scalars);
+
+  /// The label map's check, the same for every filter that reads one: every value of the
+  /// one-component array a whole number in minimum..maximum, and the voxels of each (counts, in
+  /// increasing label order). Otherwise false with 'why' naming the first voxel that is not
+  /// ("Voxel 12 has value 0.5: a label map holds whole numbers -2000000000..2000000000 (this float
+  /// array looks like an intensity image)."). On the threads; the same result whatever their count.
+  static bool LabelCounts(
+    vtkDataArray* scalars, double minimum, double maximum, std::map<int, vtkIdType>& counts, std::string& why);
+
+  /// The largest label magnitude LabelCounts accepts when no narrower range is asked for.
+  static constexpr double LargestLabel = 2.0e9;
 
   /// The values of a one-component label array as bytes, each a whole number in 0..maximum
   /// (at most 255); false with 'why' naming the first voxel that is not.

@@ -91,63 +91,14 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
       vtkErrorMacro("The label map's spacing along axis " << d << " is " << g.Spacing[d] << "; it must be positive.");
       return 0;
     }
-  const vtkIdType nVox = scalars->GetNumberOfTuples();
-  const vtkIdType slice = static_cast<vtkIdType>(g.N[0]) * g.N[1];
-  // Labels must be whole numbers: find the first offender and the distinct values, slice by slice.
-  std::vector<vtkIdType> firstBad(static_cast<size_t>(g.N[2]), -1);
-  std::vector<std::vector<int>> sliceValues(static_cast<size_t>(g.N[2]));
-  auto readSlice = [&](vtkIdType k, std::vector<double>& row) {
-    if (scalars->HasStandardMemoryLayout())
-    {
-      // Typed copy from the raw buffer (GetData/GetComponent go through virtual calls).
-      switch (scalars->GetDataType())
-      {
-        vtkTemplateMacro({
-          const VTK_TT* p = static_cast<const VTK_TT*>(scalars->GetVoidPointer(k * slice));
-          std::copy(p, p + slice, row.begin());
-        });
-      }
-      return;
-    }
-    vtkNew<vtkDoubleArray> buffer;
-    buffer->SetArray(row.data(), slice, 1);
-    scalars->GetData(k * slice, (k + 1) * slice - 1, 0, 0, buffer);
-  };
-  vtkSMPTools::For(0, g.N[2], [&](vtkIdType k0, vtkIdType k1) {
-    std::vector<double> row(static_cast<size_t>(slice));
-    for (vtkIdType k = k0; k < k1; ++k)
-    {
-      readSlice(k, row);
-      std::vector<int>& vals = sliceValues[k];
-      double last = std::numeric_limits<double>::quiet_NaN();
-      for (vtkIdType i = 0; i < slice; ++i)
-      {
-        const double v = row[i];
-        if (v == last)
-          continue;
-        if (!(std::fabs(v) < 2.0e9) || v != std::floor(v))
-        {
-          if (firstBad[k] < 0)
-            firstBad[k] = k * slice + i;
-          continue;
-        }
-        last = v;
-        const int iv = static_cast<int>(v);
-        auto it = std::lower_bound(vals.begin(), vals.end(), iv);
-        if (it == vals.end() || *it != iv)
-          vals.insert(it, iv);
-      }
-    }
-  });
-  for (vtkIdType bad : firstBad)
-    if (bad >= 0)
-    {
-      vtkErrorMacro("Voxel " << bad << " of the label map has value " << scalars->GetComponent(bad, 0)
-                             << ": labels must be whole numbers.");
-      return 0;
-    }
-  for (const auto& vals : sliceValues)
-    g.Values.insert(g.Values.end(), vals.begin(), vals.end());
+  std::map<int, vtkIdType> counts;
+  if (!amInputCheck::LabelCounts(scalars, -amInputCheck::LargestLabel, amInputCheck::LargestLabel, counts, why))
+  {
+    vtkErrorMacro(<< why);
+    return 0;
+  }
+  for (const auto& lv : counts)
+    g.Values.push_back(lv.first);
   g.Values.push_back(this->BackgroundLabel);
   std::sort(g.Values.begin(), g.Values.end());
   g.Values.erase(std::unique(g.Values.begin(), g.Values.end()), g.Values.end());
@@ -166,6 +117,25 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
     return static_cast<std::uint16_t>(std::lower_bound(g.Values.begin(), g.Values.end(), v) - g.Values.begin());
   };
   g.Background = rankOf(this->BackgroundLabel);
+  const vtkIdType nVox = scalars->GetNumberOfTuples();
+  const vtkIdType slice = static_cast<vtkIdType>(g.N[0]) * g.N[1];
+  auto readSlice = [&](vtkIdType k, std::vector<double>& row) {
+    if (scalars->HasStandardMemoryLayout())
+    {
+      // Typed copy from the raw buffer (GetData/GetComponent go through virtual calls).
+      switch (scalars->GetDataType())
+      {
+        vtkTemplateMacro({
+          const VTK_TT* p = static_cast<const VTK_TT*>(scalars->GetVoidPointer(k * slice));
+          std::copy(p, p + slice, row.begin());
+        });
+      }
+      return;
+    }
+    vtkNew<vtkDoubleArray> buffer;
+    buffer->SetArray(row.data(), slice, 1);
+    scalars->GetData(k * slice, (k + 1) * slice - 1, 0, 0, buffer);
+  };
   g.Labels.resize(static_cast<size_t>(nVox));
   vtkSMPTools::For(0, g.N[2], [&](vtkIdType k0, vtkIdType k1) {
     std::vector<double> row(static_cast<size_t>(slice));

@@ -58,9 +58,7 @@ public:
     // surface edge of the rest (where its dihedral angle is smallest, else the longest) is split
     // at its midpoint, and the flips and moves run again around them, for up to SliverRounds
     // rounds. The deviation is measured (two-sided, against the surface as it was) and kept
-    // within the bound; up to four budgets are tried (four more, regions changed first, where
-    // those leave slivers; four more where those still do, a surface edge of each sliver first
-    // collapsed along its interface or junction curve) and the one leaving fewest slivers kept.
+    // within the bound; the attempts, their order and budgets: amTetraImproveSchedule.h.
     double SliverQuality = 10;
     double SliverDihedral = 10;
     double MaximumSurfaceDeviation = 0;

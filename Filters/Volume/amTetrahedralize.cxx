@@ -2,13 +2,12 @@
 
 #include "amGradedSizeField.h"
 #include "amProvenance.h"
-#include "amQualityBars.h"
-#include "amRegionVolumes.h"
 #include "amSelfIntersection.h"
 #include "amSurfaceMesh.h"
+#include "amTetGenOutput.h"
 #include "amTetGenParts.h"
+#include "amTetraFinish.h"
 #include "amTetraGeometry.h"
-#include "amTetraMeshOptimizer.h"
 #include "amTetraRegions.h"
 #include "amTetraSurfaceCheck.h"
 #include "amThreading.h"
@@ -210,117 +209,14 @@ int amTetrahedralize::RequestData(
     vtkErrorMacro(<< why);
     return 0;
   }
-  const int* tets = out.Tetrahedra.data();
-  const double* P = out.Points.data();
-  const std::vector<std::array<vtkIdType, 2>>& subfaceTet = regions.SubfaceTet;
-  auto sourceOf = [&out](vtkIdType s) { return amTetraRegions::SourceOf(out, s); };
   this->UpdateProgress(0.9);
 
   // --- Output --------------------------------------------------------------------------------------
-  std::vector<vtkIdType> newTet(static_cast<size_t>(nTets), -1);
-  std::vector<vtkIdType> newPoint(static_cast<size_t>(nOutPoints), -1);
-  vtkIdType kept = 0;
-  for (vtkIdType t = 0; t < nTets; ++t)
-    if (regions.Label[t] != bg)
-    {
-      newTet[t] = kept++;
-      for (int i = 0; i < 4; ++i)
-        newPoint[tets[4 * t + i]] = 0;
-    }
-  if (kept == 0)
+  if (!amTetGenOutput::Build(mesh, out, regions, bg, output, interfaces, why))
   {
-    vtkErrorMacro("No tetrahedron lies in a region other than the background " << bg << ".");
+    vtkErrorMacro(<< why);
     return 0;
   }
-  // Input surface points first, in order; then the Steiner points that are used.
-  vtkIdType nPoints = 0;
-  for (vtkIdType v = 0; v < std::min(np, nOutPoints); ++v)
-    newPoint[v] = nPoints++;
-  for (vtkIdType v = np; v < nOutPoints; ++v)
-    if (newPoint[v] == 0)
-      newPoint[v] = nPoints++;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(nPoints);
-  vtkNew<vtkIdTypeArray> surfaceId;
-  surfaceId->SetName("SurfacePointId");
-  surfaceId->SetNumberOfTuples(nPoints);
-  for (vtkIdType v = 0; v < nOutPoints; ++v)
-    if (newPoint[v] >= 0)
-    {
-      points->SetPoint(newPoint[v], P + 3 * v);
-      surfaceId->SetValue(newPoint[v], v < np ? v : -1);
-    }
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(kept + 1);
-  connectivity->SetNumberOfTuples(4 * kept);
-  vtkNew<vtkIntArray> region;
-  region->SetName("Region");
-  region->SetNumberOfTuples(kept);
-  for (vtkIdType t = 0; t < nTets; ++t)
-  {
-    const vtkIdType o = newTet[t];
-    if (o < 0)
-      continue;
-    vtkIdType ids[4];
-    for (int i = 0; i < 4; ++i)
-      ids[i] = newPoint[tets[4 * t + i]];
-    if (amTetraGeometry::SignedVolume(
-          P + 3 * tets[4 * t], P + 3 * tets[4 * t + 1], P + 3 * tets[4 * t + 2], P + 3 * tets[4 * t + 3]) < 0)
-      std::swap(ids[0], ids[1]);
-    offsets->SetValue(o, 4 * o);
-    for (int i = 0; i < 4; ++i)
-      connectivity->SetValue(4 * o + i, ids[i]);
-    region->SetValue(o, regions.Label[t]);
-  }
-  offsets->SetValue(kept, 4 * kept);
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetCells(VTK_TETRA, cells);
-  output->GetCellData()->AddArray(region);
-  output->GetCellData()->SetActiveScalars("Region");
-  output->GetPointData()->AddArray(surfaceId);
-
-  vtkNew<vtkCellArray> faces;
-  faces->AllocateExact(nSub, 3 * nSub);
-  vtkNew<vtkIntArray> labels;
-  labels->SetName("Labels");
-  labels->SetNumberOfComponents(2);
-  labels->SetNumberOfTuples(nSub);
-  vtkNew<vtkIdTypeArray> source, adjacent;
-  source->SetName("SourceTriangle");
-  source->SetNumberOfTuples(nSub);
-  adjacent->SetName("Tetra");
-  adjacent->SetNumberOfComponents(2);
-  adjacent->SetNumberOfTuples(nSub);
-  for (vtkIdType s = 0; s < nSub; ++s)
-  {
-    const vtkIdType src = sourceOf(s);
-    vtkIdType ids[3] = { out.Faces[3 * s], out.Faces[3 * s + 1], out.Faces[3 * s + 2] };
-    const auto& tri = mesh.Triangles[src];
-    const Vec n0 = Cross(Sub(mesh.Points[tri[1]].data(), mesh.Points[tri[0]].data()),
-      Sub(mesh.Points[tri[2]].data(), mesh.Points[tri[0]].data()));
-    const Vec n1 = Cross(Sub(P + 3 * ids[1], P + 3 * ids[0]), Sub(P + 3 * ids[2], P + 3 * ids[0]));
-    if (Dot(n0, n1) < 0)
-      std::swap(ids[1], ids[2]);
-    for (auto& id : ids)
-      id = newPoint[id];
-    faces->InsertNextCell(3, ids);
-    labels->SetTypedTuple(s, mesh.Labels[src].data());
-    source->SetValue(s, src);
-    for (int k = 0; k < 2; ++k)
-    {
-      const vtkIdType t = subfaceTet[s][k];
-      adjacent->SetComponent(s, k, t >= 0 ? static_cast<double>(newTet[t]) : -1.0);
-    }
-  }
-  interfaces->SetPoints(points);
-  interfaces->SetPolys(faces);
-  interfaces->GetCellData()->AddArray(labels);
-  interfaces->GetCellData()->AddArray(source);
-  interfaces->GetCellData()->AddArray(adjacent);
-
   this->UpdateProgress(0.92);
 
   // The surface may move half the tolerance it was remeshed to, unless a deviation is set.
@@ -333,52 +229,39 @@ int amTetrahedralize::RequestData(
       : 0.2;
   }
 
-  // --- Quality improvement: flips and smoothing inside the regions, the surface kept ------------
-  std::ostringstream improvement;
-  this->WorstQualityBeforeImprovement = this->MeanQualityBeforeImprovement = this->SurfaceDeviation = 0;
-  this->NumberOfSlivers = 0;
-  if (this->ImproveQuality && this->ImprovementPasses > 0)
+  // --- Quality improvement, region volumes, element bars -------------------------------------------
+  // Flips and smoothing inside the regions; the surface moves only to free slivers. Each region's
+  // volume is compared with its label's voxels when the surface carries them (from amLabelSurface).
+  amTetraFinish::Settings finish;
+  finish.Improve = this->ImproveQuality && this->ImprovementPasses > 0;
+  finish.Options.Passes = this->ImprovementPasses;
+  finish.Options.MaximumSurfaceDeviation = this->SurfaceDeviationUsed;
+  finish.VoxelVolumes = input->GetFieldData()->GetArray("LabelVoxelVolumes");
+  finish.Remedy =
+    "A finer surface (a smaller TargetSize or Tolerance upstream) or a larger MaximumSurfaceDeviation frees them.";
+  finish.Progress = [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); };
+  amTetraFinish::Result finished;
+  if (!amTetraFinish::Run(output, interfaces, finish, finished, why))
   {
-    amTetraMeshOptimizer::Options options;
-    options.Passes = this->ImprovementPasses;
-    options.MaximumSurfaceDeviation = this->SurfaceDeviationUsed;
-    amTetraMeshOptimizer::Report report;
-    if (!amTetraMeshOptimizer::ImproveGrid(
-          output, interfaces, options, report, why, [this](double f) { this->UpdateProgress(0.92 + 0.08 * f); }))
-    {
-      vtkErrorMacro("Quality improvement: " << why);
-      return 0;
-    }
-    this->WorstQualityBeforeImprovement = report.WorstBefore;
-    this->MeanQualityBeforeImprovement = report.MeanBefore;
-    this->SurfaceDeviation = report.SurfaceDeviation;
-    this->NumberOfSlivers = report.Slivers;
-    improvement << " improvement: " << report.Describe();
+    vtkErrorMacro(<< why);
+    return 0;
   }
-
-  // Each region's volume against its label's voxel volume, when the surface carries them (from
-  // amLabelSurface): smoothing and remeshing within their tolerances keep large organs within 2 %.
-  this->NumberOfVolumeMisses = 0;
-  if (vtkDataArray* voxels = input->GetFieldData()->GetArray("LabelVoxelVolumes"))
-  {
-    const auto misses = amRegionVolumes::Compare(output, "Region", voxels, 1000.0, 0.02);
-    this->NumberOfVolumeMisses = static_cast<vtkIdType>(misses.size());
-    if (!misses.empty())
-      vtkWarningMacro(<< amRegionVolumes::Warning(misses));
-  }
-
+  this->WorstQualityBeforeImprovement = finished.Report.WorstBefore;
+  this->MeanQualityBeforeImprovement = finished.Report.MeanBefore;
+  this->SurfaceDeviation = finished.Report.SurfaceDeviation;
+  this->NumberOfSlivers = finished.Poor;
+  this->NumberOfVolumeMisses = static_cast<vtkIdType>(finished.VolumeMisses.size());
+  if (!finished.VolumeWarning.empty())
+    vtkWarningMacro(<< finished.VolumeWarning);
   this->NumberOfTetrahedra = output->GetNumberOfCells();
   this->NumberOfSteinerPoints = output->GetNumberOfPoints() - np;
-  // Every point in a tetrahedron, and the element bars checked whatever the parameters.
-  const std::string barWarning = amQualityBars::Finish(output, interfaces, this->NumberOfSlivers,
-    "A finer surface (a smaller TargetSize or Tolerance upstream) or a larger MaximumSurfaceDeviation frees them.");
-  if (!barWarning.empty())
-    vtkWarningMacro(<< barWarning);
+  if (!finished.BarWarning.empty())
+    vtkWarningMacro(<< finished.BarWarning);
   std::ostringstream params;
   params << "switches=" << switches << " Gradation=" << this->Gradation << " MaximumSize=" << this->MaximumSize
          << " ImproveQuality=" << this->ImproveQuality << " ImprovementPasses=" << this->ImprovementPasses
          << " MaximumSurfaceDeviation=" << this->SurfaceDeviationUsed << " groups=" << this->NumberOfGroups
-         << " tetrahedra=" << this->NumberOfTetrahedra << improvement.str();
+         << " tetrahedra=" << this->NumberOfTetrahedra << finished.Describe();
   amProvenance::Record(output, input, "amTetrahedralize", params.str());
   this->UpdateProgress(1.0);
   return 1;

@@ -1,4 +1,5 @@
 #include "amTetraImproveMesh.h"
+#include "amTetraImproveSchedule.h"
 
 #include "amMeshQuality.h"
 
@@ -88,14 +89,6 @@ double Moved(const Mesh& m, const Tet& x)
   return most;
 }
 
-/// What an attempt does first in each round.
-enum class First
-{
-  Slide,    // surface vertex slides
-  Relabel,  // region changes
-  Collapse, // surface edge collapses
-};
-
 /// Collapses a surface edge of sliver t, the shortest that collapses (either way) within
 /// maxDeviation: the displacement, or -1.
 double CollapseShortest(Mesh& m, int t, double maxDeviation, std::unordered_map<int, long>& regionCount)
@@ -134,9 +127,9 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
   for (size_t t = 0; t < m.T.size(); ++t)
     if (m.Alive[t])
       ++regionCount[m.R[t]];
-  const double slide = 0.75 * budget;
-  std::unordered_set<int> relabelled;              // once each: a sliver handed back and forth frees nothing
-  const double goal = 1.05 * SliverClear(options); // a margin: the bar is on Q and angles, the goal on the objective
+  const double slide = SliverSchedule::SlideShare * budget;
+  std::unordered_set<int> relabelled; // once each: a sliver handed back and forth frees nothing
+  const double goal = SliverSchedule::GoalMargin * SliverClear(options);
   for (int round = 1; round <= options.SliverRounds; ++round)
   {
     long changes = 0;
@@ -194,14 +187,7 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
 {
   const std::vector<Tri> surfaceBefore(m.FixedFaces.begin(), m.FixedFaces.end());
   m.Origin = m.P;
-  // The operations bound their own displacement; together they may exceed the budget where
-  // several act on one place. The deviation is measured, and the attempt is made again from the
-  // same mesh with another budget: smaller after one that went past MaximumSurfaceDeviation,
-  // between the two after one within it that left slivers (which slivers the rounds free
-  // depends on the budget in no simple way). Where four budgets leave slivers, four more are
-  // tried with the regions changed first (First::Relabel), and where those do, four more with a
-  // surface edge of each sliver collapsed first (First::Collapse). The best within the bound is
-  // kept (fewest slivers, the first of equals); none within it leaves the mesh as it was.
+  // The attempts and their budgets: amTetraImproveSchedule.h.
   const std::vector<double> points = m.P;
   const Mesh saved = m;
   const amTetraMeshOptimizer::Report savedReport = report;
@@ -210,17 +196,10 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
   amTetraMeshOptimizer::Report bestReport = savedReport;
   long bestSlivers = -1;
   const double bound = options.MaximumSurfaceDeviation;
-  constexpr int Budgets = 4, Orders = 3; // budgets per order of the operations (First)
-  double budget = bound, within = 0, past = std::numeric_limits<double>::infinity();
-  for (int attempt = 0; attempt < Orders * Budgets; ++attempt)
+  SliverSchedule schedule(bound);
+  for (int attempt = 0; attempt < schedule.Attempts(); ++attempt)
   {
-    if (attempt > 0 && attempt % Budgets == 0)
-    {
-      budget = bound; // the search again, with the other order
-      within = 0;
-      past = std::numeric_limits<double>::infinity();
-    }
-    Attempt(m, options, budget, static_cast<First>(attempt / Budgets), report, improve, fixEdges);
+    Attempt(m, options, schedule.Budget(), schedule.Order(attempt), report, improve, fixEdges);
     const double deviation = SurfaceDeviation(m, surfaceBefore);
     const long slivers = CountSlivers(m, options);
     if (deviation <= bound)
@@ -235,18 +214,10 @@ void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraM
         best.Assign(m);
         bestReport = report;
       }
-      within = std::max(within, budget);
     }
-    else
-      past = std::min(past, budget);
-    if (attempt == Orders * Budgets - 1)
+    if (attempt == schedule.Attempts() - 1)
       break;
-    if (within == 0)
-      budget *= 0.9 * bound / deviation;
-    else if (std::isfinite(past))
-      budget = 0.5 * (within + past);
-    else
-      budget = std::min(2 * within, budget * 0.98 * bound / std::max(deviation, 1e-9 * bound));
+    schedule.Record(attempt, deviation);
     m.P = points;
     m.Assign(saved);
     report = savedReport;
