@@ -59,12 +59,18 @@ double amThoraxPhantomModel::Ellipsoid::Volume() const
 }
 
 amThoraxPhantomModel::amThoraxPhantomModel()
+  : amThoraxPhantomModel(Habitus())
 {
-  this->BodyRadii[0] = 150.0;
-  this->BodyRadii[1] = 105.0;
-  this->BodyRadii[2] = 100.0;
+}
+
+amThoraxPhantomModel::amThoraxPhantomModel(const Habitus& habitus)
+{
+  // The inner body (138 x 93 x 88 mm semi-axes) is fixed; the fat lies over it.
+  this->FatThickness = habitus.FatThickness;
+  this->BodyRadii[0] = 138.0 + this->FatThickness;
+  this->BodyRadii[1] = 93.0 + this->FatThickness;
+  this->BodyRadii[2] = 88.0 + this->FatThickness;
   this->BodyExponent = 6.0;
-  this->FatThickness = 12.0;
 
   double identity[3][3];
   RotationAboutZ(0.0, identity);
@@ -73,14 +79,15 @@ amThoraxPhantomModel::amThoraxPhantomModel()
   this->Lungs[0] = MakeEllipsoid(rlc, rlr, identity);
   this->Lungs[1] = MakeEllipsoid(llc, llr, identity);
 
-  // Heart: long axis turned 30 degrees towards the patient's left-anterior side.
+  // Heart: long axis turned (by default 30 degrees) towards the patient's left-anterior side.
   double heartAxes[3][3];
-  RotationAboutZ(-30.0, heartAxes);
-  const double hc[3] = { 15.0, -25.0, -25.0 }, hr[3] = { 58.0, 45.0, 45.0 };
+  RotationAboutZ(habitus.HeartAngle, heartAxes);
+  const double k = this->HeartScale = habitus.HeartScale;
+  const double hc[3] = { 15.0, -25.0, -25.0 }, hr[3] = { 58.0 * k, 45.0 * k, 45.0 * k };
   this->Heart = MakeEllipsoid(hc, hr, heartAxes);
   double lvc[3], rvc[3];
-  const double lvLocal[3] = { 12.0, 8.0, -3.0 }, lvr[3] = { 26.0, 18.0, 30.0 };
-  const double rvLocal[3] = { -26.0, -15.0, -3.0 }, rvr[3] = { 17.0, 12.0, 26.0 };
+  const double lvLocal[3] = { 12.0 * k, 8.0 * k, -3.0 * k }, lvr[3] = { 26.0 * k, 18.0 * k, 30.0 * k };
+  const double rvLocal[3] = { -26.0 * k, -15.0 * k, -3.0 * k }, rvr[3] = { 17.0 * k, 12.0 * k, 26.0 * k };
   LocalToWorld(this->Heart, lvLocal, lvc);
   LocalToWorld(this->Heart, rvLocal, rvc);
   this->LeftVentricle = MakeEllipsoid(lvc, lvr, heartAxes);
@@ -117,6 +124,21 @@ amThoraxPhantomModel::amThoraxPhantomModel()
     this->RibA.push_back((this->BodyRadii[0] - this->FatThickness) * s - this->RibRing[0]);
     this->RibB.push_back((this->BodyRadii[1] - this->FatThickness) * s - this->RibRing[0]);
   }
+}
+
+void amThoraxPhantomModel::WorldToHeartFrame(const double world[3], double frame[3]) const
+{
+  const double d[3] = { world[0] - this->Heart.Center[0], world[1] - this->Heart.Center[1],
+    world[2] - this->Heart.Center[2] };
+  for (int i = 0; i < 3; ++i)
+    frame[i] = (this->Heart.Axes[i][0] * d[0] + this->Heart.Axes[i][1] * d[1] + this->Heart.Axes[i][2] * d[2]) /
+      this->HeartScale;
+}
+
+void amThoraxPhantomModel::HeartFrameToWorld(const double frame[3], double world[3]) const
+{
+  const double local[3] = { frame[0] * this->HeartScale, frame[1] * this->HeartScale, frame[2] * this->HeartScale };
+  LocalToWorld(this->Heart, local, world);
 }
 
 bool amThoraxPhantomModel::InsideSuperquadric(const double x[3], const double radii[3], double q)

@@ -56,7 +56,26 @@ public:
     NumberOfLabels = 11
   };
 
+  /// The patient's build: the subcutaneous fat's thickness (mm, over an inner body of fixed size,
+  /// so a larger patient has a larger body), the heart's size (a scale of every heart shape about
+  /// its centre) and its long axis's angle in the axial plane (degrees from the patient's left, the
+  /// default -30 turning it towards the left-anterior side; -45 more horizontal, -15 more vertical
+  /// in a frontal chest film's sense is not modelled: the tilt stays in the axial plane).
+  struct Habitus
+  {
+    double FatThickness = 12.0;
+    double HeartScale = 1.0;
+    double HeartAngle = -30.0;
+  };
+
   amThoraxPhantomModel();
+  explicit amThoraxPhantomModel(const Habitus& habitus);
+
+  /// A point in the heart's frame, in units of the heart's scale (the frame turns and scales with
+  /// Habitus), and back: a click placed on one heart lands at the same place of another's with
+  /// other.HeartFrameToWorld(one.WorldToHeartFrame(click)).
+  void WorldToHeartFrame(const double world[3], double frame[3]) const;
+  void HeartFrameToWorld(const double frame[3], double world[3]) const;
 
   /// Label of the point x (mm, LPS). Pure function of x: deterministic and thread-safe.
   unsigned char LabelAt(const double x[3]) const;
@@ -110,6 +129,7 @@ private:
   // Body: |x/a|^2 + |y/b|^2 + |z/c|^q <= 1 (a flattened, round-ended elliptic cylinder).
   double BodyRadii[3];
   double FatThickness;
+  double HeartScale;
   double BodyExponent;
   Ellipsoid Lungs[2];
   Ellipsoid Heart;

@@ -123,6 +123,19 @@ amThoraxPhantomSource::amThoraxPhantomSource()
   this->BloodHounsfieldUnits = amThoraxPhantomModel::HounsfieldUnits(amThoraxPhantomModel::LeftVentricleBlood);
   this->MyocardiumHounsfieldUnits = amThoraxPhantomModel::HounsfieldUnits(amThoraxPhantomModel::Myocardium);
   this->PatientRotation[0] = this->PatientRotation[1] = this->PatientRotation[2] = 0.0;
+  const amThoraxPhantomModel::Habitus habitus;
+  this->FatThickness = habitus.FatThickness;
+  this->HeartScale = habitus.HeartScale;
+  this->HeartAngle = habitus.HeartAngle;
+}
+
+amThoraxPhantomModel amThoraxPhantomSource::Model() const
+{
+  amThoraxPhantomModel::Habitus habitus;
+  habitus.FatThickness = this->FatThickness;
+  habitus.HeartScale = this->HeartScale;
+  habitus.HeartAngle = this->HeartAngle;
+  return amThoraxPhantomModel(habitus);
 }
 
 void amThoraxPhantomSource::Rotation(double r[3][3]) const
@@ -223,7 +236,7 @@ int amThoraxPhantomSource::RequestData(vtkInformation*, vtkInformationVector**, 
     img->SetOrigin(origin);
   }
 
-  const amThoraxPhantomModel model;
+  const amThoraxPhantomModel model = this->Model();
   const double* sp = this->Spacing;
   double rotation[3][3];
   this->Rotation(rotation);
@@ -336,6 +349,11 @@ int amThoraxPhantomSource::RequestData(vtkInformation*, vtkInformationVector**, 
          << " BloodHounsfieldUnits=" << bloodHU << " MyocardiumHounsfieldUnits=" << myocardiumHU
          << " PatientRotation=" << this->PatientRotation[0] << "," << this->PatientRotation[1] << ","
          << this->PatientRotation[2];
+  const amThoraxPhantomModel::Habitus usual;
+  if (this->FatThickness != usual.FatThickness || this->HeartScale != usual.HeartScale ||
+    this->HeartAngle != usual.HeartAngle)
+    params << " FatThickness=" << this->FatThickness << " HeartScale=" << this->HeartScale
+           << " HeartAngle=" << this->HeartAngle;
   for (vtkImageData* img : { ct, labels })
   {
     img->GetFieldData()->AddArray(names);
@@ -350,17 +368,17 @@ int amThoraxPhantomSource::GetLabelAtPoint(double x, double y, double z)
   const double p[3] = { x, y, z };
   double r[3][3];
   this->Rotation(r);
-  return LabelOfScannerPoint(amThoraxPhantomModel(), r, p);
+  return LabelOfScannerPoint(this->Model(), r, p);
 }
 
 double amThoraxPhantomSource::GetExactVolume(int label)
 {
-  return amThoraxPhantomModel().ExactVolume(label);
+  return this->Model().ExactVolume(label);
 }
 
 double amThoraxPhantomSource::GetBodyVolume()
 {
-  return amThoraxPhantomModel().BodyVolume();
+  return this->Model().BodyVolume();
 }
 
 const char* amThoraxPhantomSource::GetLabelName(int label)
@@ -382,10 +400,18 @@ void amThoraxPhantomSource::ModelToScanner(const double model[3], double scanner
     scanner[i] = r[i][0] * m[0] + r[i][1] * m[1] + r[i][2] * m[2];
 }
 
+void amThoraxPhantomSource::HeartToScanner(const double defaultHeart[3], double scanner[3])
+{
+  double frame[3], model[3];
+  amThoraxPhantomModel().WorldToHeartFrame(defaultHeart, frame);
+  this->Model().HeartFrameToWorld(frame, model);
+  this->ModelToScanner(model, scanner);
+}
+
 void amThoraxPhantomSource::GetOrganCenter(int label, double center[3])
 {
   double c[3];
-  amThoraxPhantomModel().GetOrganCenter(label, c);
+  this->Model().GetOrganCenter(label, c);
   this->ModelToScanner(c, center);
 }
 
@@ -395,6 +421,9 @@ void amThoraxPhantomSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Spacing: " << this->Spacing[0] << " " << this->Spacing[1] << " " << this->Spacing[2] << " mm\n";
   os << indent << "FieldOfView: " << this->FieldOfView[0] << " " << this->FieldOfView[1] << " " << this->FieldOfView[2]
      << " mm\n";
+  os << indent << "FatThickness: " << this->FatThickness << " mm\n";
+  os << indent << "HeartScale: " << this->HeartScale << "\n";
+  os << indent << "HeartAngle: " << this->HeartAngle << " degrees\n";
   os << indent << "NoiseStandardDeviation: " << this->NoiseStandardDeviation << " HU\n";
   os << indent << "BlurSigma: " << this->BlurSigma << " mm\n";
   os << indent << "PartialVolumeSamples: " << this->PartialVolumeSamples << "\n";

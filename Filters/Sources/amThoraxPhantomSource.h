@@ -34,6 +34,8 @@
 #include "AnatomeshFiltersSourcesModule.h" // export macro
 #include "vtkImageAlgorithm.h"
 
+class amThoraxPhantomModel;
+
 class ANATOMESHFILTERSSOURCES_EXPORT amThoraxPhantomSource : public vtkImageAlgorithm
 {
 public:
@@ -94,6 +96,24 @@ public:
   vtkGetVector3Macro(PatientRotation, double);
   ///@}
 
+  ///@{
+  /// The patient's build (amThoraxPhantomModel::Habitus): the subcutaneous fat's thickness in mm
+  /// over an inner body of fixed size (default 12; a thicker layer makes a larger body, which may
+  /// need a larger FieldOfView), the heart's size as a scale about its centre (default 1) and its
+  /// long axis's angle in the axial plane, degrees (default -30: towards the left-anterior side).
+  vtkSetClampMacro(FatThickness, double, 1.0, 60.0);
+  vtkGetMacro(FatThickness, double);
+  vtkSetClampMacro(HeartScale, double, 0.7, 1.3);
+  vtkGetMacro(HeartScale, double);
+  vtkSetClampMacro(HeartAngle, double, -60.0, 0.0);
+  vtkGetMacro(HeartAngle, double);
+  ///@}
+
+  /// A point of the default heart (e.g. a click in its blood pool) where this phantom's heart
+  /// (HeartScale, HeartAngle) and PatientRotation put it in the scanner; a point away from the
+  /// heart (the aorta's clicks) where PatientRotation puts it.
+  void HeartToScanner(const double defaultHeart[3], double scanner[3]);
+
   /// A point of the unrotated anatomy (e.g. a seed placed on the default phantom) where
   /// PatientRotation puts it in the scanner.
   void ModelToScanner(const double model[3], double scanner[3]);
@@ -115,6 +135,8 @@ protected:
   amThoraxPhantomSource();
   /// The rotation matrix of PatientRotation (model to scanner).
   void Rotation(double r[3][3]) const;
+  /// The anatomy with this source's habitus.
+  amThoraxPhantomModel Model() const;
   ~amThoraxPhantomSource() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -128,6 +150,9 @@ protected:
   int Seed;
   double BloodHounsfieldUnits;
   double MyocardiumHounsfieldUnits;
+  double FatThickness;
+  double HeartScale;
+  double HeartAngle;
   double PatientRotation[3];
 
 private:

@@ -255,8 +255,8 @@ bool Refine(C3t3& c3t3, Domain& domain, const CGAL::Image_3& image, bool wide, c
 }
 
 // The complex's cells as tetrahedra in the world frame, and every facet of it once.
-void Output(const C3t3& c3t3, const amLabelMapMesh3::Grid& grid, const Compact& compact, int bg, vtkUnstructuredGrid* output,
-  vtkPolyData* interfaces)
+void Output(const C3t3& c3t3, const amLabelMapMesh3::Grid& grid, const Compact& compact, int bg,
+  vtkUnstructuredGrid* output, vtkPolyData* interfaces)
 {
   const double* spacing = grid.Spacing;
   const double* origin = grid.Origin;

@@ -110,3 +110,34 @@ TEST(ThoraxPhantomModel, BodyContainsEveryOrgan)
   EXPECT_LT(model.BodyVolume(), 9.0e6);
   EXPECT_LT(model.ExactVolume(M::RightLung), 0.0); // not closed-form
 }
+
+TEST(ThoraxPhantomModel, HabitusScalesTheHeartAndThickensTheFat)
+{
+  const amThoraxPhantomModel usual;
+  amThoraxPhantomModel::Habitus build;
+  build.FatThickness = 30.0;
+  build.HeartScale = 1.2;
+  build.HeartAngle = -45.0;
+  const amThoraxPhantomModel other(build);
+  // The heart's shapes scale by k: volumes by k^3; the body grows by the fat over the same inner body.
+  for (int label : { amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood })
+    EXPECT_NEAR(other.ExactVolume(label), 1.2 * 1.2 * 1.2 * usual.ExactVolume(label), 1e-6 * usual.ExactVolume(label));
+  double a[6], b[6];
+  usual.GetBodyBounds(a);
+  other.GetBodyBounds(b);
+  for (int i = 0; i < 6; ++i)
+    EXPECT_NEAR(std::fabs(b[i]) - std::fabs(a[i]), 18.0, 1e-9) << i;
+  // A click in the default LV lands in the other's LV, the frame's round trip is exact to rounding.
+  const double click[3] = { 29.4, -24.1, -28.0 };
+  double frame[3], there[3], back[3];
+  usual.WorldToHeartFrame(click, frame);
+  other.HeartFrameToWorld(frame, there);
+  EXPECT_EQ(other.LabelAt(there), amThoraxPhantomModel::LeftVentricleBlood);
+  usual.HeartFrameToWorld(frame, back);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(back[i], click[i], 1e-12);
+  // The default build is the usual phantom.
+  const amThoraxPhantomModel same{ amThoraxPhantomModel::Habitus() };
+  for (int label = 1; label < amThoraxPhantomModel::NumberOfLabels; ++label)
+    EXPECT_EQ(same.ExactVolume(label), usual.ExactVolume(label)) << label;
+}
