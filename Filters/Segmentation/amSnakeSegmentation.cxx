@@ -39,6 +39,165 @@ struct Seed
   double Index[3]; // continuous index in the input image
   int Label;
 };
+
+// The seeds, typed ones first, then the point set's, in order (the order of first appearance of
+// a label is its precedence); false with 'why' for a label outside 1..255 or a seed outside the
+// image.
+bool GatherSeeds(vtkImageData* input, const std::vector<double>& typed, vtkPointSet* seedSet,
+  const char* labelArrayName, int defaultLabel, std::vector<Seed>& seeds, std::string& why)
+{
+  int dims[3], extent[6];
+  input->GetDimensions(dims);
+  input->GetExtent(extent);
+  std::ostringstream message;
+  auto addSeed = [&](const double x[3], int label) -> bool {
+    if (label < 1 || label > 255)
+    {
+      message << "Seed (" << x[0] << ", " << x[1] << ", " << x[2] << ") has label " << label << "; labels are 1..255.";
+      why = message.str();
+      return false;
+    }
+    Seed s;
+    input->TransformPhysicalPointToContinuousIndex(x, s.Index);
+    for (int a = 0; a < 3; ++a)
+    {
+      s.Index[a] -= extent[2 * a];
+      if (s.Index[a] < -0.5 || s.Index[a] > dims[a] - 0.5)
+      {
+        double b[6];
+        input->GetBounds(b);
+        message << "Seed (" << x[0] << ", " << x[1] << ", " << x[2] << ") for label " << label
+                << " is outside the image (bounds " << b[0] << ".." << b[1] << ", " << b[2] << ".." << b[3] << ", "
+                << b[4] << ".." << b[5] << " mm).";
+        why = message.str();
+        return false;
+      }
+    }
+    s.Label = label;
+    seeds.push_back(s);
+    return true;
+  };
+  for (size_t i = 0; i < typed.size(); i += 4)
+  {
+    const double l = typed[i + 3];
+    if (l != std::floor(l))
+    {
+      message << "Seed " << i / 4 << " has label " << l << "; labels are whole numbers 1..255.";
+      why = message.str();
+      return false;
+    }
+    if (!addSeed(&typed[i], static_cast<int>(l)))
+      return false;
+  }
+  if (seedSet)
+  {
+    vtkDataArray* labels = labelArrayName ? seedSet->GetPointData()->GetArray(labelArrayName) : nullptr;
+    for (vtkIdType i = 0; i < seedSet->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      seedSet->GetPoint(i, x);
+      if (!addSeed(x, labels ? static_cast<int>(labels->GetComponent(i, 0)) : defaultLabel))
+        return false;
+    }
+  }
+  return true;
+}
+
+// The box of voxels within 'margin' mm of the seeds (continuous indices), inside the image.
+void RegionAround(const std::vector<std::array<double, 3>>& seeds, double margin, const double spacing[3],
+  const int dims[3], int lo[3], int size[3])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    double mn = 1e300, mx = -1e300;
+    for (const auto& s : seeds)
+    {
+      mn = std::min(mn, s[a]);
+      mx = std::max(mx, s[a]);
+    }
+    const double m = margin / spacing[a];
+    lo[a] = std::max(0, static_cast<int>(std::floor(mn - m)));
+    size[a] = std::min(dims[a] - 1, static_cast<int>(std::ceil(mx + m))) - lo[a] + 1;
+  }
+}
+
+// The scan's values in a box, x fastest.
+std::vector<float> Region(vtkDataArray* scalars, const int dims[3], const int lo[3], const int rd[3])
+{
+  std::vector<float> roi(static_cast<size_t>(rd[0]) * rd[1] * rd[2]);
+  for (int k = 0; k < rd[2]; ++k)
+    for (int j = 0; j < rd[1]; ++j)
+      for (int i = 0; i < rd[0]; ++i)
+      {
+        const vtkIdType id = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + (i + lo[0]);
+        roi[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i] = static_cast<float>(scalars->GetComponent(id, 0));
+      }
+  return roi;
+}
+
+// The seeds' labels in the order they first appear: their precedence.
+std::vector<int> LabelsInOrder(const std::vector<Seed>& seeds)
+{
+  std::vector<int> order;
+  for (const Seed& s : seeds)
+    if (std::find(order.begin(), order.end(), s.Label) == order.end())
+      order.push_back(s.Label);
+  return order;
+}
+
+// Pastes a contour (inside: its region of interest at lo, of the given size) into the label map
+// where no earlier label is; returns the voxels it took.
+std::size_t Paste(const std::vector<unsigned char>& inside, const int lo[3], const int rd[3], const int dims[3],
+  int label, unsigned char* out)
+{
+  std::size_t voxels = 0;
+  for (int k = 0; k < rd[2]; ++k)
+    for (int j = 0; j < rd[1]; ++j)
+      for (int i = 0; i < rd[0]; ++i)
+        if (inside[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i])
+        {
+          const vtkIdType id = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + (i + lo[0]);
+          if (out[id] == 0)
+          {
+            out[id] = static_cast<unsigned char>(label);
+            ++voxels;
+          }
+        }
+  return voxels;
+}
+
+// The tracker's parameters: the filter's properties of the same names.
+amSnakeTracker::Parameters TrackerParameters(amSnakeSegmentation* f)
+{
+  amSnakeTracker::Parameters tp;
+  tp.Mode = f->GetMode();
+  tp.SliceAxis = f->GetSliceAxis();
+  tp.ContourModel = f->GetContourModel();
+  tp.SmoothingSigma = f->GetSmoothingSigma();
+  tp.SeedRadius = f->GetSeedRadius();
+  tp.AutomaticThresholds = f->GetAutomaticThresholds();
+  tp.IntensityTolerance = f->GetIntensityTolerance();
+  tp.MinimumIntensityWindow = f->GetMinimumIntensityWindow();
+  tp.LowerThreshold = f->GetLowerThreshold();
+  tp.UpperThreshold = f->GetUpperThreshold();
+  tp.PropagationScaling = f->GetPropagationScaling();
+  tp.CurvatureScaling = f->GetCurvatureScaling();
+  tp.EdgeWeight = f->GetEdgeWeight();
+  tp.MaximumRMSError = f->GetMaximumRMSError();
+  tp.NumberOfIterations = f->GetNumberOfIterations();
+  tp.MaximumAreaChange = f->GetMaximumAreaChange();
+  tp.MinimumSliceArea = f->GetMinimumSliceArea();
+  tp.RefineToHalfContrast = f->GetRefineToHalfContrast();
+  tp.CoarseToFine = f->GetCoarseToFine();
+  tp.AdaptiveSliceStatistics = f->GetAdaptiveSliceStatistics();
+  tp.OutsideThreshold = f->GetOutsideThreshold();
+  tp.EdgeContrast = f->GetEdgeContrast();
+  tp.MaximumRadius = f->GetMaximumRadius();
+  tp.MaximumGrowth = f->GetMaximumGrowth();
+  tp.AreaCost = f->GetAreaCost();
+  tp.MinimumSectionContrast = f->GetMinimumSectionContrast();
+  return tp;
+}
 }
 
 amSnakeSegmentation::amSnakeSegmentation()
@@ -116,6 +275,25 @@ int amSnakeSegmentation::RequestInformation(vtkInformation*, vtkInformationVecto
   return 1;
 }
 
+std::string amSnakeSegmentation::ProvenanceParameters(std::size_t seedCount) const
+{
+  std::ostringstream params;
+  params << "Mode=" << (this->Mode == ThreeD ? "ThreeD" : "SliceBySlice") << " Seeds=" << seedCount
+         << " SmoothingSigma=" << this->SmoothingSigma << " SeedRadius=" << this->SeedRadius
+         << " AutomaticThresholds=" << this->AutomaticThresholds << " IntensityTolerance=" << this->IntensityTolerance
+         << " MinimumIntensityWindow=" << this->MinimumIntensityWindow << " Propagation=" << this->PropagationScaling
+         << " Curvature=" << this->CurvatureScaling << " EdgeWeight=" << this->EdgeWeight
+         << " Iterations=" << this->NumberOfIterations << " MaximumDistance=" << this->MaximumDistance
+         << " ContourModel=" << (this->ContourModel == Polar ? "Polar" : "LevelSet");
+  if (this->Mode == ThreeD)
+    params << " CoarseToFine=" << this->CoarseToFine;
+  if (this->ContourModel == Polar)
+    params << " OutsideThreshold=" << this->OutsideThreshold << " EdgeContrast=" << this->EdgeContrast
+           << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth
+           << " AreaCost=" << this->AreaCost << " MinimumSectionContrast=" << this->MinimumSectionContrast;
+  return params.str();
+}
+
 int amSnakeSegmentation::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -134,56 +312,11 @@ int amSnakeSegmentation::RequestData(
   input->GetExtent(extent);
   const double* spacing = input->GetSpacing();
 
-  // Gather seeds, in order; the order of first appearance of a label is its precedence.
   std::vector<Seed> seeds;
-  auto addSeed = [&](const double x[3], int label) -> bool {
-    if (label < 1 || label > 255)
-    {
-      vtkErrorMacro(
-        "Seed (" << x[0] << ", " << x[1] << ", " << x[2] << ") has label " << label << "; labels are 1..255.");
-      return false;
-    }
-    Seed s;
-    input->TransformPhysicalPointToContinuousIndex(x, s.Index);
-    for (int a = 0; a < 3; ++a)
-    {
-      s.Index[a] -= extent[2 * a];
-      if (s.Index[a] < -0.5 || s.Index[a] > dims[a] - 0.5)
-      {
-        double b[6];
-        input->GetBounds(b);
-        vtkErrorMacro("Seed (" << x[0] << ", " << x[1] << ", " << x[2] << ") for label " << label
-                               << " is outside the image (bounds " << b[0] << ".." << b[1] << ", " << b[2] << ".."
-                               << b[3] << ", " << b[4] << ".." << b[5] << " mm).");
-        return false;
-      }
-    }
-    s.Label = label;
-    seeds.push_back(s);
-    return true;
-  };
-  for (size_t i = 0; i < this->Seeds.size(); i += 4)
+  if (!GatherSeeds(input, this->Seeds, seedSet, this->SeedLabelArrayName, this->SeedLabel, seeds, why))
   {
-    const double l = this->Seeds[i + 3];
-    if (l != std::floor(l))
-    {
-      vtkErrorMacro("Seed " << i / 4 << " has label " << l << "; labels are whole numbers 1..255.");
-      return 0;
-    }
-    if (!addSeed(&this->Seeds[i], static_cast<int>(l)))
-      return 0;
-  }
-  if (seedSet)
-  {
-    vtkDataArray* labels =
-      this->SeedLabelArrayName ? seedSet->GetPointData()->GetArray(this->SeedLabelArrayName) : nullptr;
-    for (vtkIdType i = 0; i < seedSet->GetNumberOfPoints(); ++i)
-    {
-      double x[3];
-      seedSet->GetPoint(i, x);
-      if (!addSeed(x, labels ? static_cast<int>(labels->GetComponent(i, 0)) : this->SeedLabel))
-        return 0;
-    }
+    vtkErrorMacro(<< why);
+    return 0;
   }
   if (seeds.empty())
   {
@@ -195,10 +328,7 @@ int amSnakeSegmentation::RequestData(
     vtkErrorMacro("ContourModel Polar contours sections one slice at a time: set Mode to SliceBySlice.");
     return 0;
   }
-  std::vector<int> order;
-  for (const Seed& s : seeds)
-    if (std::find(order.begin(), order.end(), s.Label) == order.end())
-      order.push_back(s.Label);
+  const std::vector<int> order = LabelsInOrder(seeds); // the precedence
 
   if (const long long bad = amInputCheck::NonFinite(scalars))
   {
@@ -220,33 +350,7 @@ int amSnakeSegmentation::RequestData(
   volumes->SetName("SegmentedVolumes");
   volumes->SetNumberOfComponents(2);
   const double voxelVolume = spacing[0] * spacing[1] * spacing[2];
-  amSnakeTracker::Parameters tp;
-  tp.Mode = this->Mode;
-  tp.SliceAxis = this->SliceAxis;
-  tp.ContourModel = this->ContourModel;
-  tp.SmoothingSigma = this->SmoothingSigma;
-  tp.SeedRadius = this->SeedRadius;
-  tp.AutomaticThresholds = this->AutomaticThresholds;
-  tp.IntensityTolerance = this->IntensityTolerance;
-  tp.MinimumIntensityWindow = this->MinimumIntensityWindow;
-  tp.LowerThreshold = this->LowerThreshold;
-  tp.UpperThreshold = this->UpperThreshold;
-  tp.PropagationScaling = this->PropagationScaling;
-  tp.CurvatureScaling = this->CurvatureScaling;
-  tp.EdgeWeight = this->EdgeWeight;
-  tp.MaximumRMSError = this->MaximumRMSError;
-  tp.NumberOfIterations = this->NumberOfIterations;
-  tp.MaximumAreaChange = this->MaximumAreaChange;
-  tp.MinimumSliceArea = this->MinimumSliceArea;
-  tp.RefineToHalfContrast = this->RefineToHalfContrast;
-  tp.CoarseToFine = this->CoarseToFine;
-  tp.AdaptiveSliceStatistics = this->AdaptiveSliceStatistics;
-  tp.OutsideThreshold = this->OutsideThreshold;
-  tp.EdgeContrast = this->EdgeContrast;
-  tp.MaximumRadius = this->MaximumRadius;
-  tp.MaximumGrowth = this->MaximumGrowth;
-  tp.AreaCost = this->AreaCost;
-  tp.MinimumSectionContrast = this->MinimumSectionContrast;
+  const amSnakeTracker::Parameters tp = TrackerParameters(this);
 
   // Each organ's contour is independent of the others (its own region of interest, its own
   // intensity interval), so the organs run at once, one per core; the pasting below keeps the
@@ -266,18 +370,7 @@ int amSnakeSegmentation::RequestData(
       if (s.Label == order[li])
         organSeeds[li].push_back({ s.Index[0], s.Index[1], s.Index[2] });
     // 1. Region of interest around the seeds.
-    for (int a = 0; a < 3; ++a)
-    {
-      double mn = 1e300, mx = -1e300;
-      for (const auto& s : organSeeds[li])
-      {
-        mn = std::min(mn, s[a]);
-        mx = std::max(mx, s[a]);
-      }
-      const double margin = this->MaximumDistance / spacing[a];
-      organs[li].Lo[a] = std::max(0, static_cast<int>(std::floor(mn - margin)));
-      organs[li].Size[a] = std::min(dims[a] - 1, static_cast<int>(std::ceil(mx + margin))) - organs[li].Lo[a] + 1;
-    }
+    RegionAround(organSeeds[li], this->MaximumDistance, spacing, dims, organs[li].Lo, organs[li].Size);
   }
   // The largest regions first, so that the last one to start is a small one.
   std::vector<size_t> schedule(order.size());
@@ -294,14 +387,7 @@ int amSnakeSegmentation::RequestData(
       const std::vector<std::array<double, 3>>& mine = organSeeds[li];
       const int* lo = organ.Lo;
       const int* rd = organ.Size;
-      std::vector<float> roi(static_cast<size_t>(rd[0]) * rd[1] * rd[2]);
-      for (int k = 0; k < rd[2]; ++k)
-        for (int j = 0; j < rd[1]; ++j)
-          for (int i = 0; i < rd[0]; ++i)
-          {
-            const vtkIdType id = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + (i + lo[0]);
-            roi[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i] = static_cast<float>(scalars->GetComponent(id, 0));
-          }
+      const std::vector<float> roi = Region(scalars, dims, lo, rd);
       organ.Tracker.reset(new amSnakeTracker(tp, spacing));
       amSnakeTracker& tracker = *organ.Tracker;
       tracker.SetRegion(lo, rd, roi);
@@ -343,22 +429,7 @@ int amSnakeSegmentation::RequestData(
     thresholds->InsertNextTuple3(label, tlo, thi);
 
     // Paste into the label map: earlier labels keep their voxels.
-    const std::vector<unsigned char>& inside = tracker.Inside();
-    const int* lo = organ.Lo;
-    const int* rd = organ.Size;
-    size_t voxels = 0;
-    for (int k = 0; k < rd[2]; ++k)
-      for (int j = 0; j < rd[1]; ++j)
-        for (int i = 0; i < rd[0]; ++i)
-          if (inside[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i])
-          {
-            const vtkIdType id = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + (i + lo[0]);
-            if (out[id] == 0)
-            {
-              out[id] = static_cast<unsigned char>(label);
-              ++voxels;
-            }
-          }
+    const std::size_t voxels = Paste(tracker.Inside(), organ.Lo, organ.Size, dims, label, out);
     volumes->InsertNextTuple2(label, voxels * voxelVolume);
     if (voxels == 0)
       vtkWarningMacro("Label " << label << ": the contour vanished (no voxel in [" << tlo << ", " << thi
@@ -371,21 +442,7 @@ int amSnakeSegmentation::RequestData(
   output->GetPointData()->SetScalars(labelArray);
   output->GetFieldData()->AddArray(thresholds);
   output->GetFieldData()->AddArray(volumes);
-  std::ostringstream params;
-  params << "Mode=" << (this->Mode == ThreeD ? "ThreeD" : "SliceBySlice") << " Seeds=" << seeds.size()
-         << " SmoothingSigma=" << this->SmoothingSigma << " SeedRadius=" << this->SeedRadius
-         << " AutomaticThresholds=" << this->AutomaticThresholds << " IntensityTolerance=" << this->IntensityTolerance
-         << " MinimumIntensityWindow=" << this->MinimumIntensityWindow << " Propagation=" << this->PropagationScaling
-         << " Curvature=" << this->CurvatureScaling << " EdgeWeight=" << this->EdgeWeight
-         << " Iterations=" << this->NumberOfIterations << " MaximumDistance=" << this->MaximumDistance
-         << " ContourModel=" << (this->ContourModel == Polar ? "Polar" : "LevelSet");
-  if (this->Mode == ThreeD)
-    params << " CoarseToFine=" << this->CoarseToFine;
-  if (this->ContourModel == Polar)
-    params << " OutsideThreshold=" << this->OutsideThreshold << " EdgeContrast=" << this->EdgeContrast
-           << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth
-           << " AreaCost=" << this->AreaCost << " MinimumSectionContrast=" << this->MinimumSectionContrast;
-  amProvenance::Record(output, input, "amSnakeSegmentation", params.str());
+  amProvenance::Record(output, input, "amSnakeSegmentation", this->ProvenanceParameters(seeds.size()));
   return 1;
 }
 

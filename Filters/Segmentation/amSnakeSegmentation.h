@@ -65,6 +65,7 @@
 #include "AnatomeshFiltersSegmentationModule.h" // export macro
 #include "vtkImageAlgorithm.h"
 
+#include <string>
 #include <vector>
 
 class ANATOMESHFILTERSSEGMENTATION_EXPORT amSnakeSegmentation : public vtkImageAlgorithm
@@ -262,6 +263,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The properties as recorded in the output's provenance.
+  std::string ProvenanceParameters(std::size_t seedCount) const;
 
   int Mode;
   int SliceAxis;

@@ -115,6 +115,189 @@ bool OrganLabels(vtkImageData* ct, vtkImageData* organs, std::vector<std::uint8_
   return true;
 }
 
+// The CT in HU (a windowed scan's 0..255 mapped back through its window), or false with 'why':
+// values outside a window's 0..255, a non-finite voxel, or (automatic classes) no air or lung.
+bool HounsfieldUnits(vtkDataArray* scalars, const double window[2], bool automatic, vtkFloatArray* hu, std::string& why)
+{
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  const bool windowed = window[0] > 0.0;
+  std::ostringstream message;
+  if (windowed)
+  {
+    double range[2];
+    scalars->GetRange(range, 0);
+    if (range[0] < 0.0 || range[1] > 255.0)
+    {
+      message << "InputWindow says the CT is windowed to 0..255, but its values span " << range[0] << " .. " << range[1]
+              << ".";
+      why = message.str();
+      return false;
+    }
+  }
+  const double lowest = window[1] - 0.5 * window[0];
+  hu->SetName("HU");
+  hu->SetNumberOfTuples(n);
+  // On the threads; the first non-finite voxel (the smallest index) is the one named.
+  const double width = window[0];
+  const vtkIdType bad = amThreading::FirstFailure(0, n, [&](vtkIdType i) {
+    const double v = scalars->GetComponent(i, 0);
+    if (!std::isfinite(v))
+      return false;
+    double h = v;
+    if (windowed)
+      h = v <= 0.0 ? -1000.0 : v >= 255.0 ? 1000.0 : lowest + v * width / 255.0;
+    hu->SetValue(i, static_cast<float>(h));
+    return true;
+  });
+  if (bad < n)
+  {
+    message << "The CT has a non-finite value (" << scalars->GetComponent(bad, 0) << ") at voxel " << bad
+            << ": cannot segment it.";
+    why = message.str();
+    return false;
+  }
+  // A chest CT shows air and lung below -500 HU; none at all is a scan in other units (a CT stored
+  // unsigned without its rescale, an MR).
+  const auto darkest = std::min_element(hu->GetPointer(0), hu->GetPointer(0) + n);
+  if (automatic && *darkest > -500.0f)
+  {
+    message << "The scan has no air or lung: its darkest value is " << *darkest
+            << ", not below -500 HU. It is not a chest CT in HU (a CT stored unsigned needs its rescale "
+               "intercept, usually -1024; a windowed scan needs InputWindow).";
+    why = message.str();
+    return false;
+  }
+  return true;
+}
+
+// What the tissue step reads off the scan's classes and its orientation.
+amTorso::TissueParameters TissueParametersFor(vtkDataArray* classTable, vtkMatrix3x3* direction, const float* hu)
+{
+  amTorso::TissueParameters p;
+  // The patient's head is world +z (LPS and RAS alike): gas under the lungs is found along the
+  // index axis closest to it, and the axial slices lie across it.
+  p.SuperiorAxis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::fabs(direction->GetElement(2, a)) > std::fabs(direction->GetElement(2, p.SuperiorAxis)))
+      p.SuperiorAxis = a;
+  p.SuperiorSign = direction->GetElement(2, p.SuperiorAxis) > 0 ? 1 : -1;
+  // Where the scan tells aerated lung from gas, gas (stomach, bowel) is never lung.
+  p.GasIsNotLung = classTable && classTable->GetComponent(amTorso::LungClass, 4) != 0.0;
+  if (classTable && classTable->GetComponent(amTorso::SoftClass, 4) != 0.0)
+  {
+    // Marrow brighter than soft tissue's upper tail is trabecular bone.
+    p.HU = hu;
+    p.TrabecularLevel =
+      classTable->GetComponent(amTorso::SoftClass, 1) + 3.0 * classTable->GetComponent(amTorso::SoftClass, 2);
+    if (classTable->GetComponent(amTorso::BoneClass, 4) != 0.0)
+      // Half-way to cortical bone (700 HU at least in an adult); a lower centre is a soft kernel's,
+      // a higher one a window's ceiling or dense cortex, neither of which moves a thin bone's edge.
+      p.BonePartialLevel = 0.5 *
+        (classTable->GetComponent(amTorso::SoftClass, 1) +
+          std::min(700.0, classTable->GetComponent(amTorso::BoneClass, 1)));
+    p.AxialAxis = p.SuperiorAxis;
+  }
+  return p;
+}
+
+// The output's field data: the label names and volumes, what the myocardium was told by, the
+// classes read from the scan and its noise.
+void AddFieldData(vtkImageData* output, const std::vector<double>& volume, const amTorso::WallReport& heart,
+  vtkDataArray* classTable, double noise, double noiseSmoothing)
+{
+  int top = amThoraxPhantomModel::NumberOfLabels - 1;
+  for (int l = 0; l < 255; ++l)
+    if (volume[l] > 0)
+      top = std::max(top, l);
+  vtkNew<vtkStringArray> names;
+  names->SetName("LabelNames");
+  for (int l = 0; l <= top; ++l)
+    names->InsertNextValue(l < amThoraxPhantomModel::NumberOfLabels ? amThoraxPhantomModel::LabelName(l) : "Organ");
+  output->GetFieldData()->AddArray(names);
+  vtkNew<vtkDoubleArray> volumes;
+  volumes->SetName("LabelVolumes");
+  volumes->SetNumberOfComponents(2);
+  volumes->SetComponentName(0, "Label");
+  volumes->SetComponentName(1, "Volume_mm3");
+  for (int l = 1; l < 255; ++l)
+    if (volume[l] > 0)
+    {
+      const double row[2] = { static_cast<double>(l), volume[l] };
+      volumes->InsertNextTuple(row);
+    }
+  output->GetFieldData()->AddArray(volumes);
+  vtkNew<vtkDoubleArray> levels;
+  levels->SetName("MyocardiumLevels");
+  for (double v : { heart.WallLevel, heart.SurroundingLevel, heart.Threshold, heart.Noise, heart.Contrast ? 1.0 : 0.0,
+         heart.PoolLevel, heart.Sigma })
+    levels->InsertNextValue(v);
+  output->GetFieldData()->AddArray(levels);
+  if (classTable)
+    output->GetFieldData()->AddArray(classTable);
+  vtkNew<vtkDoubleArray> noiseArray;
+  noiseArray->SetName("Noise");
+  noiseArray->SetNumberOfComponents(2);
+  noiseArray->SetComponentName(0, "Noise_HU");
+  noiseArray->SetComponentName(1, "Smoothing_mm");
+  const double noiseRow[2] = { noise, noiseSmoothing };
+  noiseArray->InsertNextTuple(noiseRow);
+  output->GetFieldData()->AddArray(noiseArray);
+}
+
+// The classes a chest CT shows that the scan does not (a window's floor clips those below it).
+std::vector<std::string> ClassWarnings(vtkDataArray* classTable, bool windowed, double lowest)
+{
+  std::vector<std::string> warnings;
+  if (!classTable)
+    return warnings;
+  // Classes a chest CT shows; a window's floor clips those below it.
+  const char* what[] = { nullptr, "lung", "fat", nullptr, nullptr, "bone" };
+  const double below[] = { 0, -850, -100, 0, 0, 700 };
+  for (int c : { 1, 2, 5 })
+    if (classTable->GetComponent(c, 4) == 0.0 && !(windowed && below[c] < lowest))
+    {
+      std::ostringstream text;
+      text << "The scan shows no " << what[c] << " intensity class (no peak of the body's histogram near " << below[c]
+           << " HU): " << (c == 1 ? "is it a chest CT?" : "")
+           << (c == 2 ? "a very lean patient, or not a CT in HU?" : "")
+           << (c == 5 ? "the field of view holds no bone, or its bone is too thin at these voxels to show one (bone "
+                        "then starts half-way to cortical bone)."
+                      : "");
+      warnings.push_back(text.str());
+    }
+  return warnings;
+}
+
+// What the myocardium's step could not do, in words.
+std::vector<std::string> WallWarnings(const amTorso::WallReport& heart, double minimumContrast, double thickness)
+{
+  std::vector<std::string> warnings;
+  std::ostringstream text;
+  if (!heart.PoolVoxels)
+    warnings.push_back(
+      "No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");
+  else if (heart.PoolLevel < heart.WallLevel + minimumContrast)
+  {
+    text
+      << "The blood pools (median " << heart.PoolLevel << " HU) are not brighter than the tissue around them ("
+      << heart.WallLevel
+      << " HU): a scan without contrast, or a seed outside the blood pool; the myocardium around them is unreliable.";
+    warnings.push_back(text.str());
+  }
+  if (heart.PoolsAtBorder)
+    warnings.push_back("A blood pool reaches the border of the image: the scan may cut the heart, and the myocardium "
+                       "stops there.");
+  if (heart.PoolVoxels && !heart.Contrast)
+  {
+    text.str("");
+    text << "The myocardium cannot be told from the tissue around it by intensity (wall " << heart.WallLevel
+         << " HU, surroundings " << heart.SurroundingLevel << " HU, noise " << heart.Noise
+         << " HU): it is the soft tissue within " << thickness << " mm of the blood pools.";
+    warnings.push_back(text.str());
+  }
+  return warnings;
+}
+
 // Updates an inner filter and returns its errors' messages (empty when it ran), so that the outer
 // filter says them once, as its own.
 std::string UpdateQuietly(vtkAlgorithm* inner)
@@ -161,48 +344,11 @@ int amTorsoSegmentation::RequestData(
   }
   const vtkIdType n = scalars->GetNumberOfTuples();
   const bool windowed = this->InputWindow[0] > 0.0;
-  if (windowed)
-  {
-    double range[2];
-    scalars->GetRange(range, 0);
-    if (range[0] < 0.0 || range[1] > 255.0)
-    {
-      vtkErrorMacro(
-        "InputWindow says the CT is windowed to 0..255, but its values span " << range[0] << " .. " << range[1] << ".");
-      return 0;
-    }
-  }
   const double lowest = this->InputWindow[1] - 0.5 * this->InputWindow[0];
   vtkNew<vtkFloatArray> hu;
-  hu->SetName("HU");
-  hu->SetNumberOfTuples(n);
-  // On the threads; the first non-finite voxel (the smallest index) is the one named.
-  const double width = this->InputWindow[0];
-  const vtkIdType bad = amThreading::FirstFailure(0, n, [&](vtkIdType i) {
-    const double v = scalars->GetComponent(i, 0);
-    if (!std::isfinite(v))
-      return false;
-    double h = v;
-    if (windowed)
-      h = v <= 0.0 ? -1000.0 : v >= 255.0 ? 1000.0 : lowest + v * width / 255.0;
-    hu->SetValue(i, static_cast<float>(h));
-    return true;
-  });
-  if (bad < n)
+  if (!HounsfieldUnits(scalars, this->InputWindow, this->AutomaticClasses != 0, hu, why))
   {
-    vtkErrorMacro("The CT has a non-finite value (" << scalars->GetComponent(bad, 0) << ") at voxel " << bad
-                                                    << ": cannot segment it.");
-    return 0;
-  }
-  // A chest CT shows air and lung below -500 HU; none at all is a scan in other units (a CT stored
-  // unsigned without its rescale, an MR).
-  const auto darkest = std::min_element(hu->GetPointer(0), hu->GetPointer(0) + n);
-  if (this->AutomaticClasses && *darkest > -500.0f)
-  {
-    vtkErrorMacro("The scan has no air or lung: its darkest value is "
-      << *darkest
-      << ", not below -500 HU. It is not a chest CT in HU (a CT stored unsigned needs its rescale "
-         "intercept, usually -1024; a windowed scan needs InputWindow).");
+    vtkErrorMacro(<< why);
     return 0;
   }
   amVoxelGrid grid;
@@ -238,20 +384,8 @@ int amTorsoSegmentation::RequestData(
     return 0;
   }
   vtkDataArray* classTable = classifier->GetOutput()->GetFieldData()->GetArray("TissueClasses");
-  if (classTable)
-  {
-    // Classes a chest CT shows; a window's floor clips those below it.
-    const char* what[] = { nullptr, "lung", "fat", nullptr, nullptr, "bone" };
-    const double below[] = { 0, -850, -100, 0, 0, 700 };
-    for (int c : { 1, 2, 5 })
-      if (classTable->GetComponent(c, 4) == 0.0 && !(windowed && below[c] < lowest))
-        vtkWarningMacro("The scan shows no "
-          << what[c] << " intensity class (no peak of the body's histogram near " << below[c] << " HU): "
-          << (c == 1 ? "is it a chest CT?" : "") << (c == 2 ? "a very lean patient, or not a CT in HU?" : "")
-          << (c == 5 ? "the field of view holds no bone, or its bone is too thin at these voxels to show one (bone "
-                       "then starts half-way to cortical bone)."
-                     : ""));
-  }
+  for (const std::string& warning : ClassWarnings(classTable, windowed, lowest))
+    vtkWarningMacro(<< warning);
   this->UpdateProgress(0.2);
 
   const std::vector<std::uint8_t> classes(static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)),
@@ -265,39 +399,12 @@ int amTorsoSegmentation::RequestData(
     static_cast<std::size_t>(std::ceil(this->MinimumComponentVolume / grid.VoxelVolume()));
 
   std::vector<std::uint8_t> labels;
-  amTorso::TissueParameters tissueParameters;
+  amTorso::TissueParameters tissueParameters = TissueParametersFor(classTable, direction, hu->GetPointer(0));
   tissueParameters.MinimumVoxels = minimumVoxels;
   tissueParameters.BodyGap = this->BodyGapClosing;
   tissueParameters.LungOpening = this->LungOpening;
   // Below a window that starts above fat's -100 HU, fat reads as air: what is not lung is fat.
   tissueParameters.LeftoverAirIsFat = windowed && lowest > -100.0;
-  // Where the scan tells aerated lung from gas, gas (stomach, bowel) is never lung.
-  tissueParameters.GasIsNotLung = classTable && classTable->GetComponent(amTorso::LungClass, 4) != 0.0;
-  if (classTable && classTable->GetComponent(amTorso::SoftClass, 4) != 0.0)
-  {
-    // Marrow brighter than soft tissue's upper tail is trabecular bone; the index axis closest to
-    // the patient's z is axial.
-    tissueParameters.HU = hu->GetPointer(0);
-    tissueParameters.TrabecularLevel =
-      classTable->GetComponent(amTorso::SoftClass, 1) + 3.0 * classTable->GetComponent(amTorso::SoftClass, 2);
-    if (classTable->GetComponent(amTorso::BoneClass, 4) != 0.0)
-      // Half-way to cortical bone (700 HU at least in an adult); a lower centre is a soft kernel's,
-      // a higher one a window's ceiling or dense cortex, neither of which moves a thin bone's edge.
-      tissueParameters.BonePartialLevel = 0.5 *
-        (classTable->GetComponent(amTorso::SoftClass, 1) +
-          std::min(700.0, classTable->GetComponent(amTorso::BoneClass, 1)));
-    tissueParameters.AxialAxis = 0;
-    for (int a = 1; a < 3; ++a)
-      if (std::fabs(direction->GetElement(2, a)) > std::fabs(direction->GetElement(2, tissueParameters.AxialAxis)))
-        tissueParameters.AxialAxis = a;
-  }
-  // The patient's head is world +z (LPS and RAS alike): gas under the lungs is found along the
-  // index axis closest to it.
-  tissueParameters.SuperiorAxis = 0;
-  for (int a = 1; a < 3; ++a)
-    if (std::fabs(direction->GetElement(2, a)) > std::fabs(direction->GetElement(2, tissueParameters.SuperiorAxis)))
-      tissueParameters.SuperiorAxis = a;
-  tissueParameters.SuperiorSign = direction->GetElement(2, tissueParameters.SuperiorAxis) > 0 ? 1 : -1;
   const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
   if (tissues.LungComponents == 0)
     vtkWarningMacro("No lungs: no air inside the body of at least " << this->MinimumComponentVolume << " mm^3.");
@@ -321,22 +428,8 @@ int amTorsoSegmentation::RequestData(
   wall.Sigma = this->WallSmoothingSigma;
   wall.MinimumContrast = this->MinimumWallContrast;
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);
-  if (!heart.PoolVoxels)
-    vtkWarningMacro("No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");
-  else if (heart.PoolLevel < heart.WallLevel + this->MinimumWallContrast)
-    vtkWarningMacro("The blood pools (median " << heart.PoolLevel
-                                               << " HU) are not brighter than the tissue around "
-                                                  "them ("
-                                               << heart.WallLevel
-                                               << " HU): a scan without contrast, or a seed outside the blood pool; "
-                                                  "the myocardium around them is unreliable.");
-  if (heart.PoolsAtBorder)
-    vtkWarningMacro("A blood pool reaches the border of the image: the scan may cut the heart, and the myocardium "
-                    "stops there.");
-  if (heart.PoolVoxels && !heart.Contrast)
-    vtkWarningMacro("The myocardium cannot be told from the tissue around it by intensity (wall "
-      << heart.WallLevel << " HU, surroundings " << heart.SurroundingLevel << " HU, noise " << heart.Noise
-      << " HU): it is the soft tissue within " << this->WallThickness << " mm of the blood pools.");
+  for (const std::string& warning : WallWarnings(heart, this->MinimumWallContrast, this->WallThickness))
+    vtkWarningMacro(<< warning);
   this->UpdateProgress(0.7);
 
   amVoxel::HandOver(grid, labels);
@@ -363,43 +456,7 @@ int amTorsoSegmentation::RequestData(
   std::copy(labels.begin(), labels.end(), out->GetPointer(0));
   output->GetPointData()->SetScalars(out);
 
-  int top = amThoraxPhantomModel::NumberOfLabels - 1;
-  for (int l = 0; l < 255; ++l)
-    if (volume[l] > 0)
-      top = std::max(top, l);
-  vtkNew<vtkStringArray> names;
-  names->SetName("LabelNames");
-  for (int l = 0; l <= top; ++l)
-    names->InsertNextValue(l < amThoraxPhantomModel::NumberOfLabels ? amThoraxPhantomModel::LabelName(l) : "Organ");
-  output->GetFieldData()->AddArray(names);
-  vtkNew<vtkDoubleArray> volumes;
-  volumes->SetName("LabelVolumes");
-  volumes->SetNumberOfComponents(2);
-  volumes->SetComponentName(0, "Label");
-  volumes->SetComponentName(1, "Volume_mm3");
-  for (int l = 1; l < 255; ++l)
-    if (volume[l] > 0)
-    {
-      const double row[2] = { static_cast<double>(l), volume[l] };
-      volumes->InsertNextTuple(row);
-    }
-  output->GetFieldData()->AddArray(volumes);
-  vtkNew<vtkDoubleArray> levels;
-  levels->SetName("MyocardiumLevels");
-  for (double v : { heart.WallLevel, heart.SurroundingLevel, heart.Threshold, heart.Noise, heart.Contrast ? 1.0 : 0.0,
-         heart.PoolLevel, heart.Sigma })
-    levels->InsertNextValue(v);
-  output->GetFieldData()->AddArray(levels);
-  if (classTable)
-    output->GetFieldData()->AddArray(classTable);
-  vtkNew<vtkDoubleArray> noiseArray;
-  noiseArray->SetName("Noise");
-  noiseArray->SetNumberOfComponents(2);
-  noiseArray->SetComponentName(0, "Noise_HU");
-  noiseArray->SetComponentName(1, "Smoothing_mm");
-  const double noiseRow[2] = { noise, noiseSmoothing };
-  noiseArray->InsertNextTuple(noiseRow);
-  output->GetFieldData()->AddArray(noiseArray);
+  AddFieldData(output, volume, heart, classTable, noise, noiseSmoothing);
 
   std::ostringstream p;
   p << "AutomaticClasses=" << this->AutomaticClasses << " MaximumNoise=" << this->MaximumNoise
