@@ -38,9 +38,56 @@ vtkStandardNewMacro(amTetrahedralize);
 namespace
 {
 using Vec = amTetraGeometry::Vec;
-constexpr auto Cross = &amTetraGeometry::Cross;
 constexpr auto Dot = &amTetraGeometry::Dot;
 constexpr auto Sub = &amTetraGeometry::Sub;
+
+// TetGen's failure in words, with the triangles that cross others, if any (whatever TetGen said;
+// it may also just crash).
+std::string FailureMessage(const amSurfaceMesh& mesh, const std::string& failure)
+{
+  std::ostringstream msg;
+  msg << "Tetrahedralization failed: " << failure;
+  const auto crossing = amSelfIntersection::AllTriangles(mesh, mesh.Points);
+  if (!crossing.empty())
+    msg << " The surface intersects itself: " << crossing.size()
+        << " triangles cross others: " << amTetraSurfaceCheck::List(crossing) << ".";
+  return msg.str();
+}
+
+// The mesh size at each surface point: the sizing array's (positive, or false with 'why' naming
+// the point), else the mean length of the point's edges.
+bool SurfaceSizes(const amSurfaceMesh& mesh, vtkDataArray* sizeArray, std::vector<double>& sizes, std::string& why)
+{
+  const vtkIdType np = mesh.NumberOfPoints();
+  sizes.assign(static_cast<size_t>(np), 0.0);
+  if (sizeArray)
+  {
+    for (vtkIdType v = 0; v < np; ++v)
+    {
+      sizes[v] = sizeArray->GetComponent(v, 0);
+      if (!std::isfinite(sizes[v]) || sizes[v] <= 0)
+      {
+        std::ostringstream message;
+        message << "is " << sizes[v] << " at point " << v << ": sizes must be positive.";
+        why = message.str();
+        return false;
+      }
+    }
+    return true;
+  }
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    double sum = 0;
+    const vtkIdType k0 = mesh.RingStart[v], k1 = mesh.RingStart[v + 1];
+    for (vtkIdType k = k0; k < k1; ++k)
+    {
+      const Vec d = Sub(mesh.Points[mesh.Ring[k]].data(), mesh.Points[v].data());
+      sum += std::sqrt(Dot(d, d));
+    }
+    sizes[v] = k1 > k0 ? sum / static_cast<double>(k1 - k0) : 0.0;
+  }
+  return true;
+}
 }
 
 amTetrahedralize::amTetrahedralize()
@@ -120,35 +167,13 @@ int amTetrahedralize::RequestData(
   this->UpdateProgress(0.05);
 
   // --- Sizes ---------------------------------------------------------------------------------------
-  std::vector<double> sizes(static_cast<size_t>(np), 0.0);
+  std::vector<double> sizes;
   vtkDataArray* sizeArray =
     this->SizeArrayName && *this->SizeArrayName ? input->GetPointData()->GetArray(this->SizeArrayName) : nullptr;
-  if (sizeArray && sizeArray->GetNumberOfComponents() == 1)
+  if (!SurfaceSizes(mesh, sizeArray && sizeArray->GetNumberOfComponents() == 1 ? sizeArray : nullptr, sizes, why))
   {
-    for (vtkIdType v = 0; v < np; ++v)
-    {
-      sizes[v] = sizeArray->GetComponent(v, 0);
-      if (!std::isfinite(sizes[v]) || sizes[v] <= 0)
-      {
-        vtkErrorMacro("The sizing array \"" << this->SizeArrayName << "\" is " << sizes[v] << " at point " << v
-                                            << ": sizes must be positive.");
-        return 0;
-      }
-    }
-  }
-  else
-  {
-    for (vtkIdType v = 0; v < np; ++v)
-    {
-      double sum = 0;
-      const vtkIdType k0 = mesh.RingStart[v], k1 = mesh.RingStart[v + 1];
-      for (vtkIdType k = k0; k < k1; ++k)
-      {
-        const Vec d = Sub(mesh.Points[mesh.Ring[k]].data(), mesh.Points[v].data());
-        sum += std::sqrt(Dot(d, d));
-      }
-      sizes[v] = k1 > k0 ? sum / static_cast<double>(k1 - k0) : 0.0;
-    }
+    vtkErrorMacro("The sizing array \"" << this->SizeArrayName << "\" " << why);
+    return 0;
   }
   double bounds[6];
   input->GetBounds(bounds);
@@ -170,14 +195,7 @@ int amTetrahedralize::RequestData(
     mesh, field, switches, bg, this->PreserveSurface && this->ParallelGroups, out, &this->NumberOfGroups);
   if (!failure.empty())
   {
-    std::ostringstream msg;
-    msg << "Tetrahedralization failed: " << failure;
-    // Whatever TetGen said (it may also just crash), name triangles that cross, if any.
-    const auto crossing = amSelfIntersection::AllTriangles(mesh, mesh.Points);
-    if (!crossing.empty())
-      msg << " The surface intersects itself: " << crossing.size()
-          << " triangles cross others: " << amTetraSurfaceCheck::List(crossing) << ".";
-    vtkErrorMacro(<< msg.str());
+    vtkErrorMacro(<< FailureMessage(mesh, failure));
     return 0;
   }
   this->UpdateProgress(0.8);
