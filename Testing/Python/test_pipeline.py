@@ -434,7 +434,7 @@ class ProgressLog(unittest.TestCase):
 
     def test_stage_clock_counts_each_stage_its_own_time(self):
         # A filter updated from inside another (nested Start/End events) pauses the outer one's clock.
-        from anatomesh.pipeline import StageClock
+        from anatomesh.watch import StageClock
         clock = StageClock()
         clock.start("outer")
         time.sleep(0.05)

@@ -28,6 +28,7 @@ import threading
 import time
 
 from . import atomic, marker
+from .options import variables_of
 
 
 class ManifestError(Exception):
@@ -246,7 +247,6 @@ def _mpi():
 
 def main(args):
     from . import pipeline as pl
-    from .cli import variables_of
     given = variables_of(args.set)
     if given is None:
         return 2

@@ -18,6 +18,7 @@ import sys
 import time
 
 from . import marker
+from .options import variables_of
 
 
 class _Progress:
@@ -182,7 +183,7 @@ def _summary(paths, data, out):
 def stage_seconds(pipeline, total):
     """Seconds of each filter's own execution in pipeline order, then the <Output> files' writing
     and the rest of the run (building the pipeline, Python), adding up to the run's total."""
-    from .pipeline import WRITING
+    from .watch import WRITING
     seconds = pipeline.clock.seconds
     stages = {s.name: round(seconds.get(s.name, 0.0), 3) for s in pipeline.steps}
     stages[WRITING] = round(seconds.get(WRITING, 0.0), 3)
@@ -211,18 +212,6 @@ def _version():
     from vtkmodules.vtkCommonCore import vtkVersion
     from . import __version__
     return "anatomesh %s (VTK %s)" % (__version__, vtkVersion.GetVTKVersion())
-
-
-def variables_of(items):
-    """The --set NAME=VALUE items as a dict, or None (with a message) when one has no '='."""
-    variables = {}
-    for item in items or []:
-        if "=" not in item:
-            sys.stderr.write("anatomesh: error: --set takes NAME=VALUE, got %r\n" % item)
-            return None
-        k, v = item.split("=", 1)
-        variables[k] = v
-    return variables
 
 
 def _run(args):
