@@ -154,6 +154,150 @@ int amIntensityClassifier::RequestInformation(
   return 1;
 }
 
+namespace
+{
+// Otsu's thresholds of the values' histogram as ranges (low, high, label 1..classes), the
+// thresholds themselves into thresholdsOut; false with 'why' when ITK fails.
+bool OtsuRanges(const std::vector<double>& values, int bins, int classes, std::vector<double>& ranges,
+  vtkDoubleArray* thresholdsOut, std::string& why)
+{
+  using ImageType = itk::Image<float, 3>;
+  auto image = ImageType::New();
+  ImageType::RegionType region;
+  ImageType::SizeType size = { { static_cast<itk::SizeValueType>(values.size()), 1, 1 } };
+  region.SetSize(size);
+  image->SetRegions(region);
+  image->Allocate();
+  for (size_t i = 0; i < values.size(); ++i)
+    image->GetBufferPointer()[i] = static_cast<float>(values[i]);
+  using Generator = itk::Statistics::ScalarImageToHistogramGenerator<ImageType>;
+  auto generator = Generator::New();
+  generator->SetInput(image);
+  generator->SetNumberOfBins(bins);
+  generator->SetAutoHistogramMinimumMaximum(true);
+  using Calculator = itk::OtsuMultipleThresholdsCalculator<Generator::HistogramType>;
+  auto calculator = Calculator::New();
+  try
+  {
+    generator->Compute();
+    calculator->SetInputHistogram(generator->GetOutput());
+    calculator->SetNumberOfThresholds(classes - 1);
+    calculator->Compute();
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    why = std::string("Otsu thresholding failed: ") + e.GetDescription();
+    return false;
+  }
+  const auto& thresholds = calculator->GetOutput();
+  ranges.clear();
+  double previous = -std::numeric_limits<double>::max();
+  for (size_t k = 0; k <= thresholds.size(); ++k)
+  {
+    const double next = k < thresholds.size() ? thresholds[k] : std::numeric_limits<double>::max();
+    if (k > 0)
+    {
+      ranges.push_back(previous);
+      ranges.push_back(next);
+      ranges.push_back(static_cast<double>(k));
+    }
+    previous = next;
+  }
+  for (double v : thresholds)
+    thresholdsOut->InsertNextValue(v);
+  return true;
+}
+
+// The scan windowed to 8 bits (w), and the values to classify: the windowed ones, or the scan's
+// own. Returns the non-finite values found (both then 0 there).
+vtkIdType WindowValues(
+  vtkDataArray* scalars, double level, double window, bool useWindowed, unsigned char* w, std::vector<double>& values)
+{
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  const double lo = level - 0.5 * window, scale = 255.0 / window;
+  std::atomic<vtkIdType> nans{ 0 };
+  vtkSMPTools::For(0, n, [&](vtkIdType b, vtkIdType e) {
+    vtkIdType bad = 0;
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      const double v = scalars->GetComponent(i, 0);
+      if (!std::isfinite(v))
+      {
+        ++bad;
+        w[i] = 0;
+        values[i] = 0;
+        continue;
+      }
+      const double c = std::floor((v - lo) * scale + 0.5);
+      w[i] = static_cast<unsigned char>(c < 0 ? 0 : c > 255 ? 255 : c);
+      values[i] = useWindowed ? w[i] : v;
+    }
+    nans += bad;
+  });
+  return nans;
+}
+
+// Each value's label: that of the first range [low, high) holding it, 0 for none.
+void Classify(const std::vector<double>& values, const std::vector<double>& ranges, unsigned char* l)
+{
+  const size_t nr = ranges.size() / 3;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType b, vtkIdType e) {
+    for (vtkIdType i = b; i < e; ++i)
+    {
+      unsigned char label = 0;
+      for (size_t r = 0; r < nr; ++r)
+        if (values[i] >= ranges[3 * r] && values[i] < ranges[3 * r + 1])
+        {
+          label = static_cast<unsigned char>(ranges[3 * r + 2]);
+          break;
+        }
+      l[i] = label;
+    }
+  });
+}
+
+// The air around the patient (the unlabelled voxels reached from the image's sides) and, two
+// layers deep, the partial volume of the skin against it (darker than threshold, touching the
+// outside air, with tissue within two voxels along an axis): labelled 0. Returns the partial-volume
+// voxels taken.
+vtkIdType ExteriorShell(const int dims[3], vtkDataArray* scalars, double threshold, unsigned char* l)
+{
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  vtkIdType count = 0;
+  const vtkIdType sx = 1, sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
+  std::vector<unsigned char> exterior = FloodFromSides(dims, [&](vtkIdType id) { return l[id] == 0; });
+  for (int layer = 0; layer < 2; ++layer)
+  {
+    std::vector<vtkIdType> shell;
+    for (vtkIdType id = 0; id < n; ++id)
+      if (!exterior[id] && l[id] != 0 && scalars->GetComponent(id, 0) < threshold)
+      {
+        bool touches = false;
+        FaceNeighbours(dims, id, [&](vtkIdType q) { touches = touches || exterior[q]; });
+        // ... and tissue within two voxels along an axis: skin, not lung beside an air pocket.
+        const int c[3] = { static_cast<int>(id % dims[0]), static_cast<int>((id / dims[0]) % dims[1]),
+          static_cast<int>(id / sz) };
+        const vtkIdType stride[3] = { sx, sy, sz };
+        bool tissue = false;
+        for (int a = 0; a < 3 && touches && !tissue; ++a)
+          for (int d : { -2, -1, 1, 2 })
+            if (c[a] + d >= 0 && c[a] + d < dims[a] && scalars->GetComponent(id + d * stride[a], 0) >= threshold)
+              tissue = true;
+        if (touches && tissue)
+          shell.push_back(id);
+      }
+    for (vtkIdType id : shell)
+    {
+      exterior[id] = 1;
+      l[id] = 0;
+    }
+    count += static_cast<vtkIdType>(shell.size());
+  }
+  return count;
+}
+
+}
+
 int amIntensityClassifier::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -183,27 +327,8 @@ int amIntensityClassifier::RequestData(
   windowed->SetName("Windowed");
   windowed->SetNumberOfTuples(n);
   unsigned char* w = windowed->GetPointer(0);
-  const double lo = this->Level - 0.5 * this->Window, scale = 255.0 / this->Window;
-  std::atomic<vtkIdType> nans{ 0 };
   const bool useWindowed = this->ClassifyWindowed;
-  vtkSMPTools::For(0, n, [&](vtkIdType b, vtkIdType e) {
-    vtkIdType bad = 0;
-    for (vtkIdType i = b; i < e; ++i)
-    {
-      const double v = scalars->GetComponent(i, 0);
-      if (!std::isfinite(v))
-      {
-        ++bad;
-        w[i] = 0;
-        values[i] = 0;
-        continue;
-      }
-      const double c = std::floor((v - lo) * scale + 0.5);
-      w[i] = static_cast<unsigned char>(c < 0 ? 0 : c > 255 ? 255 : c);
-      values[i] = useWindowed ? w[i] : v;
-    }
-    nans += bad;
-  });
+  const vtkIdType nans = WindowValues(scalars, this->Level, this->Window, useWindowed, w, values);
   if (nans > 0)
   {
     vtkErrorMacro("The input has " << nans << " non-finite values (NaN or infinite); cannot classify them.");
@@ -218,50 +343,11 @@ int amIntensityClassifier::RequestData(
   otsuThresholds->SetName("Thresholds");
   if (this->Mode == Otsu)
   {
-    using ImageType = itk::Image<float, 3>;
-    auto image = ImageType::New();
-    ImageType::RegionType region;
-    ImageType::SizeType size = { { static_cast<itk::SizeValueType>(n), 1, 1 } };
-    region.SetSize(size);
-    image->SetRegions(region);
-    image->Allocate();
-    for (vtkIdType i = 0; i < n; ++i)
-      image->GetBufferPointer()[i] = static_cast<float>(values[i]);
-    using Generator = itk::Statistics::ScalarImageToHistogramGenerator<ImageType>;
-    auto generator = Generator::New();
-    generator->SetInput(image);
-    generator->SetNumberOfBins(this->NumberOfHistogramBins);
-    generator->SetAutoHistogramMinimumMaximum(true);
-    using Calculator = itk::OtsuMultipleThresholdsCalculator<Generator::HistogramType>;
-    auto calculator = Calculator::New();
-    try
+    if (!OtsuRanges(values, this->NumberOfHistogramBins, this->NumberOfClasses, ranges, otsuThresholds, why))
     {
-      generator->Compute();
-      calculator->SetInputHistogram(generator->GetOutput());
-      calculator->SetNumberOfThresholds(this->NumberOfClasses - 1);
-      calculator->Compute();
-    }
-    catch (const itk::ExceptionObject& e)
-    {
-      vtkErrorMacro("Otsu thresholding failed: " << e.GetDescription());
+      vtkErrorMacro(<< why);
       return 0;
     }
-    const auto& thresholds = calculator->GetOutput();
-    ranges.clear();
-    double previous = -std::numeric_limits<double>::max();
-    for (size_t k = 0; k <= thresholds.size(); ++k)
-    {
-      const double next = k < thresholds.size() ? thresholds[k] : std::numeric_limits<double>::max();
-      if (k > 0)
-      {
-        ranges.push_back(previous);
-        ranges.push_back(next);
-        ranges.push_back(static_cast<double>(k));
-      }
-      previous = next;
-    }
-    for (double v : thresholds)
-      otsuThresholds->InsertNextValue(v);
   }
   else if (this->Mode == Automatic)
   {
@@ -301,19 +387,7 @@ int amIntensityClassifier::RequestData(
   labels->SetNumberOfTuples(n);
   unsigned char* l = labels->GetPointer(0);
   const size_t nr = ranges.size() / 3;
-  vtkSMPTools::For(0, n, [&](vtkIdType b, vtkIdType e) {
-    for (vtkIdType i = b; i < e; ++i)
-    {
-      unsigned char label = 0;
-      for (size_t r = 0; r < nr; ++r)
-        if (values[i] >= ranges[3 * r] && values[i] < ranges[3 * r + 1])
-        {
-          label = static_cast<unsigned char>(ranges[3 * r + 2]);
-          break;
-        }
-      l[i] = label;
-    }
-  });
+  Classify(values, ranges, l);
 
   // The air around the patient, and the partial volume of the skin against it.
   vtkIdType exteriorVoxels = 0;
@@ -321,36 +395,7 @@ int amIntensityClassifier::RequestData(
   {
     int dims[3];
     input->GetDimensions(dims);
-    const vtkIdType sx = 1, sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
-    std::vector<unsigned char> exterior = FloodFromSides(dims, [&](vtkIdType id) { return l[id] == 0; });
-    for (int layer = 0; layer < 2; ++layer)
-    {
-      std::vector<vtkIdType> shell;
-      for (vtkIdType id = 0; id < n; ++id)
-        if (!exterior[id] && l[id] != 0 && scalars->GetComponent(id, 0) < this->ExteriorThreshold)
-        {
-          bool touches = false;
-          FaceNeighbours(dims, id, [&](vtkIdType q) { touches = touches || exterior[q]; });
-          // ... and tissue within two voxels along an axis: skin, not lung beside an air pocket.
-          const int c[3] = { static_cast<int>(id % dims[0]), static_cast<int>((id / dims[0]) % dims[1]),
-            static_cast<int>(id / sz) };
-          const vtkIdType stride[3] = { sx, sy, sz };
-          bool tissue = false;
-          for (int a = 0; a < 3 && touches && !tissue; ++a)
-            for (int d : { -2, -1, 1, 2 })
-              if (c[a] + d >= 0 && c[a] + d < dims[a] &&
-                scalars->GetComponent(id + d * stride[a], 0) >= this->ExteriorThreshold)
-                tissue = true;
-          if (touches && tissue)
-            shell.push_back(id);
-        }
-      for (vtkIdType id : shell)
-      {
-        exterior[id] = 1;
-        l[id] = 0;
-      }
-      exteriorVoxels += static_cast<vtkIdType>(shell.size());
-    }
+    exteriorVoxels = ExteriorShell(dims, scalars, this->ExteriorThreshold, l);
   }
   this->UpdateProgress(0.9);
 

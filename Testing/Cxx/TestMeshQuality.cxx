@@ -1,5 +1,6 @@
 // amMeshQuality: the paper's Q on known tetrahedra, dihedral angles, the Table 1 counts.
 #include "amMeshQuality.h"
+#include "amQualityTable.h"
 #include "amTestUtilities.h"
 
 #include "vtkCellData.h"
@@ -175,4 +176,36 @@ TEST(MeshQuality, RefusesAPointIdOutOfRange)
   auto g = Grid({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, { { 0, 1, 2, 3 }, { 0, 1, 2, 7 } }, { 1, 1 });
   const std::string errors = Errors(g);
   EXPECT_NE(errors.find("Tetrahedron 1 refers to point 7, but the mesh has 4 points"), std::string::npos) << errors;
+}
+
+TEST(QualityTable, TwoRegionsSharingAFaceCountTheirOwnAndTheMeshsTriangles)
+{
+  // Two tetrahedra glued by face (0, 1, 2): apart they have 4 vertices and 4 boundary triangles
+  // each; the mesh has 5 vertices, 6 outer triangles and the interface between them (7). One
+  // region: the glued face is inside it (6 triangles).
+  const std::vector<std::array<vtkIdType, 4>> tets = { { 0, 1, 2, 3 }, { 0, 2, 1, 4 } };
+  const double q[2] = { 1.5, 2.5 }, dmin[2] = { 40, 20 }, dmax[2] = { 100, 120 }, vol[2] = { 1.0, -0.5 };
+  std::map<int, amQualityTable::Row> rows;
+  amQualityTable::Row all;
+  amQualityTable::Count(tets, { 3, 7 }, 5, q, dmin, dmax, vol, rows, all);
+  ASSERT_EQ(rows.size(), 2u);
+  for (const int label : { 3, 7 })
+  {
+    EXPECT_EQ(rows[label].np, 4);
+    EXPECT_EQ(rows[label].nt, 4);
+    EXPECT_EQ(rows[label].ne, 1);
+  }
+  EXPECT_EQ(all.np, 5);
+  EXPECT_EQ(all.nt, 7);
+  EXPECT_EQ(all.ne, 2);
+  EXPECT_DOUBLE_EQ(all.sumQ, 4.0);
+  EXPECT_DOUBLE_EQ(all.maxQ, 2.5);
+  EXPECT_DOUBLE_EQ(all.minD, 20);
+  EXPECT_DOUBLE_EQ(all.maxD, 120);
+  EXPECT_EQ(rows[7].inverted, 1); // a volume <= 0
+  EXPECT_EQ(all.inverted, 1);
+  amQualityTable::Count(tets, { 3, 3 }, 5, q, dmin, dmax, vol, rows, all);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[3].nt, 6);
+  EXPECT_EQ(all.nt, 6);
 }
