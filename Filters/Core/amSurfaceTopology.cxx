@@ -1,5 +1,7 @@
 #include "amSurfaceTopology.h"
 
+#include "amUnits.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -239,6 +241,7 @@ vtkSmartPointer<vtkTable> amSurfaceTopology::ToTable(const std::vector<Region>& 
   {
     vtkNew<vtkDoubleArray> a;
     a->SetName(name);
+    amUnits::Set(a, name[0] == 'A' ? "mm2" : "mm3");
     a->SetNumberOfTuples(static_cast<vtkIdType>(regions.size()));
     table->AddColumn(a);
   }

@@ -1,6 +1,7 @@
 #include "amLabelOverlap.h"
 
 #include "amInputCheck.h"
+#include "amUnits.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -168,6 +169,8 @@ int amLabelOverlap::RequestData(vtkInformation*, vtkInformationVector** inputVec
   vtkNew<vtkDoubleArray> volume, refVolume, dice, jaccard;
   volume->SetName("Volume");
   refVolume->SetName("ReferenceVolume");
+  amUnits::Set(volume, "mm3");
+  amUnits::Set(refVolume, "mm3");
   dice->SetName("Dice");
   jaccard->SetName("Jaccard");
   auto row = [&](int l, double x, double y, double z) {

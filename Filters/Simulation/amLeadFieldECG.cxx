@@ -9,6 +9,7 @@
 #include "amTetraFaces.h"
 #include "amThoraxPhantomModel.h"
 #include "amTwelveLeads.h"
+#include "amUnits.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -410,6 +411,7 @@ int amLeadFieldECG::RequestData(
   const vtkIdType nt = static_cast<vtkIdType>(m.Times.size());
   vtkNew<vtkDoubleArray> time;
   time->SetName("Time");
+  amUnits::Set(time, "ms");
   time->SetNumberOfTuples(nt);
   for (vtkIdType k = 0; k < nt; ++k)
     time->SetValue(k, m.Times[k]);
@@ -418,6 +420,7 @@ int amLeadFieldECG::RequestData(
   {
     vtkNew<vtkDoubleArray> lead;
     lead->SetName(amTwelveLeads::LeadNames()[l].c_str());
+    amUnits::Set(lead, "mV");
     lead->SetNumberOfTuples(nt);
     for (vtkIdType k = 0; k < nt; ++k)
       lead->SetValue(k, m.Leads[k][l]);

@@ -2,6 +2,7 @@
 
 #include "amLandmarkPoints.h"
 #include "amLeadFields.h"
+#include "amUnits.h"
 
 #include "amConjugateGradient.h"
 #include "amP1Assembly.h"
@@ -616,6 +617,7 @@ void amTorsoPotential::Produce(vtkInformationVector* outputVector)
     return a.GetPointer();
   };
   vtkDoubleArray* time = column("Time");
+  amUnits::Set(time, "ms");
   for (std::size_t k = 0; k < nt; ++k)
     time->SetValue(static_cast<vtkIdType>(k), m.Times[k]);
   const std::size_t ne = m.Electrodes.size();

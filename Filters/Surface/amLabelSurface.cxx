@@ -5,6 +5,7 @@
 #include "amProvenance.h"
 #include "amSurfaceTopology.h"
 #include "amThreading.h"
+#include "amUnits.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -222,6 +223,7 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkSmartPointer<vtkTable> t = amSurfaceTopology::ToTable(regions);
     vtkNew<vtkDoubleArray> vv;
     vv->SetName("VoxelVolume");
+    amUnits::Set(vv, "mm3");
     vv->SetNumberOfTuples(static_cast<vtkIdType>(regions.size()));
     const double voxelVolume = g.Spacing[0] * g.Spacing[1] * g.Spacing[2];
     for (size_t r = 0; r < regions.size(); ++r)

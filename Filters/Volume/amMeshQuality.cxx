@@ -1,6 +1,7 @@
 #include "amMeshQuality.h"
 
 #include "amQualityTable.h"
+#include "amUnits.h"
 
 #include "amTetraGeometry.h"
 
@@ -210,6 +211,10 @@ int amMeshQuality::RequestData(vtkInformation*, vtkInformationVector** inputVect
     else
       a = vtkSmartPointer<vtkDoubleArray>::New();
     a->SetName(names[i]);
+    if (i == 7 || i == 8)
+      amUnits::Set(a, "deg");
+    if (i == 9)
+      amUnits::Set(a, "mm3");
     columns.push_back(a);
     table->AddColumn(a);
   }

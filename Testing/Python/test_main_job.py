@@ -64,7 +64,7 @@ def leads(out):
     with open(os.path.join(out, "thorax_ecg.csv")) as f:
         rows = list(csv.reader(f))
     values = np.array(rows[1:], dtype=float)
-    return {name: values[:, c] for c, name in enumerate(rows[0])}
+    return {name.split("_")[0]: values[:, c] for c, name in enumerate(rows[0])}  # "I_mV": lead I
 
 
 class MainJob(AgreesWithTruth, unittest.TestCase):

@@ -51,7 +51,7 @@ class ThoraxJob(unittest.TestCase):
         with open(os.path.join(out, "thorax_ecg.csv")) as f:
             rows = f.read().splitlines()
         self.assertEqual(len(rows), 502)  # header + 0, 1, ..., 500 ms
-        self.assertTrue(rows[0].startswith("Time,I,II,III"), rows[0])
+        self.assertTrue(rows[0].startswith("Time_ms,I_mV,II_mV,III_mV"), rows[0])  # units in the header
         self.assertRegex(stdout, r"ECG: QRS \d+ ms \(normal 80-120[^)]*\), QT \d+ ms")
         self.assertIn("phantom", stderr)  # progress lines
         # The timing table: every filter with its own seconds, the output files and the rest, adding
@@ -122,7 +122,7 @@ class ThoraxJob(unittest.TestCase):
             self.assertGreater(2.0 * (a & b).sum() / (a.sum() + b.sum()), 0.8, label)
         with open(os.path.join(out, "thorax_dice.csv")) as f:
             dice = [line.strip().split(",") for line in f]
-        self.assertEqual(dice[0][:4], ["Label", "Volume", "ReferenceVolume", "Dice"])
+        self.assertEqual(dice[0][:4], ["Label", "Volume_mm3", "ReferenceVolume_mm3", "Dice"])
         self.assertEqual([r[0] for r in dice[1:]], [str(label) for label in range(1, 11)] + ["-1"])
         self.assertIn("Dice", stdout)
         # The remeshed surface of every organ, within the tolerance.
@@ -169,7 +169,7 @@ class ThoraxJob(unittest.TestCase):
         self.assertEqual(sorted(int(r) for r in table["Region"] if r > 0), list(range(1, 11)))
         whole = table[table["Region"] == -1][0]
         self.assertLessEqual(whole["MaximumQuality"], 10.0)
-        self.assertGreaterEqual(whole["MinimumDihedralAngle"], 10.0)
+        self.assertGreaterEqual(whole["MinimumDihedralAngle_deg"], 10.0)  # the header's units
         self.assertLess(whole["MeanQuality"], 1.45)
         self.assertEqual(whole["InvertedTetrahedra"], 0)
 
@@ -324,7 +324,7 @@ class ThoraxJob(unittest.TestCase):
         self.assertEqual(code, 0, stderr)
         with open(os.path.join(TMP, "coarse_bars", "q.csv")) as f:
             whole = [r for r in csv.DictReader(f) if r["Region"] == "-1"][0]
-        missed = float(whole["MaximumQuality"]) > 10 or float(whole["MinimumDihedralAngle"]) < 10
+        missed = float(whole["MaximumQuality"]) > 10 or float(whole["MinimumDihedralAngle_deg"]) < 10
         with open(os.path.join(TMP, "coarse_bars", "anatomesh-run.json")) as f:
             recorded = json.load(f)["warnings"]
         if missed:

@@ -156,7 +156,8 @@ class ChestCTToECG(unittest.TestCase):
         self.assertEqual(image.GetPointData().GetScalars().GetValue(stimulus), 5)  # in the myocardium
         with open(os.path.join(out, "chest_ecg.csv")) as f:
             rows = [line.strip().split(",") for line in f]
-        self.assertEqual(rows[0], ["Time", "I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6"])
+        self.assertEqual(rows[0], ["Time_ms"] + [lead + "_mV" for lead in
+                                                 ("I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6")])
         leads = np.array(rows[1:], dtype=float)
         self.assertEqual(len(leads), 501)  # 0, 1, ..., 500 ms
         self.assertTrue(np.all(np.isfinite(leads)))

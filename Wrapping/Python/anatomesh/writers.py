@@ -8,14 +8,25 @@ from .errors import PipelineError
 from .watch import WRITING, StageClock
 
 
+def column_header(array):
+    """A column's name, with its unit when the array records one (vtkDataArray::UNITS_LABEL):
+    "Volume_mm3", "Time_ms", "I_mV"."""
+    from vtkmodules.vtkCommonCore import vtkDataArray
+    name = array.GetName() or ""
+    info = array.GetInformation()
+    key = vtkDataArray.UNITS_LABEL()
+    unit = info.Get(key) if info is not None and info.Has(key) else ""
+    return name + "_" + unit if unit and not name.endswith("_" + unit) else name
+
+
 def write_csv(table, path):
-    """A vtkTable as comma-separated values with a header row, written atomically."""
+    """A vtkTable as comma-separated values with a header row (units in the names), written atomically."""
     if table is None or not table.IsA("vtkTable"):
         raise PipelineError("%s: .csv takes a table, got %s" % (path, table.GetClassName() if table else "nothing"))
     columns = [table.GetColumn(c) for c in range(table.GetNumberOfColumns())]
     with atomic.replacing(path) as tmp:
         with open(tmp, "w", encoding="utf-8") as f:
-            f.write(",".join(c.GetName() for c in columns) + "\n")
+            f.write(",".join(column_header(c) for c in columns) + "\n")
             for r in range(table.GetNumberOfRows()):
                 f.write(",".join("%.10g" % c.GetTuple1(r) if c.IsNumeric() else str(c.GetValue(r))
                                  for c in columns) + "\n")

@@ -15,6 +15,18 @@ class ReadError(Exception):
     """An output of the run that cannot be read (truncated, corrupt)."""
 
 
+# The units the CSV tables' headers carry ("Volume_mm3", "Time_ms", "I_mV"; anatomesh.writers).
+UNITS = ("mm3", "mm2", "deg", "ms", "mV")
+
+
+def base(header):
+    """A CSV column's name without its unit: "Volume_mm3" -> "Volume"."""
+    for unit in UNITS:
+        if header.endswith("_" + unit):
+            return header[:-len(unit) - 1]
+    return header
+
+
 def read_xml(path):
     """A .vtp or .vtu file's data; ReadError (with VTK's first message) when it cannot be read."""
     reader = vtkXMLPolyDataReader() if path.endswith(".vtp") else vtkXMLUnstructuredGridReader()
@@ -107,7 +119,7 @@ def find(folder):
                     found.setdefault("quality", p)
                 elif "Dice" in head and "Label" in head:
                     found.setdefault("dice", p)
-                elif head[:2] == ["Time", "I"]:
+                elif [base(h) for h in head[:2]] == ["Time", "I"]:
                     found.setdefault("ecg", p)
                 elif "TPolarity" in head and "Lead" in head:
                     found.setdefault("ecg_features", p)

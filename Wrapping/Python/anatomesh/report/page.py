@@ -18,7 +18,7 @@ figure{margin:1.5em 0}figcaption{color:#555}.note{color:#a33}"""
 def _ecg(path):
     head, rows = collect.table(path)
     values = np.array([[float(c) for c in r] for r in rows]) if rows else np.zeros((0, len(head)))
-    return values[:, 0], {name: values[:, i] for i, name in enumerate(head) if i > 0}
+    return values[:, 0], {collect.base(name): values[:, i] for i, name in enumerate(head) if i > 0}
 
 
 def _last_frame(found, key, notes):

@@ -2,6 +2,8 @@
 distances, Dice, the run's variables."""
 import html
 
+from .collect import base
+
 # The CEMRACS 2004 paper's whole-mesh row (Table 1): vertices, tetrahedra, mean and worst quality.
 PAPER = {"np": "261 000", "ne": "1 530 000", "MeanQuality": "1.56", "MaximumQuality": "47.9"}
 
@@ -32,8 +34,9 @@ def _name(names, label):
 def quality(head, rows, names=None):
     """Table 1: per region and whole mesh (region -1), then the paper's whole-mesh row."""
     cols = ["Region", "np", "nt", "ne", "MeanQuality", "MaximumQuality", "MinimumDihedralAngle", "Volume"]
-    index = [head.index(c) for c in cols if c in head]
-    shown = [c for c in cols if c in head]
+    plain = [base(h) for h in head]  # without the units ("Volume_mm3")
+    index = [plain.index(c) for c in cols if c in plain]
+    shown = [c for c in cols if c in plain]
     body = []
     for r in rows:
         cells = [r[i] for i in index]
