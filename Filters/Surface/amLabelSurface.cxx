@@ -63,6 +63,43 @@ int amLabelSurface::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+namespace
+{
+// The topology table with each region's voxel volume beside its enclosed volume, and field data
+// "LabelVoxelVolumes" (label, mm^3) on the surface itself, so the mesh made from it can be compared
+// with the label map downstream (amTetrahedralize's RegionVolumes).
+void AddVolumes(const amLabelGrid& g, const std::vector<amSurfaceTopology::Region>& regions, int background,
+  vtkTable* table, vtkPolyData* output)
+{
+  std::vector<vtkIdType> count(g.Values.size(), 0);
+  for (std::uint16_t l : g.Labels)
+    ++count[l];
+  std::map<int, vtkIdType> voxels;
+  for (size_t r = 0; r < g.Values.size(); ++r)
+    voxels[g.Values[r]] = count[r];
+  vtkSmartPointer<vtkTable> t = amSurfaceTopology::ToTable(regions);
+  vtkNew<vtkDoubleArray> vv;
+  vv->SetName("VoxelVolume");
+  amUnits::Set(vv, "mm3");
+  vv->SetNumberOfTuples(static_cast<vtkIdType>(regions.size()));
+  const double voxelVolume = g.Spacing[0] * g.Spacing[1] * g.Spacing[2];
+  for (size_t r = 0; r < regions.size(); ++r)
+    vv->SetValue(static_cast<vtkIdType>(r), voxels[regions[r].Label] * voxelVolume);
+  t->AddColumn(vv);
+  table->ShallowCopy(t);
+  vtkNew<vtkDoubleArray> labelVolumes;
+  labelVolumes->SetName("LabelVoxelVolumes");
+  labelVolumes->SetNumberOfComponents(2);
+  for (size_t r = 0; r < g.Values.size(); ++r)
+    if (g.Values[r] != background)
+    {
+      const double row[2] = { static_cast<double>(g.Values[r]), count[r] * voxelVolume };
+      labelVolumes->InsertNextTuple(row);
+    }
+  output->GetFieldData()->AddArray(labelVolumes);
+}
+}
+
 int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
@@ -213,35 +250,7 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
       vtkErrorMacro("Topology check failed: " << why);
       return 0;
     }
-    // The voxel volume of each region, to compare with the enclosed volume.
-    std::vector<vtkIdType> count(g.Values.size(), 0);
-    for (std::uint16_t l : g.Labels)
-      ++count[l];
-    std::map<int, vtkIdType> voxels;
-    for (size_t r = 0; r < g.Values.size(); ++r)
-      voxels[g.Values[r]] = count[r];
-    vtkSmartPointer<vtkTable> t = amSurfaceTopology::ToTable(regions);
-    vtkNew<vtkDoubleArray> vv;
-    vv->SetName("VoxelVolume");
-    amUnits::Set(vv, "mm3");
-    vv->SetNumberOfTuples(static_cast<vtkIdType>(regions.size()));
-    const double voxelVolume = g.Spacing[0] * g.Spacing[1] * g.Spacing[2];
-    for (size_t r = 0; r < regions.size(); ++r)
-      vv->SetValue(static_cast<vtkIdType>(r), voxels[regions[r].Label] * voxelVolume);
-    t->AddColumn(vv);
-    table->ShallowCopy(t);
-    // The same on the surface itself (label, mm^3), so the mesh made from it can be compared with
-    // the label map downstream (amTetrahedralize's RegionVolumes).
-    vtkNew<vtkDoubleArray> labelVolumes;
-    labelVolumes->SetName("LabelVoxelVolumes");
-    labelVolumes->SetNumberOfComponents(2);
-    for (size_t r = 0; r < g.Values.size(); ++r)
-      if (g.Values[r] != this->BackgroundLabel)
-      {
-        const double row[2] = { static_cast<double>(g.Values[r]), count[r] * voxelVolume };
-        labelVolumes->InsertNextTuple(row);
-      }
-    output->GetFieldData()->AddArray(labelVolumes);
+    AddVolumes(g, regions, this->BackgroundLabel, table, output);
     for (const auto& r : regions)
       if (r.BoundaryEdges || r.NonManifoldEdges || r.MisorientedEdges)
         vtkWarningMacro("Region " << r.Label << " is not a closed oriented manifold: " << r.BoundaryEdges
