@@ -147,3 +147,61 @@ TEST(TetraImprove, CollapseRefusedOffTheCurveOrBeyondTheBound)
   EXPECT_TRUE(aliveTets == aliveBefore);
   EXPECT_TRUE(m.FixedFaces == faces);
 }
+
+// Relabel (amTetraImproveRelabel.cxx): an element with a face on the interface takes the region
+// across it when the surface may move its thickness; the interface then runs over its other faces.
+TEST(TetraImprove, RelabelMovesAnElementAcrossTheInterfaceWithinTheBound)
+{
+  std::vector<double> p;
+  amTetraImprove::Mesh m(p);
+  std::unordered_map<int, long> count;
+  TwoRegions(p, m, count);
+  // A region-1 element with a face on the plane z = 2, inside the lattice.
+  int t = -1;
+  Tri onPlane{};
+  for (size_t k = 0; k < m.T.size() && t < 0; ++k)
+  {
+    if (m.R[k] != 1)
+      continue;
+    for (int i = 0; i < 4; ++i)
+    {
+      const Tri f = Sorted(m.T[k][(i + 1) % 4], m.T[k][(i + 2) % 4], m.T[k][(i + 3) % 4]);
+      bool inside = true, plane = true;
+      for (int v : f)
+      {
+        plane = plane && p[3 * v + 2] == 2;
+        inside = inside && p[3 * v] > 0 && p[3 * v] < N - 1 && p[3 * v + 1] > 0 && p[3 * v + 1] < N - 1;
+      }
+      if (plane && inside)
+      {
+        t = static_cast<int>(k);
+        onPlane = f;
+      }
+    }
+  }
+  ASSERT_GE(t, 0);
+  const std::map<int, double> before = Volumes(m);
+  const long one = count[1], two = count[2];
+  // Beyond the bound (the element is a voxel's edge thick): refused, nothing changes.
+  EXPECT_EQ(amTetraImprove::Relabel(m, t, 0.1, count), -1);
+  EXPECT_EQ(m.R[t], 1);
+  EXPECT_TRUE(m.FixedFaces.count(onPlane));
+  const double moved = amTetraImprove::Relabel(m, t, 2.0, count);
+  ASSERT_GT(moved, 0.1);
+  EXPECT_LE(moved, 2.0);
+  EXPECT_EQ(m.R[t], 2);
+  EXPECT_FALSE(m.FixedFaces.count(onPlane)); // now inside region 2
+  EXPECT_EQ(count[1], one - 1);
+  EXPECT_EQ(count[2], two + 1);
+  const std::map<int, double> after = Volumes(m);
+  const double v = amTetraGeometry::SignedVolume(m.X(m.T[t][0]), m.X(m.T[t][1]), m.X(m.T[t][2]), m.X(m.T[t][3]));
+  EXPECT_NEAR(after.at(1), before.at(1) - v, 1e-9);
+  EXPECT_NEAR(after.at(2), before.at(2) + v, 1e-9);
+  // Its other faces, towards region 1, are the interface now.
+  for (int i = 0; i < 4; ++i)
+  {
+    const int s = m.Across(t, i);
+    if (s >= 0 && m.R[s] == 1)
+      EXPECT_TRUE(m.FixedFaces.count(Sorted(m.T[t][(i + 1) % 4], m.T[t][(i + 2) % 4], m.T[t][(i + 3) % 4])));
+  }
+}
