@@ -205,3 +205,29 @@ TEST(TetraImprove, RelabelMovesAnElementAcrossTheInterfaceWithinTheBound)
       EXPECT_TRUE(m.FixedFaces.count(Sorted(m.T[t][(i + 1) % 4], m.T[t][(i + 2) % 4], m.T[t][(i + 3) % 4])));
   }
 }
+
+// SplitSurfaceEdge (amTetraImproveSurfaceSplit.cxx): an edge of the interface split at its midpoint,
+// every element and interface face on it in two, kept only when no element gets worse than the
+// worst it replaces. On the regular lattice every half is worse than the whole: undone, the mesh as
+// it was. An edge off the surface is not split.
+TEST(TetraImprove, SplitSurfaceEdgeUndoneWhereItMakesAWorseElement)
+{
+  std::vector<double> p;
+  amTetraImprove::Mesh m(p);
+  std::unordered_map<int, long> count;
+  TwoRegions(p, m, count);
+  const int u = Id(2, 2, 2), v = Id(3, 2, 2); // an edge of the interface (the lattice's x edges are edges)
+  ASSERT_TRUE(m.FixedEdges.count(amTetraImprove::EdgeKey(u, v)));
+  const std::map<int, double> before = Volumes(m);
+  const double area = PlaneArea(m);
+  const size_t faces = m.FixedFaces.size(), alive = std::count(m.Alive.begin(), m.Alive.end(), 1);
+  EXPECT_EQ(amTetraImprove::SplitSurfaceEdge(m, u, Id(2, 2, 1)), -1); // not a surface edge
+  EXPECT_EQ(amTetraImprove::SplitSurfaceEdge(m, u, v), -1);
+  EXPECT_TRUE(m.Connected(u, v));
+  EXPECT_EQ(static_cast<size_t>(std::count(m.Alive.begin(), m.Alive.end(), 1)), alive);
+  EXPECT_EQ(m.FixedFaces.size(), faces);
+  EXPECT_NEAR(PlaneArea(m), area, 1e-9);
+  const std::map<int, double> after = Volumes(m);
+  for (const auto& r : before)
+    EXPECT_NEAR(after.at(r.first), r.second, 1e-9) << "region " << r.first;
+}
