@@ -231,3 +231,38 @@ TEST(TetraImprove, SplitSurfaceEdgeUndoneWhereItMakesAWorseElement)
   for (const auto& r : before)
     EXPECT_NEAR(after.at(r.first), r.second, 1e-9) << "region " << r.first;
 }
+
+// Climb (amTetraImproveMoves.cxx): the local search moves a vertex up its star's worst quality; a
+// vertex of the interface, with a bound, slides along the flat interface and stays within it.
+TEST(TetraImprove, ClimbImprovesTheStarAndKeepsASurfaceVertexOnItsSurface)
+{
+  std::vector<double> p;
+  amTetraImprove::Mesh m(p);
+  std::unordered_map<int, long> count;
+  TwoRegions(p, m, count);
+  const auto worstOf = [&m](int v) {
+    double worst = 1;
+    for (int t : m.Inc[v])
+      worst = std::min(worst, m.Q[t]);
+    return worst;
+  };
+  const int free = Id(2, 2, 1), onPlane = Id(3, 3, 2);
+  ASSERT_FALSE(m.FixedVertex[free]);
+  ASSERT_TRUE(m.FixedVertex[onPlane]);
+  const double off[3] = { 2.4, 2.3, 1.35 }, slid[3] = { 3.35, 3.3, 2.0 };
+  amTetraImprove::MoveVertex(m, free, off);
+  amTetraImprove::MoveVertex(m, onPlane, slid);
+  const double freeBefore = worstOf(free), planeBefore = worstOf(onPlane);
+  const std::map<int, double> before = Volumes(m);
+  ASSERT_TRUE(amTetraImprove::Climb(m, free));
+  EXPECT_GT(worstOf(free), freeBefore);
+  m.Origin = m.P; // the surface as it is now: the bound is measured from it
+  ASSERT_TRUE(amTetraImprove::Climb(m, onPlane, 0.01));
+  EXPECT_GT(worstOf(onPlane), planeBefore);
+  EXPECT_NEAR(m.X(onPlane)[2], 2.0, 0.01); // on the interface, within the bound
+  const std::map<int, double> after = Volumes(m);
+  for (const auto& r : before)
+    EXPECT_NEAR(after.at(r.first), r.second, 0.02 * r.second) << "region " << r.first;
+  for (int t : m.Inc[onPlane])
+    EXPECT_GT(m.Q[t], 0); // nothing inverted
+}
