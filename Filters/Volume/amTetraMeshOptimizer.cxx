@@ -147,7 +147,7 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
       changes += smoothed;
       std::vector<char> climb(nv, 0);
       for (size_t t = 0; t < m.T.size(); ++t)
-        if (m.Alive[t] && m.Q[t] < poor)
+        if (m.Alive[t] && m.Objectives[t] < poor)
           for (int w : m.T[t])
             climb[w] = !m.FixedVertex[w] && (round == 0 || changed[w]);
       for (size_t v = 0; v < nv; ++v)

@@ -88,7 +88,7 @@ TEST(TetraImprove, CollapseAlongAnInterfaceKeepsItsPlace)
   amTetraImprove::MoveVertex(m, v, near);
   double worst = 1;
   for (int t : m.Inc[v])
-    worst = std::min(worst, m.Q[t]);
+    worst = std::min(worst, m.Objectives[t]);
   ASSERT_LT(worst, 0.1); // a sliver
   const std::map<int, double> before = Volumes(m);
   const size_t faces = m.FixedFaces.size();
@@ -109,7 +109,7 @@ TEST(TetraImprove, CollapseAlongAnInterfaceKeepsItsPlace)
   for (size_t t = 0; t < m.T.size(); ++t)
     if (m.Alive[t])
     {
-      worst = std::min(worst, m.Q[t]);
+      worst = std::min(worst, m.Objectives[t]);
       for (int i = 0; i < 4; ++i)
         ++shared[Sorted(m.T[t][(i + 1) % 4], m.T[t][(i + 2) % 4], m.T[t][(i + 3) % 4])];
     }
@@ -243,7 +243,7 @@ TEST(TetraImprove, ClimbImprovesTheStarAndKeepsASurfaceVertexOnItsSurface)
   const auto worstOf = [&m](int v) {
     double worst = 1;
     for (int t : m.Inc[v])
-      worst = std::min(worst, m.Q[t]);
+      worst = std::min(worst, m.Objectives[t]);
     return worst;
   };
   const int free = Id(2, 2, 1), onPlane = Id(3, 3, 2);
@@ -264,5 +264,5 @@ TEST(TetraImprove, ClimbImprovesTheStarAndKeepsASurfaceVertexOnItsSurface)
   for (const auto& r : before)
     EXPECT_NEAR(after.at(r.first), r.second, 0.02 * r.second) << "region " << r.first;
   for (int t : m.Inc[onPlane])
-    EXPECT_GT(m.Q[t], 0); // nothing inverted
+    EXPECT_GT(m.Objectives[t], 0); // nothing inverted
 }

@@ -41,7 +41,7 @@ struct Bipyramid
       if (this->M.Alive[t])
       {
         ++count;
-        worst = std::min(worst, this->M.Q[t]);
+        worst = std::min(worst, this->M.Objectives[t]);
         const double v = this->SignedVolume(this->M.T[t]);
         smallest = std::min(smallest, v);
         total += v;

@@ -52,7 +52,7 @@ struct Cap
           amTetraGeometry::SignedVolume(this->M.X(x[0]), this->M.X(x[1]), this->M.X(x[2]), this->M.X(x[3]));
         EXPECT_GT(v, 0);
         volume += v;
-        worst = std::min(worst, this->M.Q[t]);
+        worst = std::min(worst, this->M.Objectives[t]);
       }
     return { worst, volume };
   }
@@ -153,7 +153,7 @@ TEST(TetraImprove, SmoothAllIsTheSerialLoopOverItsColoursBitForBit)
     EXPECT_EQ(oneMoves, serialMoves);
     EXPECT_TRUE(serialPoints == twoPoints) << "pass " << pass;
     EXPECT_TRUE(serialPoints == onePoints) << "pass " << pass;
-    EXPECT_TRUE(serial.Q == two.Q && serial.Q == one.Q);
+    EXPECT_TRUE(serial.Objectives == two.Objectives && serial.Objectives == one.Objectives);
     EXPECT_TRUE(serial.Dirty == two.Dirty && serial.Dirty == one.Dirty);
     EXPECT_TRUE(serial.Tried == two.Tried && serial.Tried == one.Tried);
   }
@@ -179,7 +179,7 @@ TEST(TetraImprove, TopologyPassIsTheSerialLoopBitForBit)
     long serialChanges = 0;
     const size_t limit = serial.T.size();
     for (size_t t = 0; t < limit; ++t)
-      if (serial.Alive[t] && !serial.Tried[t] && serial.Q[t] < bad)
+      if (serial.Alive[t] && !serial.Tried[t] && serial.Objectives[t] < bad)
         serialChanges += amTetraImprove::Mend(serial, static_cast<int>(t), split, 7, serialReport, ringTets, ring);
     const long blockChanges = amTetraImprove::TopologyPass(blocks, bad, split, 7, blockReport);
     if (pass == 0)

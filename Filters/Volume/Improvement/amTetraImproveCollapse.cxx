@@ -154,15 +154,15 @@ double CollapseSurfaceEdge(Mesh& m, int v, int u, double maxDeviation, std::unor
   double before = std::numeric_limits<double>::infinity(), after = before;
   for (int t : m.Inc[u])
   {
-    before = std::min(before, m.Q[t]);
+    before = std::min(before, m.Objectives[t]);
     if (!m.Has(t, v))
-      after = std::min(after, m.Q[t]);
+      after = std::min(after, m.Objectives[t]);
   }
   std::vector<std::pair<Tet, int>> made;
   std::unordered_map<int, long> lost;
   for (int t : m.Inc[v])
   {
-    before = std::min(before, m.Q[t]);
+    before = std::min(before, m.Objectives[t]);
     if (m.Has(t, u))
     {
       if (++lost[m.R[t]] >= regionCount[m.R[t]])

@@ -20,7 +20,7 @@ bool SplitFace(Mesh& m, const Tri& f, double goal)
       (t < 0 ? t : s) = u;
   if (s < 0 || m.R[s] != m.R[t])
     return false;
-  const double old = std::min(m.Q[t], m.Q[s]);
+  const double old = std::min(m.Objectives[t], m.Objectives[s]);
   double centroid[3];
   for (int k = 0; k < 3; ++k)
     centroid[k] = (m.X(f[0])[k] + m.X(f[1])[k] + m.X(f[2])[k]) / 3.0;

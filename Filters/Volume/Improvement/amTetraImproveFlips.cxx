@@ -32,7 +32,7 @@ bool PlanEdgeRemoval(
     return false;
   double old = std::numeric_limits<double>::infinity();
   for (int t : tets)
-    old = std::min(old, m.Q[t]);
+    old = std::min(old, m.Objectives[t]);
   // best[i][j]: the best worst quality triangulating ring[i..j] (with chord i-j), via k.
   constexpr int N = 16;
   double best[N][N];
@@ -109,7 +109,7 @@ bool PlanFlip23(const Mesh& m, int t, int i, int& other, std::vector<Tet>& made)
   std::array<int, 3> ring{ { a, b, c } };
   if (amTetraGeometry::SignedVolume(m.X(d), m.X(e), m.X(a), m.X(b)) < 0)
     std::swap(ring[1], ring[2]);
-  const double old = std::min(m.Q[t], m.Q[other]);
+  const double old = std::min(m.Objectives[t], m.Objectives[other]);
   double q = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k)
     q = std::min(q, m.Quality(d, e, ring[k], ring[(k + 1) % 3]));

@@ -15,7 +15,7 @@ bool SplitEdge(Mesh& m, int u, int v, double goal, std::vector<int>& tets, std::
     return false;
   double old = std::numeric_limits<double>::infinity();
   for (int t : tets)
-    old = std::min(old, m.Q[t]);
+    old = std::min(old, m.Objectives[t]);
   const double mid[3] = { 0.5 * (m.X(u)[0] + m.X(v)[0]), 0.5 * (m.X(u)[1] + m.X(v)[1]), 0.5 * (m.X(u)[2] + m.X(v)[2]) };
   const int w = m.AddPoint(mid);
   const int region = m.R[tets[0]];
@@ -40,7 +40,7 @@ bool KeepInsertion(Mesh& m, int w, const std::vector<Tet>& before, int region, d
   Smooth(m, w);
   double now = std::numeric_limits<double>::infinity();
   for (int t : m.Inc[w])
-    now = std::min(now, m.Q[t]);
+    now = std::min(now, m.Objectives[t]);
   if (now > old + 1e-12 && now >= goal)
     return true;
   const std::vector<int> made = m.Inc[w];

@@ -70,9 +70,10 @@ public:
   std::vector<Tet> T;
   std::vector<int> R;
   std::vector<char> Alive;
-  std::vector<double> Q;   // Objective per tetrahedron (kept current as vertices move)
-  std::vector<char> Tried; // per tetrahedron: the flips failed and nothing moved since
-  std::vector<char> Dirty; // per vertex: its star changed since it was last smoothed
+  std::vector<double> Objectives; // per tetrahedron, amTetraMeshOptimizer::Objective in (0, 1] (1/Q or the
+                                  // dihedral term), kept current as vertices move
+  std::vector<char> Tried;        // per tetrahedron: the flips failed and nothing moved since
+  std::vector<char> Dirty;        // per vertex: its star changed since it was last smoothed
   std::vector<std::vector<int>> Inc;
   std::unordered_set<Tri, TriHash> FixedFaces;
   std::unordered_set<uint64_t> FixedEdges;
@@ -90,7 +91,7 @@ public:
     this->T = o.T;
     this->R = o.R;
     this->Alive = o.Alive;
-    this->Q = o.Q;
+    this->Objectives = o.Objectives;
     this->Tried = o.Tried;
     this->Dirty = o.Dirty;
     this->Inc = o.Inc;
@@ -122,7 +123,7 @@ public:
     this->T.push_back(t);
     this->R.push_back(region);
     this->Alive.push_back(1);
-    this->Q.push_back(q);
+    this->Objectives.push_back(q);
     this->Tried.push_back(0);
     for (int v : t)
     {

@@ -12,8 +12,8 @@ void CurrentStar(const Mesh& m, int v, double& worst, double& sum)
   sum = 0;
   for (int t : m.Inc[v])
   {
-    worst = std::min(worst, m.Q[t]);
-    sum += 1.0 / m.Q[t];
+    worst = std::min(worst, m.Objectives[t]);
+    sum += 1.0 / m.Objectives[t];
   }
 }
 
@@ -52,7 +52,7 @@ void PlaceVertex(Mesh& m, int v, const double* x, const double* q)
   for (int t : m.Inc[v])
   {
     // The same Objective on the same corners in the same order: the same value as computed anew.
-    m.Q[t] = q ? *q++ : m.Quality(m.T[t][0], m.T[t][1], m.T[t][2], m.T[t][3]);
+    m.Objectives[t] = q ? *q++ : m.Quality(m.T[t][0], m.T[t][1], m.T[t][2], m.T[t][3]);
     m.Tried[t] = 0;
   }
 }
@@ -164,9 +164,9 @@ bool Climb(Mesh& m, int v, double radius, double goal)
     // The worst tetrahedron of the star and the gradient of its quality.
     int active = -1;
     for (int t : inc)
-      if (active < 0 || m.Q[t] < m.Q[active])
+      if (active < 0 || m.Objectives[t] < m.Objectives[active])
         active = t;
-    const double worst0 = m.Q[active];
+    const double worst0 = m.Objectives[active];
     if (worst0 >= goal)
       break;
     const double h = 1e-5 * length;

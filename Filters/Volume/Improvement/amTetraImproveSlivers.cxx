@@ -19,7 +19,7 @@ double SliverClear(const amTetraMeshOptimizer::Options& options)
 
 bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options)
 {
-  if (m.Q[t] >= SliverClear(options))
+  if (m.Objectives[t] >= SliverClear(options))
     return false;
   double q, minDihedral, maxDihedral, radiusRatio, volume;
   amMeshQuality::TetraQuality(

@@ -20,7 +20,7 @@ int SplitSurfaceEdge(Mesh& m, int u, int v)
   const double mid[3] = { 0.5 * (m.X(u)[0] + m.X(v)[0]), 0.5 * (m.X(u)[1] + m.X(v)[1]), 0.5 * (m.X(u)[2] + m.X(v)[2]) };
   double worstBefore = 1;
   for (int t : around)
-    worstBefore = std::min(worstBefore, m.Q[t]);
+    worstBefore = std::min(worstBefore, m.Objectives[t]);
   const int w = m.AddPoint(mid);
   m.FixedVertex[w] = 1;
   if (!m.Origin.empty())
@@ -61,7 +61,7 @@ int SplitSurfaceEdge(Mesh& m, int u, int v)
   // element can make a worse one beside it).
   double worstAfter = 1;
   for (int t : made)
-    worstAfter = std::min(worstAfter, m.Q[t]);
+    worstAfter = std::min(worstAfter, m.Objectives[t]);
   if (worstAfter < worstBefore)
   {
     for (int t : made)

@@ -28,7 +28,7 @@ bool Mend(Mesh& m, int t, double split, int maxRing, amTetraMeshOptimizer::Repor
     return true;
   }
   // The last resort for the worst elements: split a free edge (the longest first).
-  if (m.Q[t] < split)
+  if (m.Objectives[t] < split)
   {
     std::array<std::pair<double, int>, 6> order;
     for (int e = 0; e < 6; ++e)
@@ -96,7 +96,7 @@ void PlanMend(const Mesh& m, int t, double split, int maxRing, Plan& plan, std::
       return;
     }
   }
-  if (!(m.Q[t] < split))
+  if (!(m.Objectives[t] < split))
     plan.What = Plan::Nothing;
 }
 }
@@ -115,7 +115,7 @@ long TopologyPass(Mesh& m, double bad, double split, int maxRing, amTetraMeshOpt
   long changes = 0;
   size_t id = 0;
   const size_t limit = m.T.size();
-  auto wanted = [&](size_t t) { return m.Alive[t] && !m.Tried[t] && m.Q[t] < bad; };
+  auto wanted = [&](size_t t) { return m.Alive[t] && !m.Tried[t] && m.Objectives[t] < bad; };
   auto clean = [&](int t) {
     for (int x : m.T[t])
       if (touched[x] == id)
