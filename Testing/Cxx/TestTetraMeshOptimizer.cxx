@@ -3,6 +3,7 @@
 #include "amTetraGeometry.h"
 #include "amTetraImproveMesh.h"
 #include "amTetraLattice.h"
+#include "amTetraMeshOptimizer.h"
 
 #include "vtkSMPTools.h"
 

@@ -21,7 +21,7 @@
 #define amTetraImproveMesh_h
 
 #include "amTetraGeometry.h"
-#include "amTetraMeshOptimizer.h"
+#include "amTetraImproveOptions.h"
 
 #include <algorithm>
 #include <array>
@@ -70,7 +70,7 @@ public:
   std::vector<Tet> T;
   std::vector<int> R;
   std::vector<char> Alive;
-  std::vector<double> Objectives; // per tetrahedron, amTetraMeshOptimizer::Objective in (0, 1] (1/Q or the
+  std::vector<double> Objectives; // per tetrahedron, Objective in (0, 1] (1/Q or the
                                   // dihedral term), kept current as vertices move
   std::vector<char> Tried;        // per tetrahedron: the flips failed and nothing moved since
   std::vector<char> Dirty;        // per vertex: its star changed since it was last smoothed
@@ -101,10 +101,7 @@ public:
     this->Origin = o.Origin;
   }
   const double* X(int v) const { return &this->P[3 * static_cast<size_t>(v)]; }
-  double Quality(int a, int b, int c, int d) const
-  {
-    return amTetraMeshOptimizer::Objective(this->X(a), this->X(b), this->X(c), this->X(d));
-  }
+  double Quality(int a, int b, int c, int d) const { return Objective(this->X(a), this->X(b), this->X(c), this->X(d)); }
   int AddPoint(const double* x)
   {
     this->P.insert(this->P.end(), x, x + 3);
@@ -192,13 +189,13 @@ void Replace(Mesh& m, const std::vector<int>& killed, const std::vector<Tet>& ma
 /// The topology pass's work on tetrahedron t: the first of its edge removals (rings of up to
 /// maxRing), 2-3 flips and, under 'split', edge and face splits that mends it, counted in the
 /// report; else t is marked tried. True when the mesh changed.
-bool Mend(Mesh& m, int t, double split, int maxRing, amTetraMeshOptimizer::Report& report, std::vector<int>& ringTets,
-  std::vector<int>& ring);
+bool Mend(
+  Mesh& m, int t, double split, int maxRing, Report& report, std::vector<int>& ringTets, std::vector<int>& ring);
 /// The topology pass over the tetrahedra 0 .. m.T.size()-1 as they are when it starts: for each
 /// alive one not yet tried and worse than 'bad', Mend. Exactly that serial loop: blocks of tetrahedra have their flips
 /// planned on the threads at once, then made in order, and one whose neighbourhood a change in its block touched first
 /// is done again at its turn. Adds what it did to the report; returns the changes.
-long TopologyPass(Mesh& m, double bad, double split, int maxRing, amTetraMeshOptimizer::Report& report);
+long TopologyPass(Mesh& m, double bad, double split, int maxRing, Report& report);
 /// The star of v as it is: its worst objective and the sum of the inverse objectives.
 void CurrentStar(const Mesh& m, int v, double& worst, double& sum);
 /// The star of v with v moved to x: its worst objective and the sum of the inverse objectives
@@ -254,17 +251,17 @@ bool SplitFace(Mesh& m, const Tri& f, double goal);
 double Relabel(Mesh& m, int t, double maxDeviation, std::unordered_map<int, long>& regionCount);
 /// Whether tetrahedron t fails the sliver bar of the options (Q above SliverQuality or a dihedral
 /// angle below SliverDihedral).
-bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options);
+bool IsSliver(const Mesh& m, int t, const Options& options);
 /// The objective above which no element is a sliver by the options' bar.
-double SliverClear(const amTetraMeshOptimizer::Options& options);
+double SliverClear(const Options& options);
 /// The live tetrahedra that fail the sliver bar of the options.
-long CountSlivers(const Mesh& m, const amTetraMeshOptimizer::Options& options);
+long CountSlivers(const Mesh& m, const Options& options);
 /// The sliver phase of amTetraMeshOptimizer (Options::MaximumSurfaceDeviation > 0): rounds of
 /// surface vertex slides, region changes and surface edge splits around the slivers left, each
 /// followed by improve(round) (the flips and moves) and fixEdges() (FixedEdges from FixedFaces);
 /// the surface's deviation is measured and kept within the budget (report.SurfaceDeviation).
-void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraMeshOptimizer::Report& report,
-  const std::function<void(int)>& improve, const std::function<void()>& fixEdges);
+void FreeSlivers(Mesh& m, const Options& options, Report& report, const std::function<void(int)>& improve,
+  const std::function<void()>& fixEdges);
 /// Collapses the surface edge (v, u): v moves onto u and leaves the mesh with the elements on the
 /// edge; the fixed faces around u are then those between two regions. Only where every interface
 /// around v is on the edge (v inside an interface, or on a junction curve along it), the link

@@ -31,7 +31,7 @@ void StarQuality(
     const double* p[4];
     for (int k = 0; k < 4; ++k)
       p[k] = m.T[t][k] == v ? x : m.X(m.T[t][k]);
-    const double q = amTetraMeshOptimizer::Objective(p[0], p[1], p[2], p[3]);
+    const double q = Objective(p[0], p[1], p[2], p[3]);
     if (each)
       *each++ = q;
     worst = std::min(worst, q);
@@ -181,7 +181,7 @@ bool Climb(Mesh& m, int v, double radius, double goal)
         y[d] = x[d] + (s ? h : -h);
         for (int k = 0; k < 4; ++k)
           p[k] = m.T[active][k] == v ? y : m.X(m.T[active][k]);
-        f[s] = amTetraMeshOptimizer::Objective(p[0], p[1], p[2], p[3]);
+        f[s] = Objective(p[0], p[1], p[2], p[3]);
       }
       g[d] = (f[1] - f[0]) / (2 * h);
     }

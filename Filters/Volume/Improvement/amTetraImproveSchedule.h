@@ -4,7 +4,7 @@
  *          which budget each attempt gets, and the margins the operations work to.
  *
  * Where the flips and moves leave slivers and the surface may move by MaximumSurfaceDeviation
- * (amTetraMeshOptimizer::Options), FreeSlivers (amTetraImproveSlivers.cxx) makes attempts from
+ * (Options, amTetraImproveOptions.h), FreeSlivers (amTetraImproveSlivers.cxx) makes attempts from
  * the same mesh. Each attempt runs rounds with a budget (mm): the slivers' surface vertices slide
  * by at most SlideShare of it, towards an objective GoalMargin above the bar; slivers still bad
  * change region and have a surface edge split; then the flips and moves run again. The operations

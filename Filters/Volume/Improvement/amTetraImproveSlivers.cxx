@@ -9,7 +9,7 @@
 
 namespace amTetraImprove
 {
-double SliverClear(const amTetraMeshOptimizer::Options& options)
+double SliverClear(const Options& options)
 {
   // The objective bounds both: 1/Q, and the smallest sine of the dihedral angles over the
   // regular tetrahedron's (a sine above sin(SliverDihedral) keeps every angle in its range).
@@ -17,7 +17,7 @@ double SliverClear(const amTetraMeshOptimizer::Options& options)
   return std::max(1.0 / options.SliverQuality, std::sin(options.SliverDihedral * pi / 180.0) * 3.0 / std::sqrt(8.0));
 }
 
-bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options)
+bool IsSliver(const Mesh& m, int t, const Options& options)
 {
   if (m.Objectives[t] >= SliverClear(options))
     return false;
@@ -27,7 +27,7 @@ bool IsSliver(const Mesh& m, int t, const amTetraMeshOptimizer::Options& options
   return !(q <= options.SliverQuality && minDihedral >= options.SliverDihedral);
 }
 
-long CountSlivers(const Mesh& m, const amTetraMeshOptimizer::Options& options)
+long CountSlivers(const Mesh& m, const Options& options)
 {
   long count = 0;
   for (size_t t = 0; t < m.T.size(); ++t)
@@ -120,8 +120,8 @@ double CollapseShortest(Mesh& m, int t, double maxDeviation, std::unordered_map<
 /// removed while the whole budget is left there, before slides around it spend it); Collapse: a
 /// short surface edge of each sliver collapses before any slide (where a junction curve zigzags,
 /// or a vertex inside an interface sits next to one, no element spans the place well).
-void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budget, First first,
-  amTetraMeshOptimizer::Report& report, const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
+void Attempt(Mesh& m, const Options& options, double budget, First first, Report& report,
+  const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
 {
   std::unordered_map<int, long> regionCount;
   for (size_t t = 0; t < m.T.size(); ++t)
@@ -182,18 +182,18 @@ void Attempt(Mesh& m, const amTetraMeshOptimizer::Options& options, double budge
 }
 }
 
-void FreeSlivers(Mesh& m, const amTetraMeshOptimizer::Options& options, amTetraMeshOptimizer::Report& report,
-  const std::function<void(int)>& improve, const std::function<void()>& fixEdges)
+void FreeSlivers(Mesh& m, const Options& options, Report& report, const std::function<void(int)>& improve,
+  const std::function<void()>& fixEdges)
 {
   const std::vector<Tri> surfaceBefore(m.FixedFaces.begin(), m.FixedFaces.end());
   m.Origin = m.P;
   // The attempts and their budgets: amTetraImproveSchedule.h.
   const std::vector<double> points = m.P;
   const Mesh saved = m;
-  const amTetraMeshOptimizer::Report savedReport = report;
+  const Report savedReport = report;
   std::vector<double> bestPoints;
   Mesh best(bestPoints);
-  amTetraMeshOptimizer::Report bestReport = savedReport;
+  Report bestReport = savedReport;
   long bestSlivers = -1;
   const double bound = options.MaximumSurfaceDeviation;
   SliverSchedule schedule(bound);

@@ -9,8 +9,7 @@ namespace
 const int Edges[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
 }
 
-bool Mend(Mesh& m, int t, double split, int maxRing, amTetraMeshOptimizer::Report& report, std::vector<int>& ringTets,
-  std::vector<int>& ring)
+bool Mend(Mesh& m, int t, double split, int maxRing, Report& report, std::vector<int>& ringTets, std::vector<int>& ring)
 {
   bool done = false;
   for (int e = 0; e < 6 && !done; ++e)
@@ -101,7 +100,7 @@ void PlanMend(const Mesh& m, int t, double split, int maxRing, Plan& plan, std::
 }
 }
 
-long TopologyPass(Mesh& m, double bad, double split, int maxRing, amTetraMeshOptimizer::Report& report)
+long TopologyPass(Mesh& m, double bad, double split, int maxRing, Report& report)
 {
   // A plan reads the stars of t's vertices: their tetrahedra, those tetrahedra's vertices'
   // positions and objectives. Every change stamps the vertices of the tetrahedra it makes: the
