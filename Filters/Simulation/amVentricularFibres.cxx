@@ -164,6 +164,124 @@ int amVentricularFibres::FillOutputPortInformation(int port, vtkInformation* inf
   return 1;
 }
 
+namespace
+{
+// The apex-to-base axis: from the landmarks (LVApexEpicardium to LVBase) when connected, else the
+// given one, else found from the LV endocardium and base surfaces. 'from' says which; false with
+// 'why' when none can be had.
+bool LongAxis(vtkPolyData* landmarks, const double given[3], const amP1Assembly& fem,
+  const std::vector<unsigned char>& nodeTag, double axis[3], std::string& from, std::string& why)
+{
+  std::copy(given, given + 3, axis);
+  from = "ApexToBase";
+  if (landmarks)
+  {
+    std::vector<double> x;
+    if (!amLandmarkPoints::Named(landmarks, { "LVApexEpicardium", "LVBase" }, x, why))
+    {
+      why = "The long axis cannot be taken from the Landmarks input: " + why + ".";
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+      axis[c] = x[3 + c] - x[c];
+    from = "Landmarks";
+  }
+  else if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0)
+  {
+    from = "LV endocardium";
+    if (!AxisFromSurfaces(fem, nodeTag, axis))
+    {
+      why = "no apex-to-base axis: connect Landmarks or set ApexToBase";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The output: the input with the fibres and sheets per heart tetrahedron (0 elsewhere) and, per
+// node, the transmural depth, the apico-basal coordinate and the ventricle (-1 off the heart).
+void AddFibres(vtkUnstructuredGrid* input, vtkUnstructuredGrid* output, const std::vector<vtkIdType>& heartCells,
+  const amTetraSubset& subset, const amRuleBasedFibres& fibres)
+{
+  const vtkIdType nCells = input->GetNumberOfCells();
+  output->ShallowCopy(input);
+  vtkNew<vtkFloatArray> fibreArray, sheetArray;
+  fibreArray->SetName("Fibers");
+  sheetArray->SetName("Sheets");
+  for (auto* a : { fibreArray.GetPointer(), sheetArray.GetPointer() })
+  {
+    a->SetNumberOfComponents(3);
+    a->SetNumberOfTuples(nCells);
+    a->FillValue(0.0f);
+  }
+  for (std::size_t k = 0; k < heartCells.size(); ++k)
+  {
+    fibreArray->SetTuple(heartCells[k], fibres.Fibres[k].data());
+    sheetArray->SetTuple(heartCells[k], fibres.Sheets[k].data());
+  }
+  output->GetCellData()->AddArray(fibreArray);
+  output->GetCellData()->AddArray(sheetArray);
+  const vtkIdType nPoints = input->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> depth, apicoBasal;
+  vtkNew<vtkIntArray> ventricle;
+  depth->SetName("TransmuralDepth");
+  apicoBasal->SetName("ApicoBasal");
+  ventricle->SetName("Ventricle");
+  depth->SetNumberOfTuples(nPoints);
+  apicoBasal->SetNumberOfTuples(nPoints);
+  ventricle->SetNumberOfTuples(nPoints);
+  for (vtkIdType p = 0; p < nPoints; ++p)
+  {
+    const vtkIdType i = subset.Local[p];
+    depth->SetValue(p, i < 0 ? -1.0f : static_cast<float>(fibres.TransmuralDepth[i]));
+    apicoBasal->SetValue(p, i < 0 ? -1.0f : static_cast<float>(fibres.ApicoBasal[i]));
+    ventricle->SetValue(p, i < 0 ? -1 : fibres.Ventricle[i]);
+  }
+  output->GetPointData()->AddArray(depth);
+  output->GetPointData()->AddArray(apicoBasal);
+  output->GetPointData()->AddArray(ventricle);
+}
+
+// The tagged triangles as a surface of their own, its points those of the input they came from.
+void AddTags(const std::vector<amVentricularTags::Triangle>& triangles, const std::vector<double>& xyz,
+  vtkIdType nPoints, vtkPolyData* tagsOut)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  std::vector<vtkIdType> local(nPoints, -1);
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdTypeArray> inputIds;
+  inputIds->SetName("InputPointId");
+  vtkNew<vtkIntArray> tagArray;
+  tagArray->SetName("VentricularTag");
+  for (const auto& t : triangles)
+  {
+    vtkIdType ids[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      if (local[t.Points[a]] < 0)
+      {
+        local[t.Points[a]] = points->InsertNextPoint(&xyz[3 * t.Points[a]]);
+        inputIds->InsertNextValue(t.Points[a]);
+      }
+      ids[a] = local[t.Points[a]];
+    }
+    polys->InsertNextCell(3, ids);
+    tagArray->InsertNextValue(t.Tag);
+  }
+  tagsOut->SetPoints(points);
+  tagsOut->SetPolys(polys);
+  tagsOut->GetCellData()->AddArray(tagArray);
+  tagsOut->GetPointData()->AddArray(inputIds);
+  vtkNew<vtkStringArray> names;
+  names->SetName("TagNames");
+  for (int t = 1; t <= 4; ++t)
+    names->InsertNextValue(std::to_string(t) + " " + amVentricularTags::Name(t));
+  tagsOut->GetFieldData()->AddArray(names);
+}
+
+}
+
 int amVentricularFibres::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -270,31 +388,17 @@ int amVentricularFibres::RequestData(
   parameters.HelixEpicardium = this->HelixEpicardium;
   parameters.TransverseEndocardium = this->TransverseEndocardium;
   parameters.TransverseEpicardium = this->TransverseEpicardium;
-  double axis[3] = { this->ApexToBase[0], this->ApexToBase[1], this->ApexToBase[2] };
-  std::string axisFrom = "ApexToBase";
-  if (landmarks)
+  double axis[3];
+  std::string axisFrom, why;
+  if (!LongAxis(landmarks, this->ApexToBase, subset.Fem, nodeTag, axis, axisFrom, why))
   {
-    std::vector<double> x;
-    std::string why;
-    if (!amLandmarkPoints::Named(landmarks, { "LVApexEpicardium", "LVBase" }, x, why))
-    {
-      vtkErrorMacro("The long axis cannot be taken from the Landmarks input: " << why << ".");
-      return 0;
-    }
-    for (int c = 0; c < 3; ++c)
-      axis[c] = x[3 + c] - x[c];
-    axisFrom = "Landmarks";
-  }
-  else if (axis[0] == 0 && axis[1] == 0 && axis[2] == 0)
-  {
-    axisFrom = "LV endocardium";
-    if (!AxisFromSurfaces(subset.Fem, nodeTag, axis))
-    {
-      vtkErrorMacro(<< "no apex-to-base axis: connect Landmarks or set ApexToBase (the mesh has "
-                    << this->TagCounts[amVentricularTags::LVEndocardium] << " LV endocardial and "
-                    << this->TagCounts[amVentricularTags::Base] << " base triangles to find it from)");
-      return 0;
-    }
+    if (axisFrom == "LV endocardium")
+      vtkErrorMacro(<< why << " (the mesh has " << this->TagCounts[amVentricularTags::LVEndocardium]
+                    << " LV endocardial and " << this->TagCounts[amVentricularTags::Base]
+                    << " base triangles to find it from)");
+    else
+      vtkErrorMacro(<< why);
+    return 0;
   }
   const double length = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
   if (!(length > 0))
@@ -313,76 +417,8 @@ int amVentricularFibres::RequestData(
   }
   this->UpdateProgress(0.9);
 
-  output->ShallowCopy(input);
-  vtkNew<vtkFloatArray> fibreArray, sheetArray;
-  fibreArray->SetName("Fibers");
-  sheetArray->SetName("Sheets");
-  for (auto* a : { fibreArray.GetPointer(), sheetArray.GetPointer() })
-  {
-    a->SetNumberOfComponents(3);
-    a->SetNumberOfTuples(nCells);
-    a->FillValue(0.0f);
-  }
-  for (std::size_t k = 0; k < heartCells.size(); ++k)
-  {
-    fibreArray->SetTuple(heartCells[k], fibres.Fibres[k].data());
-    sheetArray->SetTuple(heartCells[k], fibres.Sheets[k].data());
-  }
-  output->GetCellData()->AddArray(fibreArray);
-  output->GetCellData()->AddArray(sheetArray);
-  const vtkIdType nPoints = input->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> depth, apicoBasal;
-  vtkNew<vtkIntArray> ventricle;
-  depth->SetName("TransmuralDepth");
-  apicoBasal->SetName("ApicoBasal");
-  ventricle->SetName("Ventricle");
-  depth->SetNumberOfTuples(nPoints);
-  apicoBasal->SetNumberOfTuples(nPoints);
-  ventricle->SetNumberOfTuples(nPoints);
-  for (vtkIdType p = 0; p < nPoints; ++p)
-  {
-    const vtkIdType i = subset.Local[p];
-    depth->SetValue(p, i < 0 ? -1.0f : static_cast<float>(fibres.TransmuralDepth[i]));
-    apicoBasal->SetValue(p, i < 0 ? -1.0f : static_cast<float>(fibres.ApicoBasal[i]));
-    ventricle->SetValue(p, i < 0 ? -1 : fibres.Ventricle[i]);
-  }
-  output->GetPointData()->AddArray(depth);
-  output->GetPointData()->AddArray(apicoBasal);
-  output->GetPointData()->AddArray(ventricle);
-
-  // The tagged triangles.
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  std::vector<vtkIdType> local(nPoints, -1);
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkIdTypeArray> inputIds;
-  inputIds->SetName("InputPointId");
-  vtkNew<vtkIntArray> tagArray;
-  tagArray->SetName("VentricularTag");
-  for (const auto& t : triangles)
-  {
-    vtkIdType ids[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      if (local[t.Points[a]] < 0)
-      {
-        local[t.Points[a]] = points->InsertNextPoint(&xyz[3 * t.Points[a]]);
-        inputIds->InsertNextValue(t.Points[a]);
-      }
-      ids[a] = local[t.Points[a]];
-    }
-    polys->InsertNextCell(3, ids);
-    tagArray->InsertNextValue(t.Tag);
-  }
-  tagsOut->SetPoints(points);
-  tagsOut->SetPolys(polys);
-  tagsOut->GetCellData()->AddArray(tagArray);
-  tagsOut->GetPointData()->AddArray(inputIds);
-  vtkNew<vtkStringArray> names;
-  names->SetName("TagNames");
-  for (int t = 1; t <= 4; ++t)
-    names->InsertNextValue(std::to_string(t) + " " + amVentricularTags::Name(t));
-  tagsOut->GetFieldData()->AddArray(names);
+  AddFibres(input, output, heartCells, subset, fibres);
+  AddTags(triangles, xyz, input->GetNumberOfPoints(), tagsOut);
 
   std::ostringstream params;
   params << "Helix=" << this->HelixEndocardium << "/" << this->HelixEpicardium
