@@ -37,6 +37,110 @@ amSurfaceSmoothing::amSurfaceSmoothing()
 
 amSurfaceSmoothing::~amSurfaceSmoothing() = default;
 
+namespace
+{
+// A closed junction curve of few vertices (a loop around a voxel corner where three regions
+// meet in a saddle) is held where it is: smoothed along itself, it would shrink towards a point
+// (its shape is all high frequency), leaving edges of a few micrometres no remeshing can remove.
+void HoldShortLoops(amSurfaceMesh& mesh)
+{
+  const vtkIdType np = mesh.NumberOfPoints();
+  const size_t shortLoop = 12;
+  std::vector<unsigned char> seen(static_cast<size_t>(np), 0);
+  std::vector<vtkIdType> loop;
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    if (seen[v] || mesh.Kind[v] != amSurfaceMesh::Curve)
+      continue;
+    loop.assign(1, v);
+    seen[v] = 1;
+    bool closed = true;
+    for (size_t i = 0; i < loop.size(); ++i)
+      for (vtkIdType r = mesh.RingStart[loop[i]]; r < mesh.RingStart[loop[i] + 1]; ++r)
+      {
+        const vtkIdType w = mesh.Ring[r];
+        if (!mesh.FeatureEdge[mesh.RingEdge[r]])
+          continue;
+        if (mesh.Kind[w] != amSurfaceMesh::Curve)
+          closed = false;
+        else if (!seen[w])
+        {
+          seen[w] = 1;
+          loop.push_back(w);
+        }
+      }
+    if (closed && loop.size() < shortLoop)
+      for (vtkIdType w : loop)
+        mesh.Kind[w] = amSurfaceMesh::Corner;
+  }
+}
+
+// The neighbours each vertex averages over: its whole ring, or its two curve neighbours (none for
+// a corner), as lists start[v] .. start[v + 1] in nbr.
+void SmoothingNeighbours(const amSurfaceMesh& mesh, std::vector<vtkIdType>& start, std::vector<vtkIdType>& nbr)
+{
+  const vtkIdType np = mesh.NumberOfPoints();
+  start.assign(static_cast<size_t>(np + 1), 0);
+  nbr.clear();
+  nbr.reserve(mesh.Ring.size());
+  for (vtkIdType v = 0; v < np; ++v)
+  {
+    if (mesh.Kind[v] == amSurfaceMesh::Surface)
+      nbr.insert(nbr.end(), mesh.Ring.begin() + mesh.RingStart[v], mesh.Ring.begin() + mesh.RingStart[v + 1]);
+    else if (mesh.Kind[v] == amSurfaceMesh::Curve)
+      for (vtkIdType r = mesh.RingStart[v]; r < mesh.RingStart[v + 1]; ++r)
+        if (mesh.FeatureEdge[mesh.RingEdge[r]])
+          nbr.push_back(mesh.Ring[r]);
+    start[v + 1] = static_cast<vtkIdType>(nbr.size());
+  }
+}
+
+// No fold: a triangle whose normal would turn by more than 90 degrees from its input normal (x0)
+// keeps its vertices where they were in this step (x), repeated until no such triangle is left.
+void RevertFolds(const amSurfaceMesh& mesh, const std::vector<std::array<double, 3>>& x0,
+  const std::vector<std::array<double, 3>>& x, std::vector<std::array<double, 3>>& next)
+{
+  const vtkIdType np = mesh.NumberOfPoints();
+  for (int guard = 0; guard < 10; ++guard)
+  {
+    std::vector<unsigned char> revert(static_cast<size_t>(np), 0);
+    std::vector<unsigned char> flagged(mesh.Triangles.size(), 0);
+    vtkSMPTools::For(0, mesh.NumberOfTriangles(), [&](vtkIdType t0, vtkIdType t1) {
+      for (vtkIdType t = t0; t < t1; ++t)
+      {
+        const auto& tri = mesh.Triangles[t];
+        double u[3], w[3], u0[3], w0[3];
+        for (int d = 0; d < 3; ++d)
+        {
+          u[d] = next[tri[1]][d] - next[tri[0]][d];
+          w[d] = next[tri[2]][d] - next[tri[0]][d];
+          u0[d] = x0[tri[1]][d] - x0[tri[0]][d];
+          w0[d] = x0[tri[2]][d] - x0[tri[0]][d];
+        }
+        const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
+        const double n0[3] = { u0[1] * w0[2] - u0[2] * w0[1], u0[2] * w0[0] - u0[0] * w0[2],
+          u0[0] * w0[1] - u0[1] * w0[0] };
+        flagged[t] = n[0] * n0[0] + n[1] * n0[1] + n[2] * n0[2] <= 0;
+      }
+    });
+    bool any = false;
+    for (vtkIdType t = 0; t < mesh.NumberOfTriangles(); ++t)
+      if (flagged[t])
+      {
+        any = true;
+        for (vtkIdType v : mesh.Triangles[t])
+          revert[v] = 1;
+      }
+    if (!any)
+      break;
+    for (vtkIdType v = 0; v < np; ++v)
+      if (revert[v])
+        next[v] = x[v];
+  }
+}
+
+}
+
 int amSurfaceSmoothing::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -61,53 +165,10 @@ int amSurfaceSmoothing::RequestData(
   if (!this->PreserveFeatures)
     std::fill(mesh.Kind.begin(), mesh.Kind.end(), amSurfaceMesh::Surface);
 
-  // A closed junction curve of few vertices (a loop around a voxel corner where three regions
-  // meet in a saddle) is held where it is: smoothed along itself, it would shrink towards a point
-  // (its shape is all high frequency), leaving edges of a few micrometres no remeshing can remove.
-  {
-    const size_t shortLoop = 12;
-    std::vector<unsigned char> seen(static_cast<size_t>(np), 0);
-    std::vector<vtkIdType> loop;
-    for (vtkIdType v = 0; v < np; ++v)
-    {
-      if (seen[v] || mesh.Kind[v] != amSurfaceMesh::Curve)
-        continue;
-      loop.assign(1, v);
-      seen[v] = 1;
-      bool closed = true;
-      for (size_t i = 0; i < loop.size(); ++i)
-        for (vtkIdType r = mesh.RingStart[loop[i]]; r < mesh.RingStart[loop[i] + 1]; ++r)
-        {
-          const vtkIdType w = mesh.Ring[r];
-          if (!mesh.FeatureEdge[mesh.RingEdge[r]])
-            continue;
-          if (mesh.Kind[w] != amSurfaceMesh::Curve)
-            closed = false;
-          else if (!seen[w])
-          {
-            seen[w] = 1;
-            loop.push_back(w);
-          }
-        }
-      if (closed && loop.size() < shortLoop)
-        for (vtkIdType w : loop)
-          mesh.Kind[w] = amSurfaceMesh::Corner;
-    }
-  }
+  HoldShortLoops(mesh);
 
-  // The neighbours each vertex averages over: its whole ring, or its two curve neighbours.
-  std::vector<vtkIdType> start(static_cast<size_t>(np + 1), 0), nbr;
-  nbr.reserve(mesh.Ring.size());
-  for (vtkIdType v = 0; v < np; ++v)
-  {
-    if (mesh.Kind[v] == amSurfaceMesh::Surface)
-      nbr.insert(nbr.end(), mesh.Ring.begin() + mesh.RingStart[v], mesh.Ring.begin() + mesh.RingStart[v + 1]);
-    else if (mesh.Kind[v] == amSurfaceMesh::Curve)
-      for (vtkIdType r = mesh.RingStart[v]; r < mesh.RingStart[v + 1]; ++r)
-        if (mesh.FeatureEdge[mesh.RingEdge[r]])
-          nbr.push_back(mesh.Ring[r]);
-    start[v + 1] = static_cast<vtkIdType>(nbr.size());
-  }
+  std::vector<vtkIdType> start, nbr;
+  SmoothingNeighbours(mesh, start, nbr);
 
   const double lambda = 0.5, mu = 1.0 / (this->PassBand - 1.0 / lambda);
   std::vector<std::array<double, 3>> x = mesh.Points, next(x.size());
@@ -144,44 +205,7 @@ int amSurfaceSmoothing::RequestData(
         }
       }
     });
-    // No fold: a triangle whose normal would turn by more than 90 degrees from its input normal
-    // keeps its vertices where they were in this step (repeated until no such triangle is left).
-    for (int guard = 0; guard < 10; ++guard)
-    {
-      std::vector<unsigned char> revert(static_cast<size_t>(np), 0);
-      std::vector<unsigned char> flagged(mesh.Triangles.size(), 0);
-      vtkSMPTools::For(0, mesh.NumberOfTriangles(), [&](vtkIdType t0, vtkIdType t1) {
-        for (vtkIdType t = t0; t < t1; ++t)
-        {
-          const auto& tri = mesh.Triangles[t];
-          double u[3], w[3], u0[3], w0[3];
-          for (int d = 0; d < 3; ++d)
-          {
-            u[d] = next[tri[1]][d] - next[tri[0]][d];
-            w[d] = next[tri[2]][d] - next[tri[0]][d];
-            u0[d] = x0[tri[1]][d] - x0[tri[0]][d];
-            w0[d] = x0[tri[2]][d] - x0[tri[0]][d];
-          }
-          const double n[3] = { u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] };
-          const double n0[3] = { u0[1] * w0[2] - u0[2] * w0[1], u0[2] * w0[0] - u0[0] * w0[2],
-            u0[0] * w0[1] - u0[1] * w0[0] };
-          flagged[t] = n[0] * n0[0] + n[1] * n0[1] + n[2] * n0[2] <= 0;
-        }
-      });
-      bool any = false;
-      for (vtkIdType t = 0; t < mesh.NumberOfTriangles(); ++t)
-        if (flagged[t])
-        {
-          any = true;
-          for (vtkIdType v : mesh.Triangles[t])
-            revert[v] = 1;
-        }
-      if (!any)
-        break;
-      for (vtkIdType v = 0; v < np; ++v)
-        if (revert[v])
-          next[v] = x[v];
-    }
+    RevertFolds(mesh, x0, x, next);
     x.swap(next);
     if (it % 8 == 7)
       this->UpdateProgress(static_cast<double>(it + 1) / (2 * this->NumberOfIterations));
