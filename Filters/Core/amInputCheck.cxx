@@ -63,6 +63,12 @@ void ForValues(vtkDataArray* scalars, vtkIdType i0, vtkIdType i1, F&& f)
       return;
 }
 
+// A label map's value: a whole number in minimum..maximum (NaN is not).
+bool IsLabel(double v, double minimum, double maximum)
+{
+  return v >= minimum && v <= maximum && v == std::floor(v);
+}
+
 std::string NotALabel(vtkDataArray* scalars, vtkIdType bad, double minimum, double maximum)
 {
   std::ostringstream why;
@@ -98,7 +104,7 @@ bool amInputCheck::LabelCounts(
           ++*slot;
           return true;
         }
-        if (!(v >= minimum && v <= maximum) || v != std::floor(v))
+        if (!IsLabel(v, minimum, maximum))
         {
           firstBad[b] = i;
           return false;
@@ -129,7 +135,7 @@ bool amInputCheck::LabelBytes(vtkDataArray* scalars, int maximum, std::vector<un
   // On the threads; the voxel named is the first bad one (the smallest index), as in order.
   const vtkIdType bad = amThreading::FirstFailure(0, n, [&](vtkIdType i) {
     const double v = scalars->GetComponent(i, 0);
-    if (!(v >= 0 && v <= maximum) || v != std::floor(v))
+    if (!IsLabel(v, 0, maximum))
       return false;
     out[i] = static_cast<unsigned char>(v);
     return true;
