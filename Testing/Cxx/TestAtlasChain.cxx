@@ -3,6 +3,7 @@
 // Hausdorff bound met on clean and noisy maps and reported (finite) where thin sheets or thick slices
 // keep it from being met.
 #include "amAtlasChain.h"
+#include "amFigures.h"
 #include "amImageReader.h"
 #include "amMeshQuality.h"
 #include "amTestUtilities.h"
@@ -77,6 +78,10 @@ void ExpectNoSliver(amTetrahedralize* tetra, double deviation)
   EXPECT_EQ(tetra->GetNumberOfSlivers(), 0);
   EXPECT_LE(quality->GetMaximumQuality(), 10.0);
   EXPECT_GE(quality->GetMinimumDihedralAngle(), 10.0);
+  amTest::RecordFigure("tetgen.worst_q", quality->GetMaximumQuality(), "", 10.0);
+  amTest::RecordFigure("tetgen.smallest_dihedral", quality->GetMinimumDihedralAngle(), "deg", 10.0);
+  amTest::RecordFigure("tetgen.surface_moved", tetra->GetSurfaceDeviation(), "mm", deviation);
+  amTest::RecordFigure("tetgen.volume_misses", static_cast<double>(tetra->GetNumberOfVolumeMisses()), "", 0);
 }
 
 /// The errors of a chain's remeshing and TetGen stages (and their executives), caught.

@@ -2,6 +2,7 @@
 // bound the tetrahedra exactly, the world frame (origin, direction), every phantom organ, same
 // result twice, bad input.
 #include "amAtlasChain.h" // amTest::DistinctValues
+#include "amFigures.h"
 #include "amImageReader.h"
 #include "amLabelMapTetrahedralize.h"
 #include "amMeshQuality.h"
@@ -472,6 +473,10 @@ TEST(LabelMapTetrahedralize, EveryLabelOfARealMapAndNoSliver)
     EXPECT_EQ(m->GetNumberOfSlivers(), 0);
     EXPECT_LE(quality->GetMaximumQuality(), 10.0);
     EXPECT_GE(quality->GetMinimumDihedralAngle(), 10.0);
+    amTest::RecordFigure("cgal_real.worst_q", quality->GetMaximumQuality(), "", 10.0);
+    amTest::RecordFigure("cgal_real.smallest_dihedral", quality->GetMinimumDihedralAngle(), "deg", 10.0);
+    amTest::RecordFigure("cgal_real.volume_misses", static_cast<double>(m->GetNumberOfVolumeMisses()), "", 0);
+    amTest::RecordFigure("cgal_real.surface_moved", m->GetVolumeDisplacement(), "mm");
     // Every region of at least 1 cm3 within 2 % of its voxels (PreserveVolumes: without it the
     // abdomen has 29 regions off, up to -37 %).
     EXPECT_EQ(m->GetNumberOfVolumeMisses(), 0) << map.Path;
@@ -516,6 +521,10 @@ TEST(LabelMapTetrahedralize, PreserveVolumesGivesEveryRegionItsVoxels)
       std::printf("sheets %.0f mm, PreserveVolumes %d: %lld regions off by more than 2 %%, worst %.2f %%, surface "
                   "moved %.3f mm\n",
         sheet, preserve, static_cast<long long>(misses[preserve]), 100 * worst, m->GetVolumeDisplacement());
+      amTest::RecordFigure(preserve ? "cgal_atlas.volume_misses" : "cgal_atlas.volume_misses_alone",
+        static_cast<double>(misses[preserve]), "", preserve ? 0.0 : NAN);
+      amTest::RecordFigure(
+        preserve ? "cgal_atlas.worst_volume_off" : "cgal_atlas.worst_volume_off_alone", 100 * worst, "%", preserve ? 2.0 : NAN);
       if (preserve)
       {
         EXPECT_LE(worst, 0.02);

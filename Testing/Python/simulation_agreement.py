@@ -1,13 +1,21 @@
 """The two checks of a simulation on a segmented mesh against the same simulation on the phantom's exact
-labels: activation times within 5 ms RMS at the nodes both hearts share, every lead correlating >= 0.95.
-A test case mixes them in and sets ``segmented`` and ``truth`` to (heart with ActivationTime, {lead: values})."""
+labels: activation times within ``activation_rms_bar`` (5 ms) RMS at the nodes both hearts share, every lead
+correlating >= ``correlation_bar`` (0.95); a case whose figures the README quotes sets bars near them.
+A test case mixes them in and sets ``segmented`` and ``truth`` to (heart with ActivationTime, {lead: values});
+both figures are recorded (figures_record) under ``figure_prefix``."""
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkProbeFilter
 
+from figures_record import record
+
 
 class AgreesWithTruth:
+    activation_rms_bar = 5.0  # ms
+    correlation_bar = 0.95
+    figure_prefix = None
+
     def test_activation_times_agree(self):
         seg_heart, truth_heart = self.segmented[0], self.truth[0]
         seg_act = vtk_to_numpy(seg_heart.GetPointData().GetArray("ActivationTime"))
@@ -24,14 +32,21 @@ class AgreesWithTruth:
         rms = np.sqrt(np.mean((seg_act[valid] - truth_act[valid]) ** 2))
         print("activation: RMS difference %.2f ms over %d common nodes (%.1f %%); last %.1f vs %.1f ms"
               % (rms, valid.sum(), 100 * valid.mean(), seg_act.max(), truth_act[valid].max()))
-        self.assertLessEqual(rms, 5.0)
+        if self.figure_prefix:
+            record(self, self.figure_prefix + ".activation_rms", float(rms), "ms", self.activation_rms_bar)
+        self.assertLessEqual(rms, self.activation_rms_bar)
 
     def test_every_lead_correlates(self):
         seg, truth = self.segmented[1], self.truth[1]
         self.assertEqual(list(seg), list(truth))
         np.testing.assert_array_equal(seg["Time"], truth["Time"])
+        lowest = 1.0
         for name in list(seg)[1:]:
             r = np.corrcoef(seg[name], truth[name])[0, 1]
+            lowest = min(lowest, r)
             print("lead %-4s correlation %.4f, peak %.1f vs %.1f mV" % (name, r, np.abs(seg[name]).max(),
                                                                      np.abs(truth[name]).max()))
-            self.assertGreaterEqual(r, 0.95, name)
+            self.assertGreaterEqual(r, self.correlation_bar, name)
+        if self.figure_prefix:
+            record(self, self.figure_prefix + ".lowest_lead_correlation", float(lowest), "",
+                   self.correlation_bar)

@@ -12,6 +12,8 @@ import subprocess
 import sys
 import unittest
 
+from figures_record import record
+
 SOURCE = os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 SHARED = os.environ.get("ANATOMESH_SHARED_DATA", os.path.join(SOURCE, "..", "shared", "data"))
 TMP = os.environ.get("ANATOMESH_TEST_TMP", "/tmp")
@@ -175,6 +177,12 @@ class ChestCTToECG(unittest.TestCase):
         heart.Update()
         activation = vtk_to_numpy(heart.GetOutput().GetPointData().GetArray("ActivationTime"))
         self.assertLess(abs(figures["QRS ms"] - activation.max()), 8.0, activation.max())  # the QRS spans it
+        leads_order = ("I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6")
+        record(self, "chest_ct.qrs", figures["QRS ms"], "ms", 120)
+        record(self, "chest_ct.activation", float(activation.max()), "ms")
+        record(self, "chest_ct.qt", figures["QT ms"], "ms", 460)
+        record(self, "chest_ct.t_upright", ", ".join(l for l in leads_order if figures["T %s" % l] == "upright"),
+               "leads")
         self.assertTrue(320 <= figures["QT ms"] <= 460, figures)
         for lead in ("II", "V5", "V6"):
             self.assertEqual(figures["T %s" % lead], "upright", lead)
