@@ -39,7 +39,7 @@ GROUPS = {
     "main_job": {"ctest": r"^Python\.test_main_job$"},
     "chest_ct": {"ctest": r"^Python\.test_real_ct$"},
     "variations": {"ctest": r"^Sample/SegmentationVariations\."},
-    "tetgen": {"ctest": r"AtlasChain\.(EveryLabelARegionAndTheBound|EveryLabelARegionThroughTetGen)"},
+    "tetgen": {"ctest": r"(AtlasChain\.(EveryLabelARegionAndTheBound|HundredLabels)|RealLabelMaps\.EveryLabelARegionThroughTetGen)"},
     "cgal": {"ctest": r"^LabelMapTetrahedralize\.(EveryLabelOfARealMapAndNoSliver|PreserveVolumesGivesEveryRegion)"},
     "dipole": {"ctest": r"^TorsoPotential\.CurrentSourceDipoleInASphere"},
     "surface": {"benchmark": "BenchmarkSurface", "filter": r"^(Extract/10/[01]|Remesh/[01]|OuterRemesh/[01]/10)/"},
