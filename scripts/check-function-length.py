@@ -2,11 +2,8 @@
 """Functions in Filters/ and IO/ longer than 150 lines: a filter is a thin face over plain cores.
 
 A function body is counted from its opening brace (alone on a line, as clang-format writes a
-function's) to the matching closing brace at the same indentation. The functions still over the
-limit are listed in scripts/long-functions.txt with their length; the check fails when a function
-not listed exceeds the limit or a listed one grows, and says which (a listed function that is now
-short should be removed from the list). Usage: scripts/check-function-length.py [--list]
-(--list prints the current offenders in the list's format).
+function's) to the matching closing brace at the same indentation; the check fails on any function
+over the limit and names it. Usage: scripts/check-function-length.py
 """
 import os
 import re
@@ -45,27 +42,11 @@ def functions():
 
 
 def main():
-    long = [(p, n, length) for p, n, length in functions() if length > LIMIT]
-    if "--list" in sys.argv:
-        for p, n, length in sorted(long):
-            print("%s %s %d" % (p, n, length))
-        return 0
-    allowed = {}
-    with open(os.path.join(HERE, "long-functions.txt")) as f:
-        for line in f:
-            if line.strip() and not line.startswith("#"):
-                p, n, length = line.split()
-                allowed[(p, n)] = int(length)
-    bad = 0
+    long = sorted((p, n, length) for p, n, length in functions() if length > LIMIT)
     for p, n, length in long:
-        if (p, n) not in allowed:
-            print("%s: %s is %d lines (at most %d): split it into steps, each a plain function" % (p, n, length, LIMIT))
-            bad += 1
-        elif length > allowed[(p, n)]:
-            print("%s: %s grew to %d lines (listed at %d)" % (p, n, length, allowed[(p, n)]))
-            bad += 1
-    print("%d functions over %d lines (%d listed to be split), %d problems" % (len(long), LIMIT, len(allowed), bad))
-    return 1 if bad else 0
+        print("%s: %s is %d lines (at most %d): split it into steps, each a plain function" % (p, n, length, LIMIT))
+    print("%d functions over %d lines" % (len(long), LIMIT))
+    return 1 if long else 0
 
 
 if __name__ == "__main__":

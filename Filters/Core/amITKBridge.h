@@ -13,6 +13,7 @@
 #include <itkImage.h>
 #include <itkImageIOBase.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -168,6 +169,18 @@ inline std::string WithoutLocation(const std::string& text)
     return text;
   const auto start = text.rfind('\n', itk);
   return text.substr(0, start == std::string::npos ? 0 : start + 1) + text.substr(end + 3);
+}
+
+/// An ITK exception's description on one line, without its source location.
+inline std::string Description(const std::string& what)
+{
+  std::string t = what;
+  const auto desc = t.find("Description: ");
+  if (desc != std::string::npos)
+    t = t.substr(desc + 13);
+  t = WithoutLocation(t);
+  std::replace(t.begin(), t.end(), '\n', ' ');
+  return t;
 }
 }
 

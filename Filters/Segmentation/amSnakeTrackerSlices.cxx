@@ -9,6 +9,66 @@
 
 using namespace amSnakeLevelSet;
 
+namespace
+{
+/// A new 2-D image on the slices' grid.
+template<typename TImage>
+typename TImage::Pointer NewSliceImage(const typename TImage::RegionType& region, const FloatImage<2>::SpacingType& sp)
+{
+  auto img = TImage::New();
+  img->SetRegions(region);
+  img->SetSpacing(sp);
+  img->Allocate();
+  return img;
+}
+
+/// The section shrunk by a pixel (the start of the next slice's evolution), or the section itself
+/// where nothing would be left.
+MaskImage<2>::Pointer Eroded(MaskImage<2>* section)
+{
+  auto erode =
+    itk::BinaryErodeImageFilter<MaskImage<2>, MaskImage<2>, itk::BinaryBallStructuringElement<unsigned char, 2>>::New();
+  itk::BinaryBallStructuringElement<unsigned char, 2> ball;
+  ball.SetRadius(1);
+  ball.CreateStructuringElement();
+  erode->SetKernel(ball);
+  erode->SetInput(section);
+  erode->SetForegroundValue(1);
+  erode->Update();
+  if (Count<2>(erode->GetOutput()) == 0)
+    return section;
+  return erode->GetOutput();
+}
+
+/// The intensity window around a mean: tolerance times the spread, at least the minimum window.
+void Window(double mean, double spread, const amSnakeTracker::Parameters& p, double& lo, double& hi)
+{
+  const double half = std::max(p.IntensityTolerance * spread, p.MinimumIntensityWindow);
+  lo = mean - half;
+  hi = mean + half;
+}
+
+/// The mean and spread of the feature under the mask; false for an empty mask.
+bool MaskedStatistics(const MaskImage<2>* mask, const FloatImage<2>* feature, size_t n, double& mean, double& spread)
+{
+  double a = 0, a2 = 0;
+  long c = 0;
+  for (size_t q = 0; q < n; ++q)
+    if (mask->GetBufferPointer()[q])
+    {
+      const double f = feature->GetBufferPointer()[q];
+      a += f;
+      a2 += f * f;
+      ++c;
+    }
+  if (c == 0)
+    return false;
+  mean = a / c;
+  spread = std::sqrt(std::max(0.0, a2 / c - mean * mean));
+  return true;
+}
+}
+
 // The paper's propagation: each section evolved as a 2-D threshold level set, from the seeds' balls
 // in the seeds' slices, then slice after slice from the previous section (eroded by a pixel),
 // until the section vanishes or changes abruptly.
@@ -28,22 +88,11 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
   sp2[0] = this->Spacing[u];
   sp2[1] = this->Spacing[v];
   auto sliceFeature = [&](int is) {
-    auto img = FloatImage<2>::New();
-    img->SetRegions(region2);
-    img->SetSpacing(sp2);
-    img->Allocate();
+    auto img = NewSliceImage<FloatImage<2>>(region2, sp2);
     for (int iv = 0; iv < nv; ++iv)
       for (int iu = 0; iu < nu; ++iu)
         img->GetBufferPointer()[static_cast<size_t>(iv) * nu + iu] = fv[this->AtSlice(iu, iv, is)];
     return img;
-  };
-  auto newMask = [&]() {
-    auto m = MaskImage<2>::New();
-    m->SetRegions(region2);
-    m->SetSpacing(sp2);
-    m->Allocate();
-    m->FillBuffer(0);
-    return m;
   };
   std::vector<char> done(static_cast<size_t>(ns), 0);
   std::map<int, std::vector<size_t>> bySlice; // seeds by their slice
@@ -59,11 +108,8 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
     if (done[s0])
       continue;
     // The seed slice: balls cut by the slice.
-    auto phi = FloatImage<2>::New();
-    phi->SetRegions(region2);
-    phi->SetSpacing(sp2);
-    phi->Allocate();
-    auto ballMask = newMask();
+    auto phi = NewSliceImage<FloatImage<2>>(region2, sp2);
+    auto ballMask = NewSliceImage<MaskImage<2>>(region2, sp2);
     for (int iv = 0; iv < nv; ++iv)
       for (int iu = 0; iu < nu; ++iu)
       {
@@ -95,10 +141,7 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
           m += this->SeedStats[sd].first;
           d = std::max(d, this->SeedStats[sd].second);
         }
-        m /= entry.second.size();
-        const double half = std::max(this->P.IntensityTolerance * d, this->P.MinimumIntensityWindow);
-        slo = m - half;
-        shi = m + half;
+        Window(m / entry.second.size(), d, this->P, slo, shi);
       }
       mask = Evolve<2>(sliceFeature(s0), phi, slo, shi, lsp, iterations2, nullptr, &this->Elapsed);
       KeepOverlapping<2>(mask, ballMask);
@@ -131,18 +174,7 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
       size_t previousArea = area0;
       for (int is = s0 + dir; is >= 0 && is < ns && !done[is]; is += dir)
       {
-        auto erode = itk::BinaryErodeImageFilter<MaskImage<2>, MaskImage<2>,
-          itk::BinaryBallStructuringElement<unsigned char, 2>>::New();
-        itk::BinaryBallStructuringElement<unsigned char, 2> ball;
-        ball.SetRadius(1);
-        ball.CreateStructuringElement();
-        erode->SetKernel(ball);
-        erode->SetInput(previous);
-        erode->SetForegroundValue(1);
-        erode->Update();
-        MaskImage<2>::Pointer start = previous;
-        if (Count<2>(erode->GetOutput()) > 0)
-          start = erode->GetOutput();
+        const MaskImage<2>::Pointer start = Eroded(previous);
         typename MaskImage<2>::Pointer next;
         const FloatImage<2>::Pointer feature2 = sliceFeature(is);
         try
@@ -152,24 +184,9 @@ bool amSnakeTracker::RunSlices(double tlo, double thi)
           {
             // Follow the structure: the interval of this slice comes from the section
             // found in the previous one (contrast changes along a vessel).
-            const FloatImage<2>* prevFeature = previousFeature;
-            double a = 0, a2 = 0;
-            long c = 0;
-            for (size_t q = 0; q < static_cast<size_t>(nu) * nv; ++q)
-              if (start->GetBufferPointer()[q])
-              {
-                const double f = prevFeature->GetBufferPointer()[q];
-                a += f;
-                a2 += f * f;
-                ++c;
-              }
-            if (c > 0)
-            {
-              const double m = a / c, d = std::sqrt(std::max(0.0, a2 / c - m * m));
-              const double half = std::max(this->P.IntensityTolerance * d, this->P.MinimumIntensityWindow);
-              slo = m - half;
-              shi = m + half;
-            }
+            double m, d;
+            if (MaskedStatistics(start, previousFeature, static_cast<size_t>(nu) * nv, m, d))
+              Window(m, d, this->P, slo, shi);
           }
           next = Evolve<2>(feature2, SignedDistance<2>(start), slo, shi, lsp, iterations2, nullptr, &this->Elapsed);
           if (this->P.AdaptiveSliceStatistics && this->P.AutomaticThresholds && this->P.RefineToHalfContrast)

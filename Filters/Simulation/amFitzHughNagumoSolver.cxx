@@ -180,43 +180,113 @@ int amFitzHughNagumoSolver::RequestInformation(
   return 1;
 }
 
+namespace
+{
+/// The conductivity tensor of each heart tetrahedron: its region's conductivity (pairs region,
+/// S/m; 'sigma' for the others) along its fibre, 'ratio' of it across.
+std::vector<std::array<double, 6>> ConductivityTensors(const std::vector<vtkIdType>& heartCells, vtkDataArray* regions,
+  vtkDataArray* fibers, const std::vector<double>& regionConductivities, double sigma, double ratio)
+{
+  std::map<int, double> sigmaOf;
+  for (std::size_t k = 0; k + 1 < regionConductivities.size(); k += 2)
+    sigmaOf[static_cast<int>(regionConductivities[k])] = regionConductivities[k + 1];
+  std::vector<std::array<double, 6>> tensors(heartCells.size());
+  for (std::size_t k = 0; k < heartCells.size(); ++k)
+  {
+    double s = sigma;
+    if (regions)
+    {
+      const auto it = sigmaOf.find(static_cast<int>(regions->GetComponent(heartCells[k], 0)));
+      if (it != sigmaOf.end())
+        s = it->second;
+    }
+    double f[3] = { 0, 0, 0 };
+    if (fibers)
+      fibers->GetTuple(heartCells[k], f);
+    tensors[k] = amP1Assembly::FiberTensor(s, s * ratio, f);
+  }
+  return tensors;
+}
+
+/// The Purkinje network's stand-in spreading at a speed: each endocardial node's stimulus starts
+/// after StimulusStart by its distance from the stimulus centre, less that of the nearest
+/// endocardial node (which starts at StimulusStart), over that speed.
+std::vector<double> EndocardialDelays(
+  const amP1Assembly& fem, const std::vector<unsigned char>& stimulated, const double centre[3], double speed)
+{
+  const std::size_t n = fem.Points.size();
+  std::vector<double> delays(n, 0.0);
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i)
+    if (stimulated[i])
+    {
+      double d2 = 0;
+      for (int c = 0; c < 3; ++c)
+        d2 += (fem.Points[i][c] - centre[c]) * (fem.Points[i][c] - centre[c]);
+      delays[i] = std::sqrt(d2);
+      nearest = std::min(nearest, delays[i]);
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    if (stimulated[i])
+      delays[i] = (delays[i] - nearest) / speed;
+  return delays;
+}
+}
+
+std::string amFitzHughNagumoSolver::StimulatedNodes(vtkUnstructuredGrid* input, vtkDataArray* regions,
+  const amTetraSubset& subset, std::vector<unsigned char>& stimulated) const
+{
+  stimulated.assign(subset.Global.size(), 0);
+  if (!this->EndocardialRegions.empty())
+  {
+    // The Purkinje network's stand-in: every heart node on a cell of the given regions (the
+    // blood pools) is stimulated at once.
+    const std::set<int> endo(this->EndocardialRegions.begin(), this->EndocardialRegions.end());
+    for (vtkIdType c = 0; regions && c < input->GetNumberOfCells(); ++c)
+      if (endo.count(static_cast<int>(regions->GetComponent(c, 0))))
+      {
+        const vtkIdType* ids;
+        vtkIdType npts;
+        input->GetCellPoints(c, npts, ids);
+        for (vtkIdType k = 0; k < npts; ++k)
+          if (subset.Local[ids[k]] >= 0)
+            stimulated[subset.Local[ids[k]]] = 1;
+      }
+  }
+  else if (this->StimulusRegion >= 0)
+  {
+    for (std::size_t k = 0; k < subset.Cells.size(); ++k)
+      if (regions && static_cast<int>(regions->GetComponent(subset.Cells[k], 0)) == this->StimulusRegion)
+        for (vtkIdType v : subset.Fem.Tetrahedra[k])
+          stimulated[v] = 1;
+  }
+  else
+    for (vtkIdType i : subset.NodesWithin(this->ActiveStimulus, this->StimulusRadius))
+      stimulated[i] = 1;
+  if (std::find(stimulated.begin(), stimulated.end(), 1) != stimulated.end())
+    return "";
+  std::ostringstream where;
+  if (!this->EndocardialRegions.empty())
+    where << "no cell of the endocardial regions touches the heart";
+  else if (this->StimulusRegion >= 0)
+    where << "region " << this->StimulusRegion << " is not a heart region with cells";
+  else
+    where << "the sphere of radius " << this->StimulusRadius << " mm around (" << this->ActiveStimulus[0] << ", "
+          << this->ActiveStimulus[1] << ", " << this->ActiveStimulus[2] << ") holds no heart node";
+  return where.str();
+}
+
 int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
 {
   auto run = std::make_unique<Run>();
-  const vtkIdType nCells = input->GetNumberOfCells();
   vtkDataArray* regions = this->RegionArrayName ? input->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
-  const std::set<int> heartSet(this->HeartRegions.begin(), this->HeartRegions.end());
-
   // Heart cells and their nodes, numbered in input order.
   std::vector<vtkIdType> heartCells;
-  std::set<int> present;
-  for (vtkIdType c = 0; c < nCells; ++c)
+  std::string problem =
+    amTetraSubset::SelectRegions(input, regions, this->RegionArrayName, this->HeartRegions, heartCells);
+  if (!problem.empty())
   {
-    const int label = regions ? static_cast<int>(regions->GetComponent(c, 0)) : 0;
-    if (regions)
-      present.insert(label);
-    if (regions && !heartSet.count(label))
-      continue;
-    if (input->GetCellType(c) != VTK_TETRA)
-    {
-      vtkErrorMacro(<< "cell " << c << " of the heart is not a tetrahedron (VTK cell type " << input->GetCellType(c)
-                    << "); the solver needs a tetrahedral mesh");
-      return 0;
-    }
-    heartCells.push_back(c);
-  }
-  if (heartCells.empty())
-  {
-    std::ostringstream msg;
-    msg << "no heart: no tetrahedron has a '" << (this->RegionArrayName ? this->RegionArrayName : "")
-        << "' label among the heart regions (";
-    for (int l : this->HeartRegions)
-      msg << " " << l;
-    msg << " ); the mesh has regions (";
-    for (int l : present)
-      msg << " " << l;
-    msg << " )" << (nCells == 0 ? " and no cells at all" : "");
-    vtkErrorMacro(<< msg.str());
+    vtkErrorMacro(<< problem);
     return 0;
   }
   const double dt = this->TimeStep;
@@ -245,10 +315,6 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
     return 0;
   }
 
-  // Conductivity tensor per tetrahedron.
-  std::map<int, double> sigmaOf;
-  for (std::size_t k = 0; k + 1 < this->RegionConductivities.size(); k += 2)
-    sigmaOf[static_cast<int>(this->RegionConductivities[k])] = this->RegionConductivities[k + 1];
   vtkDataArray* fibers = this->FiberArrayName ? input->GetCellData()->GetArray(this->FiberArrayName) : nullptr;
   if (fibers && fibers->GetNumberOfComponents() != 3)
   {
@@ -256,72 +322,13 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
                   << " components; it needs 3 (a direction per cell)");
     return 0;
   }
-  std::vector<std::array<double, 6>> tensors(heartCells.size());
-  for (std::size_t k = 0; k < heartCells.size(); ++k)
+  const std::vector<std::array<double, 6>> tensors = ConductivityTensors(
+    heartCells, regions, fibers, this->RegionConductivities, this->Conductivity, this->TransverseConductivityRatio);
+  std::vector<unsigned char> stimulated;
+  problem = this->StimulatedNodes(input, regions, subset, stimulated);
+  if (!problem.empty())
   {
-    double sigma = this->Conductivity;
-    if (regions)
-    {
-      const auto it = sigmaOf.find(static_cast<int>(regions->GetComponent(heartCells[k], 0)));
-      if (it != sigmaOf.end())
-        sigma = it->second;
-    }
-    double f[3] = { 0, 0, 0 };
-    if (fibers)
-      fibers->GetTuple(heartCells[k], f);
-    tensors[k] = amP1Assembly::FiberTensor(sigma, sigma * this->TransverseConductivityRatio, f);
-  }
-
-  // Stimulated nodes.
-  std::vector<unsigned char> stimulated(n, 0);
-  vtkIdType nStimulated = 0;
-  if (!this->EndocardialRegions.empty())
-  {
-    // The Purkinje network's stand-in: every heart node on a cell of the given regions (the
-    // blood pools) is stimulated at once.
-    const std::set<int> endo(this->EndocardialRegions.begin(), this->EndocardialRegions.end());
-    for (vtkIdType c = 0; regions && c < input->GetNumberOfCells(); ++c)
-      if (endo.count(static_cast<int>(regions->GetComponent(c, 0))))
-      {
-        const vtkIdType* ids;
-        vtkIdType npts;
-        input->GetCellPoints(c, npts, ids);
-        for (vtkIdType k = 0; k < npts; ++k)
-          if (subset.Local[ids[k]] >= 0)
-            stimulated[subset.Local[ids[k]]] = 1;
-      }
-  }
-  else if (this->StimulusRegion >= 0)
-  {
-    for (std::size_t k = 0; k < heartCells.size(); ++k)
-      if (regions && static_cast<int>(regions->GetComponent(heartCells[k], 0)) == this->StimulusRegion)
-        for (vtkIdType v : fem.Tetrahedra[k])
-          stimulated[v] = 1;
-  }
-  else
-  {
-    const double r2 = this->StimulusRadius * this->StimulusRadius;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double d2 = 0;
-      for (int c = 0; c < 3; ++c)
-        d2 += (fem.Points[i][c] - this->ActiveStimulus[c]) * (fem.Points[i][c] - this->ActiveStimulus[c]);
-      stimulated[i] = d2 <= r2;
-    }
-  }
-  for (auto s : stimulated)
-    nStimulated += s;
-  if (nStimulated == 0)
-  {
-    std::ostringstream where;
-    if (!this->EndocardialRegions.empty())
-      where << "no cell of the endocardial regions touches the heart";
-    else if (this->StimulusRegion >= 0)
-      where << "region " << this->StimulusRegion << " is not a heart region with cells";
-    else
-      where << "the sphere of radius " << this->StimulusRadius << " mm around (" << this->ActiveStimulus[0] << ", "
-            << this->ActiveStimulus[1] << ", " << this->ActiveStimulus[2] << ") holds no heart node";
-    vtkErrorMacro(<< "the stimulus is outside the heart: " << where.str());
+    vtkErrorMacro(<< "the stimulus is outside the heart: " << problem);
     return 0;
   }
   this->UpdateProgress(0.02);
@@ -345,22 +352,7 @@ int amFitzHughNagumoSolver::Simulate(vtkUnstructuredGrid* input)
   // endocardial node (which starts at StimulusStart), over that speed.
   std::vector<double> delays;
   if (!this->EndocardialRegions.empty() && this->EndocardialConductionVelocity > 0)
-  {
-    delays.assign(n, 0.0);
-    double nearest = std::numeric_limits<double>::infinity();
-    for (vtkIdType i = 0; i < n; ++i)
-      if (stimulated[i])
-      {
-        double d2 = 0;
-        for (int c = 0; c < 3; ++c)
-          d2 += (fem.Points[i][c] - this->ActiveStimulus[c]) * (fem.Points[i][c] - this->ActiveStimulus[c]);
-        delays[i] = std::sqrt(d2);
-        nearest = std::min(nearest, delays[i]);
-      }
-    for (vtkIdType i = 0; i < n; ++i)
-      if (stimulated[i])
-        delays[i] = (delays[i] - nearest) / this->EndocardialConductionVelocity;
-  }
+    delays = EndocardialDelays(fem, stimulated, this->ActiveStimulus, this->EndocardialConductionVelocity);
   amFitzHughNagumoStepper stepper;
   stepper.Setup(fem, tensors, stimulated, sp, delays);
   this->UpdateProgress(0.05);

@@ -63,7 +63,11 @@
 #include "vtkUnstructuredGridAlgorithm.h"
 
 #include <memory>
+#include <string>
 #include <vector>
+
+class amTetraSubset;
+class vtkDataArray;
 
 class ANATOMESHFILTERSSIMULATION_EXPORT amFitzHughNagumoSolver : public vtkUnstructuredGridAlgorithm
 {
@@ -274,6 +278,10 @@ private:
   struct Run;
   std::unique_ptr<Run> Cache;
   int Simulate(vtkUnstructuredGrid* input);
+  /// The heart nodes the stimulus starts (endocardial regions, a stimulus region or the sphere);
+  /// where there is none, what it asked for.
+  std::string StimulatedNodes(vtkUnstructuredGrid* input, vtkDataArray* regions, const amTetraSubset& subset,
+    std::vector<unsigned char>& stimulated) const;
   std::vector<double> FrameTimes() const;
 };
 

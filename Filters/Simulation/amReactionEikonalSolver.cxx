@@ -127,6 +127,129 @@ int amReactionEikonalSolver::RequestInformation(
   return 1;
 }
 
+namespace
+{
+/// The endocardium's triangles (the Tags input: VentricularTag, InputPointId) added to the eikonal
+/// as its fast layer, and its nodes on the LV and the RV side (a node on both counts as LV); the
+/// problem, or "".
+std::string AddEndocardium(vtkPolyData* tags, const amTetraSubset& subset, double velocity, amEikonal& eikonal,
+  std::vector<vtkIdType>& lv, std::vector<vtkIdType>& rv)
+{
+  vtkDataArray* tag = tags->GetCellData()->GetArray("VentricularTag");
+  vtkDataArray* ids = tags->GetPointData()->GetArray("InputPointId");
+  if (!tag || !ids)
+    return "the Tags input has no cell data VentricularTag or point data InputPointId (Ventricular Fibres' Tags "
+           "output has both)";
+  const vtkIdType n = static_cast<vtkIdType>(subset.Global.size());
+  const vtkIdType nInput = static_cast<vtkIdType>(subset.Local.size());
+  std::vector<unsigned char> side(n, 0);
+  const double none[3] = { 0, 0, 0 };
+  for (vtkIdType c = 0; c < tags->GetNumberOfCells(); ++c)
+  {
+    const int t = static_cast<int>(tag->GetComponent(c, 0));
+    if (t != amVentricularTags::LVEndocardium && t != amVentricularTags::RVEndocardium)
+      continue;
+    const vtkIdType* pts;
+    vtkIdType npts;
+    tags->GetCellPoints(c, npts, pts);
+    std::array<vtkIdType, 4> tri{ -1, -1, -1, -1 };
+    bool inside = npts == 3;
+    for (vtkIdType a = 0; a < npts && inside; ++a)
+    {
+      const vtkIdType global = static_cast<vtkIdType>(ids->GetComponent(pts[a], 0));
+      inside = global >= 0 && global < nInput && subset.Local[global] >= 0;
+      if (inside)
+      {
+        tri[a] = subset.Local[global];
+        side[tri[a]] |= t == amVentricularTags::LVEndocardium ? 1 : 2;
+      }
+    }
+    if (!inside)
+      return "the Tags input does not belong to this mesh: triangle " + std::to_string(c) +
+        " has a point that is not a heart node";
+    if (velocity > 0)
+      eikonal.AddElement(tri, none, velocity, velocity);
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (side[i] & 1)
+      lv.push_back(i);
+    else if (side[i] & 2)
+      rv.push_back(i);
+  }
+  return "";
+}
+
+/// Each node's upstroke spread: the time the front takes to cross its elements (their mean edge
+/// length over the speed, mm/ms).
+std::vector<double> UpstrokeSpread(const amP1Assembly& fem, double speed)
+{
+  const std::size_t n = fem.Points.size();
+  std::vector<double> spread(n, 0.0), count(n, 0.0);
+  for (const auto& t : fem.Tetrahedra)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+      {
+        const auto& p = fem.Points[t[a]];
+        const auto& q = fem.Points[t[b]];
+        const double l =
+          std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+        for (vtkIdType v : { t[a], t[b] })
+        {
+          spread[v] += l;
+          count[v] += 1;
+        }
+      }
+  for (std::size_t i = 0; i < n; ++i)
+    spread[i] = count[i] > 0 ? spread[i] / count[i] / speed : 0.0;
+  return spread;
+}
+}
+
+vtkIdType amReactionEikonalSolver::Durations(const std::vector<double>& activation, const std::vector<double>& depth,
+  const std::vector<double>& apicoBasal, std::vector<double>& duration) const
+{
+  const std::size_t n = activation.size();
+  duration.resize(n);
+  vtkIdType unreached = 0;
+  double first = std::numeric_limits<double>::infinity();
+  for (double a : activation)
+    first = std::min(first, a);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double depthHere = std::min(1.0, std::max(0.0, depth[i]));
+    const double height = std::min(1.0, std::max(0.0, apicoBasal[i]));
+    duration[i] = this->ActionPotentialDurationEpicardium +
+      (this->ActionPotentialDurationEndocardium - this->ActionPotentialDurationEpicardium) * (1 - depthHere) +
+      this->ApicoBasalDurationDifference * (height - 0.5);
+    if (!std::isfinite(activation[i]))
+      ++unreached;
+    else
+      duration[i] += this->ActivationDurationSlope * (activation[i] - first);
+  }
+  return unreached;
+}
+
+void amReactionEikonalSolver::Repolarise(Run& run)
+{
+  const std::size_t n = run.Activation.size();
+  run.Repolarisation.resize(n);
+  this->FirstActivation = std::numeric_limits<double>::infinity();
+  this->LastActivation = 0;
+  this->LastRepolarisation = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const double at = run.Activation[i];
+    run.Repolarisation[i] = std::isfinite(at) ? at + run.Duration[i] : -1.0;
+    if (std::isfinite(at))
+    {
+      this->FirstActivation = std::min(this->FirstActivation, at);
+      this->LastActivation = std::max(this->LastActivation, at);
+      this->LastRepolarisation = std::max(this->LastRepolarisation, run.Repolarisation[i]);
+    }
+  }
+}
+
 bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* tags, vtkPolyData* landmarks)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -142,22 +265,12 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
                   << "' (3 components) and point data TransmuralDepth and ApicoBasal: run Ventricular Fibres first");
     return false;
   }
-  const std::set<int> heart(this->HeartRegions.begin(), this->HeartRegions.end());
   std::vector<vtkIdType> heartCells;
-  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
-    if (heart.count(static_cast<int>(regions->GetComponent(c, 0))))
-    {
-      if (input->GetCellType(c) != VTK_TETRA)
-      {
-        vtkErrorMacro(<< "cell " << c << " of the heart is not a tetrahedron (VTK cell type " << input->GetCellType(c)
-                      << ")");
-        return false;
-      }
-      heartCells.push_back(c);
-    }
-  if (heartCells.empty())
+  std::string problem =
+    amTetraSubset::SelectRegions(input, regions, this->RegionArrayName, this->HeartRegions, heartCells);
+  if (!problem.empty())
   {
-    vtkErrorMacro(<< "no heart: no tetrahedron has a label among HeartRegions");
+    vtkErrorMacro(<< problem);
     return false;
   }
   amTetraSubset subset;
@@ -179,51 +292,11 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
   std::vector<vtkIdType> lv, rv;
   if (tags)
   {
-    vtkDataArray* tag = tags->GetCellData()->GetArray("VentricularTag");
-    vtkDataArray* ids = tags->GetPointData()->GetArray("InputPointId");
-    if (!tag || !ids)
+    problem = AddEndocardium(tags, subset, this->EndocardialConductionVelocity, eikonal, lv, rv);
+    if (!problem.empty())
     {
-      vtkErrorMacro(<< "the Tags input has no cell data VentricularTag or point data InputPointId (Ventricular "
-                       "Fibres' Tags output has both)");
+      vtkErrorMacro(<< problem);
       return false;
-    }
-    std::vector<unsigned char> side(n, 0);
-    const double none[3] = { 0, 0, 0 };
-    for (vtkIdType c = 0; c < tags->GetNumberOfCells(); ++c)
-    {
-      const int t = static_cast<int>(tag->GetComponent(c, 0));
-      if (t != amVentricularTags::LVEndocardium && t != amVentricularTags::RVEndocardium)
-        continue;
-      const vtkIdType* pts;
-      vtkIdType npts;
-      tags->GetCellPoints(c, npts, pts);
-      std::array<vtkIdType, 4> tri{ -1, -1, -1, -1 };
-      bool inside = npts == 3;
-      for (vtkIdType a = 0; a < npts && inside; ++a)
-      {
-        const vtkIdType global = static_cast<vtkIdType>(ids->GetComponent(pts[a], 0));
-        inside = global >= 0 && global < input->GetNumberOfPoints() && subset.Local[global] >= 0;
-        if (inside)
-        {
-          tri[a] = subset.Local[global];
-          side[tri[a]] |= t == amVentricularTags::LVEndocardium ? 1 : 2;
-        }
-      }
-      if (!inside)
-      {
-        vtkErrorMacro(<< "the Tags input does not belong to this mesh: triangle " << c
-                      << " has a point that is not a heart node");
-        return false;
-      }
-      if (this->EndocardialConductionVelocity > 0)
-        eikonal.AddElement(tri, none, this->EndocardialConductionVelocity, this->EndocardialConductionVelocity);
-    }
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      if (side[i] & 1)
-        lv.push_back(i);
-      else if (side[i] & 2)
-        rv.push_back(i);
     }
   }
   std::vector<double> ab(n), d(n);
@@ -261,14 +334,8 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
       }
       std::copy(x.begin(), x.end(), centre);
     }
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double d2 = 0;
-      for (int c = 0; c < 3; ++c)
-        d2 += (subset.Fem.Points[i][c] - centre[c]) * (subset.Fem.Points[i][c] - centre[c]);
-      if (d2 <= this->StimulusRadius * this->StimulusRadius)
-        sources.push_back({ i, 0.0 });
-    }
+    for (vtkIdType i : subset.NodesWithin(centre, this->StimulusRadius))
+      sources.push_back({ i, 0.0 });
     std::ostringstream where;
     where << "sphere (" << centre[0] << "," << centre[1] << "," << centre[2] << ") r=" << this->StimulusRadius;
     sitesFrom = where.str();
@@ -285,23 +352,7 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
   this->UpdateProgress(0.6);
 
   // Durations per node, and the action potentials they need.
-  run->Duration.resize(n);
-  vtkIdType unreached = 0;
-  double first = std::numeric_limits<double>::infinity();
-  for (double a : run->Activation)
-    first = std::min(first, a);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double depthHere = std::min(1.0, std::max(0.0, d[i]));
-    const double height = std::min(1.0, std::max(0.0, ab[i]));
-    run->Duration[i] = this->ActionPotentialDurationEpicardium +
-      (this->ActionPotentialDurationEndocardium - this->ActionPotentialDurationEpicardium) * (1 - depthHere) +
-      this->ApicoBasalDurationDifference * (height - 0.5);
-    if (!std::isfinite(run->Activation[i]))
-      ++unreached;
-    else
-      run->Duration[i] += this->ActivationDurationSlope * (run->Activation[i] - first);
-  }
+  const vtkIdType unreached = this->Durations(run->Activation, d, ab, run->Duration);
   if (unreached > 0)
     vtkWarningMacro(<< unreached << " of " << n
                     << " heart nodes are never activated: their part of the heart does not touch the early sites");
@@ -319,45 +370,12 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
     return false;
   }
   // Repolarisation: the table's own APD90 is the duration asked for (to its resolution).
-  run->Repolarisation.resize(n);
-  this->FirstActivation = std::numeric_limits<double>::infinity();
-  this->LastActivation = 0;
-  this->LastRepolarisation = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double at = run->Activation[i];
-    run->Repolarisation[i] = std::isfinite(at) ? at + run->Duration[i] : -1.0;
-    if (std::isfinite(at))
-    {
-      this->FirstActivation = std::min(this->FirstActivation, at);
-      this->LastActivation = std::max(this->LastActivation, at);
-      this->LastRepolarisation = std::max(this->LastRepolarisation, run->Repolarisation[i]);
-    }
-  }
+  this->Repolarise(*run);
   // Each node's upstroke spreads over the time the front takes to cross its elements (their mean
   // edge length over the geometric mean of the velocities): on a coarse mesh the QRS is then one
   // smooth complex, not a spike per node (what diffusion does in a reaction-eikonal model).
-  run->Spread.assign(n, 0.0);
-  {
-    std::vector<double> count(n, 0.0);
-    for (const auto& t : subset.Fem.Tetrahedra)
-      for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b)
-        {
-          const auto& p = subset.Fem.Points[t[a]];
-          const auto& q = subset.Fem.Points[t[b]];
-          const double l =
-            std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
-          for (vtkIdType v : { t[a], t[b] })
-          {
-            run->Spread[v] += l;
-            count[v] += 1;
-          }
-        }
-    const double speed = std::sqrt(this->ConductionVelocityFibre * this->ConductionVelocityTransverse);
-    for (vtkIdType i = 0; i < n; ++i)
-      run->Spread[i] = count[i] > 0 ? run->Spread[i] / count[i] / speed : 0.0;
-  }
+  run->Spread =
+    UpstrokeSpread(subset.Fem, std::sqrt(this->ConductionVelocityFibre * this->ConductionVelocityTransverse));
   run->Heart = subset.MakeGrid(regions);
   run->Id = amSimulationRun::Next();
   std::ostringstream params;

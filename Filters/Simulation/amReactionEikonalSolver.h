@@ -177,6 +177,13 @@ private:
   struct Run;
   std::unique_ptr<Run> Cache;
   bool Simulate(vtkUnstructuredGrid* input, vtkPolyData* tags, vtkPolyData* landmarks);
+  /// Each node's action potential duration (ms) from its transmural depth, apico-basal height and
+  /// activation time; the number of nodes never activated.
+  vtkIdType Durations(const std::vector<double>& activation, const std::vector<double>& depth,
+    const std::vector<double>& apicoBasal, std::vector<double>& duration) const;
+  /// Each node's repolarisation time (activation + duration, -1 where never activated), and the
+  /// first and last activation and the last repolarisation.
+  void Repolarise(Run& run);
   std::vector<double> FrameTimes() const;
 };
 

@@ -9,6 +9,58 @@
 #include "vtkPoints.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <set>
+#include <sstream>
+
+std::string amTetraSubset::SelectRegions(vtkUnstructuredGrid* input, vtkDataArray* regions, const char* regionArrayName,
+  const std::vector<int>& wanted, std::vector<vtkIdType>& cells)
+{
+  cells.clear();
+  const std::set<int> wantedSet(wanted.begin(), wanted.end());
+  std::set<int> present;
+  const vtkIdType nCells = input->GetNumberOfCells();
+  for (vtkIdType c = 0; c < nCells; ++c)
+  {
+    if (regions)
+    {
+      const int label = static_cast<int>(regions->GetComponent(c, 0));
+      present.insert(label);
+      if (!wantedSet.count(label))
+        continue;
+    }
+    if (input->GetCellType(c) != VTK_TETRA)
+      return "cell " + std::to_string(c) + " of the heart is not a tetrahedron (VTK cell type " +
+        std::to_string(input->GetCellType(c)) + "); the solver needs a tetrahedral mesh";
+    cells.push_back(c);
+  }
+  if (!cells.empty())
+    return "";
+  std::ostringstream msg;
+  msg << "no heart: no tetrahedron has a '" << (regionArrayName ? regionArrayName : "")
+      << "' label among the heart regions (";
+  for (int l : wanted)
+    msg << " " << l;
+  msg << " ); the mesh has regions (";
+  for (int l : present)
+    msg << " " << l;
+  msg << " )" << (nCells == 0 ? " and no cells at all" : "");
+  return msg.str();
+}
+
+std::vector<vtkIdType> amTetraSubset::NodesWithin(const double centre[3], double radius) const
+{
+  std::vector<vtkIdType> nodes;
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(this->Fem.Points.size()); ++i)
+  {
+    double d2 = 0;
+    for (int c = 0; c < 3; ++c)
+      d2 += (this->Fem.Points[i][c] - centre[c]) * (this->Fem.Points[i][c] - centre[c]);
+    if (d2 <= radius * radius)
+      nodes.push_back(i);
+  }
+  return nodes;
+}
+
 void amTetraSubset::Build(vtkUnstructuredGrid* input, const std::vector<vtkIdType>& cells)
 {
   this->Cells = cells;

@@ -12,6 +12,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include <string>
 #include <vector>
 
 class vtkDataArray;
@@ -20,8 +21,16 @@ class vtkUnstructuredGrid;
 class amTetraSubset
 {
 public:
+  /// The cells of the given regions (every cell where 'regions' is null), each checked to be a
+  /// tetrahedron; the problem naming the regions the mesh has, or "" when there is at least one.
+  static std::string SelectRegions(vtkUnstructuredGrid* input, vtkDataArray* regions, const char* regionArrayName,
+    const std::vector<int>& wanted, std::vector<vtkIdType>& cells);
+
   /// Take the given tetrahedra (cell ids of input) and their points.
   void Build(vtkUnstructuredGrid* input, const std::vector<vtkIdType>& cells);
+
+  /// The nodes within 'radius' (mm) of 'centre', in node order.
+  std::vector<vtkIdType> NodesWithin(const double centre[3], double radius) const;
 
   /// The subset as a grid: points, tetrahedra, a copy of 'regions' for its cells (if given), and
   /// point data InputPointId.

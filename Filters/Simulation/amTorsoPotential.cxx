@@ -250,6 +250,143 @@ int amTorsoPotential::RequestUpdateExtent(
   return 1;
 }
 
+namespace
+{
+/// Dirichlet coupling: the torso is the cells outside the heart's regions; current source: every
+/// cell. Each checked to be a tetrahedron; the problem, or "".
+std::string SelectTorso(vtkUnstructuredGrid* mesh, vtkDataArray* regions, const std::set<int>& heartSet, bool source,
+  std::vector<vtkIdType>& torsoCells, std::vector<char>& inHeart)
+{
+  vtkIdType outside = 0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    const bool heartCell = heartSet.count(static_cast<int>(regions->GetComponent(c, 0))) > 0;
+    outside += !heartCell;
+    if (heartCell && !source)
+      continue;
+    if (mesh->GetCellType(c) != VTK_TETRA)
+      return "torso cell " + std::to_string(c) + " is not a tetrahedron (VTK cell type " +
+        std::to_string(mesh->GetCellType(c)) + ")";
+    torsoCells.push_back(c);
+    inHeart.push_back(heartCell);
+  }
+  return outside == 0 ? "no torso: every cell of the mesh is in the heart's regions" : "";
+}
+
+/// Torso parts without a heart node have no defined potential: they are held at 0 (the number of
+/// such nodes is returned). Current source: one heart node of each other part is the reference.
+vtkIdType Ground(
+  const amP1Assembly& fem, const std::vector<vtkIdType>& heartIndex, bool source, std::vector<unsigned char>& fixed)
+{
+  const vtkIdType n = static_cast<vtkIdType>(fem.Points.size());
+  std::vector<vtkIdType> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& t : fem.Tetrahedra)
+    for (int a = 1; a < 4; ++a)
+    {
+      const int r0 = Find(parent, t[0]), ra = Find(parent, t[a]);
+      if (r0 != ra)
+        parent[std::max(r0, ra)] = std::min(r0, ra);
+    }
+  std::vector<unsigned char> grounded(n, 0);
+  for (vtkIdType i = 0; i < n; ++i)
+    if (fixed[i] || (source && heartIndex[i] >= 0 && !grounded[Find(parent, i)]))
+    {
+      fixed[i] = 1;
+      grounded[Find(parent, i)] = 1;
+    }
+  vtkIdType floating = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+    if (!grounded[Find(parent, i)])
+    {
+      fixed[i] = 1;
+      ++floating;
+    }
+  return floating;
+}
+
+/// Each torso tetrahedron's (isotropic) bulk conductivity, S/m: its region's, and in the heart the
+/// extracellular plus the intracellular; and the intracellular one alone (0 outside the heart).
+void TorsoTensors(vtkDataArray* regions, const std::vector<vtkIdType>& torsoCells, const std::vector<char>& inHeart,
+  const std::vector<double>& regionConductivities, double conductivity, double intracellular,
+  std::vector<std::array<double, 6>>& tensors, std::vector<std::array<double, 6>>& intra)
+{
+  std::map<int, double> sigmaOf;
+  for (std::size_t k = 0; k + 1 < regionConductivities.size(); k += 2)
+    sigmaOf[static_cast<int>(regionConductivities[k])] = regionConductivities[k + 1];
+  tensors.resize(torsoCells.size());
+  intra.resize(torsoCells.size());
+  for (std::size_t k = 0; k < torsoCells.size(); ++k)
+  {
+    const auto it = sigmaOf.find(static_cast<int>(regions->GetComponent(torsoCells[k], 0)));
+    double sigma = it != sigmaOf.end() ? it->second : conductivity;
+    const double si = inHeart[k] ? intracellular : 0.0;
+    sigma += si;
+    tensors[k] = { sigma, sigma, sigma, 0, 0, 0 };
+    intra[k] = { si, si, si, 0, 0, 0 };
+  }
+}
+
+/// The body surface: the faces of exactly one torso tetrahedron (oriented outwards) not all of
+/// whose nodes are heart nodes, with point data InputPointId; the torso node of each of its points,
+/// and which torso nodes lie on it.
+vtkSmartPointer<vtkPolyData> BodySurface(const amTetraSubset& subset, const std::vector<vtkIdType>& heartIndex,
+  std::vector<vtkIdType>& bodyNodes, std::vector<unsigned char>& onSurface)
+{
+  const amP1Assembly& fem = subset.Fem;
+  const std::size_t n = fem.Points.size();
+  onSurface.assign(n, 0);
+  std::vector<vtkIdType> bodyIndex(n, -1);
+  auto body = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> bodyPoints;
+  bodyPoints->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> triangles;
+  for (const auto& f : amTetraFaces::Find(fem.Points[0].data(), fem.Tetrahedra, nullptr))
+  {
+    const auto& v = f.Points;
+    if (heartIndex[v[0]] >= 0 && heartIndex[v[1]] >= 0 && heartIndex[v[2]] >= 0)
+      continue;
+    for (vtkIdType p : v)
+      onSurface[p] = 1;
+    vtkIdType tri[3] = { v[0], v[1], v[2] };
+    for (vtkIdType& w : tri)
+    {
+      if (bodyIndex[w] < 0)
+      {
+        bodyIndex[w] = static_cast<vtkIdType>(bodyNodes.size());
+        bodyNodes.push_back(w);
+        bodyPoints->InsertNextPoint(fem.Points[w].data());
+      }
+      w = bodyIndex[w];
+    }
+    triangles->InsertNextCell(3, tri);
+  }
+  body->SetPoints(bodyPoints);
+  body->SetPolys(triangles);
+  vtkNew<vtkIdTypeArray> bodyIds;
+  bodyIds->SetName("InputPointId");
+  for (vtkIdType w : bodyNodes)
+    bodyIds->InsertNextValue(subset.Global[w]);
+  body->GetPointData()->AddArray(bodyIds);
+  return body;
+}
+}
+
+std::string amTorsoPotential::ProvenanceParameters(bool source, std::size_t electrodes) const
+{
+  std::ostringstream params;
+  params << "Conductivity=" << this->Conductivity << " RegionConductivities=";
+  for (std::size_t k = 0; k < this->RegionConductivities.size(); ++k)
+    params << (k ? "," : "") << this->RegionConductivities[k];
+  params << " PotentialArray=" << (this->PotentialArrayName ? this->PotentialArrayName : "")
+         << " PotentialScale=" << this->PotentialScale << " Electrodes=" << electrodes
+         << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG")
+         << " Coupling=" << (source ? "current source" : "Dirichlet");
+  if (source)
+    params << " IntracellularConductivity=" << this->IntracellularConductivity;
+  return params.str();
+}
+
 bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* heart)
 {
   auto model = std::make_unique<Model>();
@@ -279,24 +416,10 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   model->Source = this->Coupling == CURRENT_SOURCE;
   std::vector<vtkIdType> torsoCells;
   std::vector<char> inHeart;
-  vtkIdType outside = 0;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  const std::string problem = SelectTorso(mesh, regions, heartSet, model->Source, torsoCells, inHeart);
+  if (!problem.empty())
   {
-    const bool heartCell = heartSet.count(static_cast<int>(regions->GetComponent(c, 0))) > 0;
-    outside += !heartCell;
-    if (heartCell && !model->Source)
-      continue;
-    if (mesh->GetCellType(c) != VTK_TETRA)
-    {
-      vtkErrorMacro(<< "torso cell " << c << " is not a tetrahedron (VTK cell type " << mesh->GetCellType(c) << ")");
-      return false;
-    }
-    torsoCells.push_back(c);
-    inHeart.push_back(heartCell);
-  }
-  if (outside == 0)
-  {
-    vtkErrorMacro(<< "no torso: every cell of the mesh is in the heart's regions");
+    vtkErrorMacro(<< problem);
     return false;
   }
 
@@ -335,47 +458,14 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
     return false;
   }
   // Torso parts without a heart node have no defined potential: hold them at 0.
-  std::vector<vtkIdType> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& t : fem.Tetrahedra)
-    for (int a = 1; a < 4; ++a)
-    {
-      const int r0 = Find(parent, t[0]), ra = Find(parent, t[a]);
-      if (r0 != ra)
-        parent[std::max(r0, ra)] = std::min(r0, ra);
-    }
-  std::vector<unsigned char> grounded(n, 0);
-  for (vtkIdType i = 0; i < n; ++i)
-    if (model->Fixed[i] || (model->Source && model->HeartIndex[i] >= 0 && !grounded[Find(parent, i)]))
-    {
-      // Current source: one node of each part that holds heart nodes is the reference (0).
-      model->Fixed[i] = 1;
-      grounded[Find(parent, i)] = 1;
-    }
-  vtkIdType floating = 0;
-  for (vtkIdType i = 0; i < n; ++i)
-    if (!grounded[Find(parent, i)])
-    {
-      model->Fixed[i] = 1;
-      ++floating;
-    }
+  const vtkIdType floating = Ground(fem, model->HeartIndex, model->Source, model->Fixed);
   if (floating)
     vtkWarningMacro(<< floating << " torso nodes lie in parts that touch no heart node; their potential is held at 0");
 
   // Conductivity per tetrahedron.
-  std::map<int, double> sigmaOf;
-  for (std::size_t k = 0; k + 1 < this->RegionConductivities.size(); k += 2)
-    sigmaOf[static_cast<int>(this->RegionConductivities[k])] = this->RegionConductivities[k + 1];
-  std::vector<std::array<double, 6>> tensors(torsoCells.size()), intra(torsoCells.size());
-  for (std::size_t k = 0; k < torsoCells.size(); ++k)
-  {
-    const auto it = sigmaOf.find(static_cast<int>(regions->GetComponent(torsoCells[k], 0)));
-    double sigma = it != sigmaOf.end() ? it->second : this->Conductivity;
-    const double si = inHeart[k] ? this->IntracellularConductivity : 0.0;
-    sigma += si; // in the heart the bulk conductivity is the extracellular plus the intracellular
-    tensors[k] = { sigma, sigma, sigma, 0, 0, 0 };
-    intra[k] = { si, si, si, 0, 0, 0 };
-  }
+  std::vector<std::array<double, 6>> tensors, intra;
+  TorsoTensors(regions, torsoCells, inHeart, this->RegionConductivities, this->Conductivity,
+    this->IntracellularConductivity, tensors, intra);
   this->UpdateProgress(0.02);
   amSparseMatrix mass;
   fem.Assemble(&tensors, mass, model->K);
@@ -411,48 +501,8 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
 
   // Body surface: faces of exactly one torso tetrahedron (oriented outwards), not all of whose
   // nodes are heart nodes.
-  std::vector<unsigned char> onSurface(n, 0);
-  std::vector<amTetraFaces::Face> bodyFaces;
-  for (const auto& f : amTetraFaces::Find(fem.Points[0].data(), fem.Tetrahedra, nullptr))
-  {
-    const auto& v = f.Points;
-    if (model->HeartIndex[v[0]] >= 0 && model->HeartIndex[v[1]] >= 0 && model->HeartIndex[v[2]] >= 0)
-      continue;
-    for (vtkIdType p : v)
-      onSurface[p] = 1;
-    bodyFaces.push_back(f);
-  }
-  // The body surface: its triangles, oriented outwards, as output 2.
-  {
-    std::vector<vtkIdType> bodyIndex(n, -1);
-    auto body = vtkSmartPointer<vtkPolyData>::New();
-    vtkNew<vtkPoints> bodyPoints;
-    bodyPoints->SetDataTypeToDouble();
-    vtkNew<vtkCellArray> triangles;
-    for (const auto& f : bodyFaces)
-    {
-      vtkIdType tri[3] = { f.Points[0], f.Points[1], f.Points[2] };
-      for (vtkIdType& v : tri)
-      {
-        if (bodyIndex[v] < 0)
-        {
-          bodyIndex[v] = static_cast<vtkIdType>(model->BodyNodes.size());
-          model->BodyNodes.push_back(v);
-          bodyPoints->InsertNextPoint(fem.Points[v].data());
-        }
-        v = bodyIndex[v];
-      }
-      triangles->InsertNextCell(3, tri);
-    }
-    body->SetPoints(bodyPoints);
-    body->SetPolys(triangles);
-    vtkNew<vtkIdTypeArray> bodyIds;
-    bodyIds->SetName("InputPointId");
-    for (vtkIdType v : model->BodyNodes)
-      bodyIds->InsertNextValue(subset.Global[v]);
-    body->GetPointData()->AddArray(bodyIds);
-    model->Body = body;
-  }
+  std::vector<unsigned char> onSurface;
+  model->Body = BodySurface(subset, model->HeartIndex, model->BodyNodes, onSurface); // output 2
   std::vector<std::array<double, 3>>().swap(model->ElectrodePoints);
   std::vector<vtkIdType> nearest;
   std::vector<double> distances;
@@ -474,17 +524,8 @@ bool amTorsoPotential::Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* h
   }
 
   auto torso = subset.MakeGrid(regions); // output 0: geometry, Region, InputPointId
-  std::ostringstream params;
-  params << "Conductivity=" << this->Conductivity << " RegionConductivities=";
-  for (std::size_t k = 0; k < this->RegionConductivities.size(); ++k)
-    params << (k ? "," : "") << this->RegionConductivities[k];
-  params << " PotentialArray=" << (this->PotentialArrayName ? this->PotentialArrayName : "")
-         << " PotentialScale=" << this->PotentialScale << " Electrodes=" << model->Electrodes.size()
-         << " Solver=" << (this->Solver == DIRECT ? "direct" : "CG")
-         << " Coupling=" << (model->Source ? "current source" : "Dirichlet");
-  if (model->Source)
-    params << " IntracellularConductivity=" << this->IntracellularConductivity;
-  amProvenance::Record(torso, heart, "amTorsoPotential", params.str());
+  amProvenance::Record(
+    torso, heart, "amTorsoPotential", this->ProvenanceParameters(model->Source, model->Electrodes.size()));
   model->Torso = torso;
   model->MeshTime = mesh->GetMTime();
   model->FilterTime = this->GetMTime();

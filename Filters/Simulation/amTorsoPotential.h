@@ -52,7 +52,9 @@
 #include "AnatomeshFiltersSimulationModule.h" // export macro
 #include "vtkUnstructuredGridAlgorithm.h"
 
+#include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 class ANATOMESHFILTERSSIMULATION_EXPORT amTorsoPotential : public vtkUnstructuredGridAlgorithm
@@ -210,6 +212,8 @@ private:
   int LoopIndex;                        // -1: not looping over the heart's times
   std::vector<double> LoopTimes;        // the heart's times of the running loop
   bool Prepare(vtkUnstructuredGrid* mesh, vtkUnstructuredGrid* heart);
+  /// The provenance record's parameters.
+  std::string ProvenanceParameters(bool source, std::size_t electrodes) const;
   bool Solve(vtkUnstructuredGrid* heart, double time);
   bool Flush();
   void Produce(vtkInformationVector* outputVector);

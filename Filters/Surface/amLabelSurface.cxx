@@ -65,6 +65,86 @@ int amLabelSurface::FillOutputPortInformation(int port, vtkInformation* info)
 
 namespace
 {
+/// A label's rank among the grid's sorted values.
+std::uint16_t Rank(const amLabelGrid& g, int v)
+{
+  return static_cast<std::uint16_t>(std::lower_bound(g.Values.begin(), g.Values.end(), v) - g.Values.begin());
+}
+
+/// Every voxel's label as its rank among the grid's values, slice by slice on the threads.
+void RankLabels(vtkDataArray* scalars, amLabelGrid& g)
+{
+  const vtkIdType nVox = scalars->GetNumberOfTuples();
+  const vtkIdType slice = static_cast<vtkIdType>(g.N[0]) * g.N[1];
+  auto readSlice = [&](vtkIdType k, std::vector<double>& row) {
+    if (scalars->HasStandardMemoryLayout())
+    {
+      // Typed copy from the raw buffer (GetData/GetComponent go through virtual calls).
+      switch (scalars->GetDataType())
+      {
+        vtkTemplateMacro({
+          const VTK_TT* p = static_cast<const VTK_TT*>(scalars->GetVoidPointer(k * slice));
+          std::copy(p, p + slice, row.begin());
+        });
+      }
+      return;
+    }
+    vtkNew<vtkDoubleArray> buffer;
+    buffer->SetArray(row.data(), slice, 1);
+    scalars->GetData(k * slice, (k + 1) * slice - 1, 0, 0, buffer);
+  };
+  g.Labels.resize(static_cast<size_t>(nVox));
+  vtkSMPTools::For(0, g.N[2], [&](vtkIdType k0, vtkIdType k1) {
+    std::vector<double> row(static_cast<size_t>(slice));
+    for (vtkIdType k = k0; k < k1; ++k)
+    {
+      readSlice(k, row);
+      double last = std::numeric_limits<double>::quiet_NaN();
+      std::uint16_t lastRank = 0;
+      for (vtkIdType i = 0; i < slice; ++i)
+      {
+        if (row[i] != last)
+        {
+          last = row[i];
+          lastRank = Rank(g, static_cast<int>(last));
+        }
+        g.Labels[k * slice + i] = lastRank;
+      }
+    }
+  });
+}
+
+/// The extractor's points, triangles and label pairs moved into the output (its buffers freed).
+void MoveToPolyData(amLabelSurfaceExtractor& extractor, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(extractor.Points.size() / 3));
+  std::copy(
+    extractor.Points.begin(), extractor.Points.end(), static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0));
+  std::vector<float>().swap(extractor.Points);
+  const vtkIdType nTri = static_cast<vtkIdType>(extractor.Labels.size() / 2);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(nTri + 1);
+  connectivity->SetNumberOfTuples(3 * nTri);
+  vtkNew<vtkIntArray> labelArray;
+  labelArray->SetName("Labels");
+  labelArray->SetNumberOfComponents(2);
+  labelArray->SetNumberOfTuples(nTri);
+  std::copy(extractor.Triangles.begin(), extractor.Triangles.end(), connectivity->GetPointer(0));
+  std::copy(extractor.Labels.begin(), extractor.Labels.end(), labelArray->GetPointer(0));
+  std::vector<vtkIdType>().swap(extractor.Triangles);
+  std::vector<int>().swap(extractor.Labels);
+  vtkIdType* off = offsets->GetPointer(0);
+  for (vtkIdType t = 0; t <= nTri; ++t)
+    off[t] = 3 * t;
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->GetCellData()->AddArray(labelArray);
+}
+
 // The topology table with each region's voxel volume beside its enclosed volume, and field data
 // "LabelVoxelVolumes" (label, mm^3) on the surface itself, so the mesh made from it can be compared
 // with the label map downstream (amTetrahedralize's RegionVolumes).
@@ -151,48 +231,8 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkErrorMacro(<< why);
     return 0;
   }
-  auto rankOf = [&](int v) {
-    return static_cast<std::uint16_t>(std::lower_bound(g.Values.begin(), g.Values.end(), v) - g.Values.begin());
-  };
-  g.Background = rankOf(this->BackgroundLabel);
-  const vtkIdType nVox = scalars->GetNumberOfTuples();
-  const vtkIdType slice = static_cast<vtkIdType>(g.N[0]) * g.N[1];
-  auto readSlice = [&](vtkIdType k, std::vector<double>& row) {
-    if (scalars->HasStandardMemoryLayout())
-    {
-      // Typed copy from the raw buffer (GetData/GetComponent go through virtual calls).
-      switch (scalars->GetDataType())
-      {
-        vtkTemplateMacro({
-          const VTK_TT* p = static_cast<const VTK_TT*>(scalars->GetVoidPointer(k * slice));
-          std::copy(p, p + slice, row.begin());
-        });
-      }
-      return;
-    }
-    vtkNew<vtkDoubleArray> buffer;
-    buffer->SetArray(row.data(), slice, 1);
-    scalars->GetData(k * slice, (k + 1) * slice - 1, 0, 0, buffer);
-  };
-  g.Labels.resize(static_cast<size_t>(nVox));
-  vtkSMPTools::For(0, g.N[2], [&](vtkIdType k0, vtkIdType k1) {
-    std::vector<double> row(static_cast<size_t>(slice));
-    for (vtkIdType k = k0; k < k1; ++k)
-    {
-      readSlice(k, row);
-      double last = std::numeric_limits<double>::quiet_NaN();
-      std::uint16_t lastRank = 0;
-      for (vtkIdType i = 0; i < slice; ++i)
-      {
-        if (row[i] != last)
-        {
-          last = row[i];
-          lastRank = rankOf(static_cast<int>(last));
-        }
-        g.Labels[k * slice + i] = lastRank;
-      }
-    }
-  });
+  g.Background = Rank(g, this->BackgroundLabel);
+  RankLabels(scalars, g);
   this->UpdateProgress(0.1);
 
   extractor.Mirrored = input->GetDirectionMatrix()->Determinant() < 0;
@@ -205,33 +245,7 @@ int amLabelSurface::RequestData(vtkInformation*, vtkInformationVector** inputVec
                     << " voxel(s) relabelled where a label touched itself only at a voxel corner "
                        "between other regions (no vertex split can make that manifold).");
 
-  // The surface as VTK arrays.
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(extractor.Points.size() / 3));
-  std::copy(
-    extractor.Points.begin(), extractor.Points.end(), static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0));
-  std::vector<float>().swap(extractor.Points);
-  const vtkIdType nTri = static_cast<vtkIdType>(extractor.Labels.size() / 2);
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(nTri + 1);
-  connectivity->SetNumberOfTuples(3 * nTri);
-  vtkNew<vtkIntArray> labelArray;
-  labelArray->SetName("Labels");
-  labelArray->SetNumberOfComponents(2);
-  labelArray->SetNumberOfTuples(nTri);
-  std::copy(extractor.Triangles.begin(), extractor.Triangles.end(), connectivity->GetPointer(0));
-  std::copy(extractor.Labels.begin(), extractor.Labels.end(), labelArray->GetPointer(0));
-  std::vector<vtkIdType>().swap(extractor.Triangles);
-  std::vector<int>().swap(extractor.Labels);
-  vtkIdType* off = offsets->GetPointer(0);
-  for (vtkIdType t = 0; t <= nTri; ++t)
-    off[t] = 3 * t;
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetPolys(polys);
-  output->GetCellData()->AddArray(labelArray);
+  MoveToPolyData(extractor, output);
   vtkNew<vtkDoubleArray> voxelSize;
   voxelSize->SetName("VoxelSize");
   voxelSize->InsertNextValue(std::min({ g.Spacing[0], g.Spacing[1], g.Spacing[2] }));

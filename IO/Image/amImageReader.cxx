@@ -2,6 +2,7 @@
 
 #include "amHeaderText.h"
 
+#include "amDicomSeries.h"
 #include "amITKBridge.h"
 #include "amInputCheck.h"
 #include "amMetaImageCheck.h"
@@ -22,10 +23,8 @@
 
 #include <itkGDCMImageIO.h>
 #include <itkGDCMImageIOFactory.h>
-#include <itkGDCMSeriesFileNames.h>
 #include <itkImageFileReader.h>
 #include <itkImageIOFactory.h>
-#include <itkImageSeriesReader.h>
 #include <itkMetaImageIOFactory.h>
 
 #include <itkNiftiImageIOFactory.h>
@@ -34,7 +33,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <dirent.h>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -66,18 +64,6 @@ bool IsDirectory(const std::string& path)
 {
   struct stat st;
   return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-std::string FirstLine(const std::string& text)
-{
-  // ITK messages carry the source location first; keep the description, on one line.
-  std::string t = text;
-  const auto desc = t.find("Description: ");
-  if (desc != std::string::npos)
-    t = t.substr(desc + 13);
-  t = amITK::WithoutLocation(t);
-  std::replace(t.begin(), t.end(), '\n', ' ');
-  return t;
 }
 
 // A NRRD header with both "space" and per-axis "spacings" is invalid (the spec wants "space
@@ -114,101 +100,6 @@ std::string RepairNrrdSpacingsWithSpace(const std::string& path)
   const bool ok = ::write(fd, out.data(), out.size()) == static_cast<ssize_t>(out.size());
   ::close(fd);
   return ok ? std::string(tmpl) : std::string();
-}
-
-// The geometry of one DICOM slice.
-struct Slice
-{
-  std::string File;
-  double Position[3];
-  double Offset; // along the slice normal
-};
-
-struct Vec
-{
-  static double Dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-};
-
-// Trilinear resampling of an irregular (tilted and/or unevenly spaced) stack of parallel slices
-// onto a regular grid aligned with the slices.
-template<typename T>
-vtkSmartPointer<vtkImageData> ResampleStack(const amITK::Image3<T>* stack, const std::vector<Slice>& slices,
-  const double r[3], const double c[3], const double n[3], double sliceSpacing)
-{
-  const auto size = stack->GetLargestPossibleRegion().GetSize();
-  const int W = static_cast<int>(size[0]), H = static_cast<int>(size[1]);
-  const double sx = stack->GetSpacing()[0], sy = stack->GetSpacing()[1];
-  const size_t K = slices.size();
-  std::vector<double> a(K), b(K);
-  double amin = 0, amax = 0, bmin = 0, bmax = 0;
-  for (size_t k = 0; k < K; ++k)
-  {
-    const double d[3] = { slices[k].Position[0] - slices[0].Position[0], slices[k].Position[1] - slices[0].Position[1],
-      slices[k].Position[2] - slices[0].Position[2] };
-    a[k] = Vec::Dot(d, r);
-    b[k] = Vec::Dot(d, c);
-    amin = std::min(amin, a[k]);
-    amax = std::max(amax, a[k]);
-    bmin = std::min(bmin, b[k]);
-    bmax = std::max(bmax, b[k]);
-  }
-  const int Wo = static_cast<int>(std::floor((amax - amin) / sx + 1e-6)) + W;
-  const int Ho = static_cast<int>(std::floor((bmax - bmin) / sy + 1e-6)) + H;
-  const double span = slices.back().Offset - slices.front().Offset;
-  const int Ko = static_cast<int>(std::floor(span / sliceSpacing + 1e-6)) + 1;
-  const T* in = stack->GetBufferPointer();
-  const T fill = *std::min_element(in, in + static_cast<size_t>(W) * H * K);
-
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->SetDimensions(Wo, Ho, Ko);
-  double origin[3], direction[9];
-  for (int i = 0; i < 3; ++i)
-  {
-    origin[i] = slices[0].Position[i] + amin * r[i] + bmin * c[i];
-    direction[3 * i + 0] = r[i];
-    direction[3 * i + 1] = c[i];
-    direction[3 * i + 2] = n[i];
-  }
-  out->SetOrigin(origin);
-  out->SetSpacing(sx, sy, sliceSpacing);
-  out->SetDirectionMatrix(direction);
-  vtkSmartPointer<vtkDataArray> array;
-  array.TakeReference(vtkDataArray::CreateDataArray(vtkTypeTraits<T>::VTKTypeID()));
-  array->SetName("ImageScalars");
-  array->SetNumberOfTuples(static_cast<vtkIdType>(Wo) * Ho * Ko);
-  T* o = static_cast<T*>(array->GetVoidPointer(0));
-
-  auto sample = [&](size_t k, double u, double v) -> double {
-    if (u < 0 || v < 0 || u > W - 1 || v > H - 1)
-      return fill;
-    const int i0 = std::min(W - 2, static_cast<int>(u)), j0 = std::min(H - 2, static_cast<int>(v));
-    const double fu = u - i0, fv = v - j0;
-    const T* s = in + k * static_cast<size_t>(W) * H;
-    const double v00 = s[j0 * W + i0], v10 = s[j0 * W + i0 + 1];
-    const double v01 = s[(j0 + 1) * W + i0], v11 = s[(j0 + 1) * W + i0 + 1];
-    return (1 - fv) * ((1 - fu) * v00 + fu * v10) + fv * ((1 - fu) * v01 + fu * v11);
-  };
-  size_t k = 0;
-  for (int m = 0; m < Ko; ++m)
-  {
-    const double s = slices.front().Offset + m * sliceSpacing;
-    while (k + 2 < K && slices[k + 1].Offset < s)
-      ++k;
-    const double t = std::min(1.0, std::max(0.0, (s - slices[k].Offset) / (slices[k + 1].Offset - slices[k].Offset)));
-    for (int j = 0; j < Ho; ++j)
-      for (int i = 0; i < Wo; ++i)
-      {
-        const double pa = amin + i * sx, pb = bmin + j * sy;
-        const double v0 = sample(k, (pa - a[k]) / sx, (pb - b[k]) / sy);
-        const double v1 = sample(k + 1, (pa - a[k + 1]) / sx, (pb - b[k + 1]) / sy);
-        double v = (1 - t) * v0 + t * v1;
-        if (std::is_integral<T>::value)
-          v = std::floor(v + 0.5);
-        o[(static_cast<size_t>(m) * Ho + j) * Wo + i] = static_cast<T>(v);
-      }
-  }
-  out->GetPointData()->SetScalars(array);
-  return out;
 }
 
 void AddString(vtkImageData* img, const char* name, const std::string& value)
@@ -337,13 +228,13 @@ bool amImageReader::LoadFile(const std::string& path)
       }
       catch (const itk::ExceptionObject& e2)
       {
-        vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(e2.what()));
+        vtkErrorMacro("Cannot read the header of '" << path << "': " << amITK::Description(e2.what()));
         return false;
       }
     }
     else
     {
-      vtkErrorMacro("Cannot read the header of '" << path << "': " << FirstLine(what));
+      vtkErrorMacro("Cannot read the header of '" << path << "': " << amITK::Description(what));
       return false;
     }
   }
@@ -383,7 +274,7 @@ bool amImageReader::LoadFile(const std::string& path)
     }
     catch (const itk::ExceptionObject& e)
     {
-      error = FirstLine(e.what());
+      error = amITK::Description(e.what());
     }
   });
   if (!known)
@@ -409,265 +300,25 @@ bool amImageReader::LoadFile(const std::string& path)
 
 bool amImageReader::LoadDicomSeries(const std::string& folder, const std::string& onlyFile)
 {
-  // GDCM opens every entry of the folder: a FIFO or a device among them would block it.
-  if (DIR* d = opendir(folder.c_str()))
+  amDicomSeries::Request request;
+  request.Folder = folder;
+  request.OnlyFile = onlyFile;
+  request.SeriesUID = this->SeriesUID ? this->SeriesUID : "";
+  request.ResampleIrregular = this->ResampleIrregularSeries;
+  request.OutputSliceSpacing = this->OutputSliceSpacing;
+  amDicomSeries::Result series = amDicomSeries::Read(request);
+  if (!series.Image)
   {
-    std::string why;
-    while (const dirent* e = readdir(d))
-    {
-      const std::string name = e->d_name;
-      // (A dangling link GDCM skips as it would any file it cannot open.)
-      if (name == "." || name == ".." || amInputCheck::ReadableFile(folder + "/" + name, true, why) ||
-        why.find("does not exist") != std::string::npos)
-        continue;
-      closedir(d);
-      vtkErrorMacro("Cannot read the DICOM folder '" << folder << "': " << why);
-      return false;
-    }
-    closedir(d);
-  }
-  auto names = itk::GDCMSeriesFileNames::New();
-  std::vector<std::string> files;
-  std::string uid;
-  try
-  {
-    // Group strictly by SeriesInstanceUID: the geometry checks below find what does not fit.
-    names->SetUseSeriesDetails(false);
-    names->SetDirectory(folder);
-    const auto& uids = names->GetSeriesUIDs();
-    if (uids.empty())
-    {
-      vtkErrorMacro("No DICOM series in folder '" << folder << "'.");
-      return false;
-    }
-    const bool byUID = this->SeriesUID && *this->SeriesUID;
-    if (!byUID && onlyFile.empty() && uids.size() > 1)
-    {
-      // Reading one of several series without a word would hide the others (or mix them up).
-      std::ostringstream list;
-      for (const auto& u : uids)
-      {
-        const auto f = names->GetFileNames(u);
-        list << "\n  " << (u.empty() ? std::string("(no SeriesInstanceUID)") : u) << ": " << f.size()
-             << " files, e.g. '" << (f.empty() ? std::string() : f.front()) << "'";
-      }
-      vtkErrorMacro("DICOM folder '" << folder << "' holds " << uids.size()
-                                     << " series; set SeriesUID to the one to read, or FileName to one of its files:"
-                                     << list.str());
-      return false;
-    }
-    for (const auto& u : uids)
-    {
-      const auto f = names->GetFileNames(u);
-      bool take;
-      if (byUID)
-        take = (u == this->SeriesUID);
-      else if (!onlyFile.empty())
-        take = std::find(f.begin(), f.end(), onlyFile) != f.end();
-      else
-        take = f.size() > files.size();
-      if (take)
-      {
-        files = f;
-        uid = u;
-        if (byUID || !onlyFile.empty())
-          break;
-      }
-    }
-  }
-  catch (const itk::ExceptionObject& e)
-  {
-    vtkErrorMacro("Cannot scan DICOM folder '" << folder << "': " << FirstLine(e.what()));
+    vtkErrorMacro(<< series.Error);
     return false;
   }
-  if (files.empty())
-  {
-    vtkErrorMacro("DICOM folder '" << folder << "' has no series "
-                                   << (this->SeriesUID && *this->SeriesUID ? std::string("with UID ") + this->SeriesUID
-                                                                           : std::string("containing ") + onlyFile)
-                                   << ".");
-    return false;
-  }
-
-  // Geometry of every slice, to detect what a regular grid cannot hold.
-  std::vector<Slice> slices;
-  double dir[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  itk::IOComponentEnum componentType = itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
-  std::string modality, tiltTag;
-  double pixel = 0.0; // the smaller in-plane pixel spacing
-  for (size_t i = 0; i < files.size(); ++i)
-  {
-    auto io = itk::GDCMImageIO::New();
-    try
-    {
-      io->SetFileName(files[i]);
-      io->ReadImageInformation();
-    }
-    catch (const itk::ExceptionObject& e)
-    {
-      vtkErrorMacro("Cannot read DICOM file '" << files[i] << "': " << FirstLine(e.what()));
-      return false;
-    }
-    if (io->GetNumberOfComponents() != 1)
-    {
-      vtkErrorMacro("DICOM file '" << files[i] << "' has " << io->GetNumberOfComponents()
-                                   << " components per pixel; Anatomesh reads scalar images.");
-      return false;
-    }
-    Slice s;
-    s.File = files[i];
-    for (int d = 0; d < 3; ++d)
-      s.Position[d] = io->GetOrigin(d);
-    if (i == 0)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        const auto axis = io->GetDirection(c);
-        for (int r = 0; r < 3; ++r)
-          dir[3 * r + c] = axis[r];
-      }
-      componentType = io->GetComponentType();
-      pixel = std::min(io->GetSpacing(0), io->GetSpacing(1));
-      io->GetValueFromTag("0008|0060", modality);
-      io->GetValueFromTag("0018|1120", tiltTag);
-    }
-    else
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        const auto axis = io->GetDirection(c);
-        for (int r = 0; r < 3; ++r)
-          if (std::fabs(dir[3 * r + c] - axis[r]) > 1e-3)
-          {
-            vtkErrorMacro("DICOM series in '" << folder << "' mixes slice orientations ('" << files[0] << "' and '"
-                                              << files[i] << "' differ); it is not one volume.");
-            return false;
-          }
-      }
-    }
-    if (i > 0 && io->GetComponentType() != componentType)
-    {
-      // Rescale parameters that differ between slices can change the component type: read as float.
-      componentType = itk::IOComponentEnum::FLOAT;
-    }
-    slices.push_back(s);
-  }
-  const double r[3] = { dir[0], dir[3], dir[6] }, c[3] = { dir[1], dir[4], dir[7] };
-  double n[3] = { r[1] * c[2] - r[2] * c[1], r[2] * c[0] - r[0] * c[2], r[0] * c[1] - r[1] * c[0] };
-  const double nn = std::sqrt(Vec::Dot(n, n));
-  for (double& v : n)
-    v /= nn;
-  for (Slice& s : slices)
-    s.Offset = Vec::Dot(s.Position, n);
-  std::stable_sort(slices.begin(), slices.end(), [](const Slice& a, const Slice& b) { return a.Offset < b.Offset; });
-  files.clear();
-  for (const Slice& s : slices)
-    files.push_back(s.File);
-
-  double minGap = 1e300, maxGap = 0.0, maxTilt = 0.0, maxShift = 0.0;
-  for (size_t i = 0; i + 1 < slices.size(); ++i)
-  {
-    double d[3];
-    for (int k = 0; k < 3; ++k)
-      d[k] = slices[i + 1].Position[k] - slices[i].Position[k];
-    const double along = Vec::Dot(d, n);
-    const double len = std::sqrt(Vec::Dot(d, d));
-    const double shift = std::sqrt(std::max(0.0, len * len - along * along));
-    minGap = std::min(minGap, along);
-    maxGap = std::max(maxGap, along);
-    maxShift = std::max(maxShift, shift);
-    if (len > 0)
-      maxTilt = std::max(maxTilt, std::acos(std::min(1.0, std::fabs(along) / len)) * 180.0 / 3.14159265358979);
-  }
-  if (slices.size() > 1 && minGap < 1e-3)
-  {
-    vtkErrorMacro("DICOM series in '" << folder << "' has two slices at the same position (gap " << minGap
-                                      << " mm): several acquisitions mixed? Set SeriesUID or separate them.");
-    return false;
-  }
-
-  const bool tilted = slices.size() > 1 && maxShift > 0.05 * pixel;
-  const bool uneven = slices.size() > 2 && (maxGap - minGap) > 0.01 * maxGap + 1e-3;
-  if ((tilted || uneven) && !this->ResampleIrregularSeries)
-  {
-    std::ostringstream msg;
-    msg << "DICOM series in '" << folder << "' (" << slices.size() << " slices) is not a regular grid:";
-    if (tilted)
-      msg << " its slices are not stacked along their normal (gantry tilt of " << maxTilt << " degrees"
-          << (tiltTag.empty() ? std::string() : "; GantryDetectorTilt tag says " + tiltTag) << ")";
-    if (tilted && uneven)
-      msg << " and";
-    if (uneven)
-      msg << " its slice gaps are uneven (" << minGap << " to " << maxGap << " mm)";
-    msg << ". Reading it as a regular volume would warp the anatomy; set ResampleIrregularSeries to resample it "
-           "onto a regular grid.";
-    vtkErrorMacro(<< msg.str());
-    return false;
-  }
-
-  bool ok = false;
-  std::string error;
-  const bool known = amITK::DispatchComponent(componentType, [&](auto* tag) {
-    using T = std::remove_pointer_t<decltype(tag)>;
-    auto reader = itk::ImageSeriesReader<amITK::Image3<T>>::New();
-    auto io = itk::GDCMImageIO::New();
-    reader->SetImageIO(io);
-    reader->SetFileNames(files);
-    try
-    {
-      reader->Update();
-      if (tilted || uneven)
-      {
-        const double h = this->OutputSliceSpacing > 0 ? this->OutputSliceSpacing : minGap;
-        this->Cache = ResampleStack<T>(reader->GetOutput(), slices, r, c, n, h);
-      }
-      else
-        this->Cache = amITK::ToVTK<T>(reader->GetOutput(), "ImageScalars");
-      ok = true;
-    }
-    catch (const itk::ExceptionObject& e)
-    {
-      error = FirstLine(e.what());
-      // The series reader does not say which slice failed: decode them one by one to name it.
-      for (std::size_t k = 0; k < files.size(); ++k)
-      {
-        auto one = itk::ImageFileReader<amITK::Image3<T>>::New();
-        one->SetImageIO(itk::GDCMImageIO::New());
-        one->SetFileName(files[k]);
-        try
-        {
-          one->Update();
-        }
-        catch (const itk::ExceptionObject& e1)
-        {
-          error = "slice " + std::to_string(k + 1) + " of " + std::to_string(files.size()) + ", '" + files[k] +
-            "', cannot be decoded: " + FirstLine(e1.what());
-          break;
-        }
-      }
-    }
-  });
-  if (!known || !ok)
-  {
-    vtkErrorMacro("Cannot read the DICOM series in '"
-      << folder << "': " << (known ? error : std::string("unsupported pixel type")));
-    return false;
-  }
+  this->Cache = series.Image;
   AddString(this->Cache, "SourceFormat", "DICOM");
-  AddString(this->Cache, "SeriesInstanceUID", uid);
-  if (!modality.empty())
-  {
-    while (!modality.empty() && modality.back() == ' ')
-      modality.pop_back();
-    AddString(this->Cache, "Modality", modality);
-  }
-  if (tilted || uneven)
-  {
-    std::ostringstream note;
-    note << "resampled from an irregular series: tilt " << maxTilt << " deg, gaps " << minGap << ".." << maxGap
-         << " mm";
-    AddString(this->Cache, "Resampling", note.str());
-  }
+  AddString(this->Cache, "SeriesInstanceUID", series.SeriesUID);
+  if (!series.Modality.empty())
+    AddString(this->Cache, "Modality", series.Modality);
+  if (!series.Resampling.empty())
+    AddString(this->Cache, "Resampling", series.Resampling);
   return true;
 }
 

@@ -20,8 +20,149 @@
 
 #include <cstdio>
 #include <memory>
+#include <string>
+#include <type_traits>
 
 vtkStandardNewMacro(amImageWriter);
+
+namespace
+{
+/// ITK's image IO for a file extension, or null.
+itk::ImageIOBase::Pointer IOFor(const std::string& ext)
+{
+  if (ext == ".nii" || ext == ".nii.gz")
+    return itk::NiftiImageIO::New().GetPointer();
+  if (ext == ".mha" || ext == ".mhd")
+    return itk::MetaImageIO::New().GetPointer();
+  if (ext == ".nrrd" || ext == ".nhdr")
+    return itk::NrrdImageIO::New().GetPointer();
+  return nullptr;
+}
+
+/// Calls f with a null pointer of the C++ type of a VTK scalar type; false for a type not written.
+template<typename F>
+bool DispatchVTKType(int type, F&& f)
+{
+  switch (type)
+  {
+    case VTK_UNSIGNED_CHAR:
+      f(static_cast<unsigned char*>(nullptr));
+      return true;
+    case VTK_SIGNED_CHAR:
+    case VTK_CHAR:
+      f(static_cast<signed char*>(nullptr));
+      return true;
+    case VTK_UNSIGNED_SHORT:
+      f(static_cast<unsigned short*>(nullptr));
+      return true;
+    case VTK_SHORT:
+      f(static_cast<short*>(nullptr));
+      return true;
+    case VTK_UNSIGNED_INT:
+      f(static_cast<unsigned int*>(nullptr));
+      return true;
+    case VTK_INT:
+      f(static_cast<int*>(nullptr));
+      return true;
+    case VTK_FLOAT:
+      f(static_cast<float*>(nullptr));
+      return true;
+    case VTK_DOUBLE:
+      f(static_cast<double*>(nullptr));
+      return true;
+    default:
+      return false;
+  }
+}
+
+/// The image written through ITK; false with ITK's description on failure.
+template<typename T>
+bool WriteITK(vtkImageData* input, itk::ImageIOBase* io, const std::string& path, bool compress, std::string& error)
+{
+  auto writer = itk::ImageFileWriter<amITK::Image3<T>>::New();
+  writer->SetImageIO(io);
+  writer->SetFileName(path);
+  writer->SetInput(amITK::FromVTK<T>(input));
+  writer->SetUseCompression(compress);
+  try
+  {
+    writer->Update();
+    return true;
+  }
+  catch (const itk::ExceptionObject& e)
+  {
+    error = e.GetDescription();
+    return false;
+  }
+}
+
+/// A file's whole text ("" when it cannot be read), and the data file a MetaImage header names.
+std::string ReadWhole(const std::string& path, std::string& dataName)
+{
+  std::string header;
+  if (FILE* f = std::fopen(path.c_str(), "rb"))
+  {
+    char buf[4096];
+    size_t got;
+    while ((got = std::fread(buf, 1, sizeof buf, f)) > 0)
+      header.append(buf, got);
+    std::fclose(f);
+  }
+  const auto key = header.find("ElementDataFile = ");
+  if (key != std::string::npos)
+  {
+    const auto begin = key + 18;
+    dataName = header.substr(begin, header.find_first_of("\r\n", begin) - begin);
+  }
+  return header;
+}
+
+/// ITK and MetaIO do not always report a short write (a full disk, a file size limit): the file
+/// must read back whole before it replaces anything. The problem, or "".
+std::string CheckWritten(const std::string& ext, const std::string& path)
+{
+  if (ext == ".nii" || ext == ".nii.gz")
+  {
+    const std::string incomplete = amNiftiCheck::Check(path, false);
+    if (!incomplete.empty())
+      return "the file written is incomplete (" + incomplete + "); is the disk full?";
+  }
+  if (ext == ".mha" || ext == ".mhd")
+  {
+    std::string repaired;
+    const std::string incomplete = amMetaImageCheck::Check(path, repaired);
+    if (!repaired.empty())
+      std::remove(repaired.c_str());
+    if (!incomplete.empty() || !repaired.empty())
+      return "the file written is incomplete (" +
+        (incomplete.empty() ? std::string("its header needed repair") : incomplete) + "); is the disk full?";
+  }
+  return "";
+}
+
+/// A detached .mhd's data file moved to the target's stem and the header pointed at it; the
+/// problem, or "".
+std::string PlaceMetaImageData(const std::string& target, const std::string& folder, std::string header,
+  const std::string& dataName, const std::string& headerPath)
+{
+  if (dataName.empty())
+    return "could not place the MetaImage data file.";
+  const std::string dataExt = dataName.substr(dataName.find_last_of('.'));
+  const std::string stem = target.substr(target.find_last_of('/') + 1, target.size() - folder.size() - 4);
+  const std::string finalName = stem + dataExt;
+  if (std::rename((folder + dataName).c_str(), (folder + finalName).c_str()) != 0)
+  {
+    std::remove((folder + dataName).c_str());
+    return "could not place the MetaImage data file.";
+  }
+  header.replace(header.find("ElementDataFile = ") + 18, dataName.size(), finalName);
+  FILE* f = std::fopen(headerPath.c_str(), "wb");
+  const bool written = f && std::fwrite(header.data(), 1, header.size(), f) == header.size();
+  if (f)
+    std::fclose(f);
+  return written ? "" : "could not rewrite the .mhd header.";
+}
+}
 
 amImageWriter::amImageWriter()
   : FileName(nullptr)
@@ -67,14 +208,8 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     return 0;
   }
   const std::string ext = amAtomicFile::Extension(target);
-  itk::ImageIOBase::Pointer io;
-  if (ext == ".nii" || ext == ".nii.gz")
-    io = itk::NiftiImageIO::New();
-  else if (ext == ".mha" || ext == ".mhd")
-    io = itk::MetaImageIO::New();
-  else if (ext == ".nrrd" || ext == ".nhdr")
-    io = itk::NrrdImageIO::New();
-  else
+  itk::ImageIOBase::Pointer io = IOFor(ext);
+  if (!io)
   {
     vtkErrorMacro(
       "Cannot write '" << target << "': unknown extension '" << ext << "' (use .nii, .nii.gz, .mha, .mhd or .nrrd).");
@@ -95,55 +230,16 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
     plain.reset(new amAtomicFile(target.substr(0, target.size() - 3)));
   std::string error;
   bool ok = false;
-  auto write = [&](auto* tag) {
+  const bool known = DispatchVTKType(scalars->GetDataType(), [&](auto* tag) {
     using T = std::remove_pointer_t<decltype(tag)>;
-    auto image = amITK::FromVTK<T>(input);
-    auto writer = itk::ImageFileWriter<amITK::Image3<T>>::New();
-    writer->SetImageIO(io);
-    writer->SetFileName(plain ? plain->TemporaryPath() : file.TemporaryPath());
-    writer->SetInput(image);
-    writer->SetUseCompression(this->UseCompression && !plain);
-    try
-    {
-      writer->Update();
-      ok = true;
-    }
-    catch (const itk::ExceptionObject& e)
-    {
-      error = e.GetDescription();
-    }
-  };
-  switch (scalars->GetDataType())
+    ok = WriteITK<T>(
+      input, io, plain ? plain->TemporaryPath() : file.TemporaryPath(), this->UseCompression && !plain, error);
+  });
+  if (!known)
   {
-    case VTK_UNSIGNED_CHAR:
-      write(static_cast<unsigned char*>(nullptr));
-      break;
-    case VTK_SIGNED_CHAR:
-    case VTK_CHAR:
-      write(static_cast<signed char*>(nullptr));
-      break;
-    case VTK_UNSIGNED_SHORT:
-      write(static_cast<unsigned short*>(nullptr));
-      break;
-    case VTK_SHORT:
-      write(static_cast<short*>(nullptr));
-      break;
-    case VTK_UNSIGNED_INT:
-      write(static_cast<unsigned int*>(nullptr));
-      break;
-    case VTK_INT:
-      write(static_cast<int*>(nullptr));
-      break;
-    case VTK_FLOAT:
-      write(static_cast<float*>(nullptr));
-      break;
-    case VTK_DOUBLE:
-      write(static_cast<double*>(nullptr));
-      break;
-    default:
-      vtkErrorMacro(
-        "Cannot write '" << target << "': scalar type " << scalars->GetDataTypeAsString() << " is not supported.");
-      return 0;
+    vtkErrorMacro(
+      "Cannot write '" << target << "': scalar type " << scalars->GetDataTypeAsString() << " is not supported.");
+    return 0;
   }
   const std::string folder =
     target.find('/') == std::string::npos ? std::string() : target.substr(0, target.find_last_of('/') + 1);
@@ -151,50 +247,14 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
   // data file to the final stem first, and point the header at it.
   std::string header, dataName;
   if (ext == ".mhd")
-  {
-    if (FILE* f = std::fopen(file.TemporaryPath().c_str(), "rb"))
-    {
-      char buf[4096];
-      size_t got;
-      while ((got = std::fread(buf, 1, sizeof buf, f)) > 0)
-        header.append(buf, got);
-      std::fclose(f);
-    }
-    const auto key = header.find("ElementDataFile = ");
-    if (key != std::string::npos)
-    {
-      const auto begin = key + 18;
-      dataName = header.substr(begin, header.find_first_of("\r\n", begin) - begin);
-    }
-  }
+    header = ReadWhole(file.TemporaryPath(), dataName);
   if (ok && plain && !amDeflate::GzipFile(plain->TemporaryPath(), file.TemporaryPath(), this->CompressionLevel, error))
     ok = false;
   plain.reset(); // the plain temporary removed
-  if (ok && (ext == ".nii" || ext == ".nii.gz"))
+  if (ok)
   {
-    // ITK does not always report a short write (a full disk, a file size limit): the file must read
-    // back whole before it replaces anything.
-    const std::string incomplete = amNiftiCheck::Check(file.TemporaryPath(), false);
-    if (!incomplete.empty())
-    {
-      ok = false;
-      error = "the file written is incomplete (" + incomplete + "); is the disk full?";
-    }
-  }
-  if (ok && (ext == ".mha" || ext == ".mhd"))
-  {
-    // MetaIO does not fail on a short write either ("file stream is fail after write" only printed):
-    // the header and every voxel must read back before the file replaces anything.
-    std::string repaired;
-    const std::string incomplete = amMetaImageCheck::Check(file.TemporaryPath(), repaired);
-    if (!repaired.empty())
-      std::remove(repaired.c_str());
-    if (!incomplete.empty() || !repaired.empty())
-    {
-      ok = false;
-      error = "the file written is incomplete (" +
-        (incomplete.empty() ? std::string("its header needed repair") : incomplete) + "); is the disk full?";
-    }
+    error = CheckWritten(ext, file.TemporaryPath());
+    ok = error.empty();
   }
   if (!ok)
   {
@@ -210,24 +270,10 @@ int amImageWriter::RequestData(vtkInformation*, vtkInformationVector** inputVect
   }
   if (ext == ".mhd")
   {
-    const std::string dataExt = dataName.substr(dataName.find_last_of('.'));
-    const std::string stem = target.substr(target.find_last_of('/') + 1, target.size() - folder.size() - 4);
-    const std::string finalName = stem + dataExt;
-    if (dataName.empty() || std::rename((folder + dataName).c_str(), (folder + finalName).c_str()) != 0)
+    why = PlaceMetaImageData(target, folder, header, dataName, file.TemporaryPath());
+    if (!why.empty())
     {
-      if (!dataName.empty())
-        std::remove((folder + dataName).c_str());
-      vtkErrorMacro("Cannot write '" << target << "': could not place the MetaImage data file.");
-      return 0;
-    }
-    header.replace(header.find("ElementDataFile = ") + 18, dataName.size(), finalName);
-    FILE* f = std::fopen(file.TemporaryPath().c_str(), "wb");
-    const bool written = f && std::fwrite(header.data(), 1, header.size(), f) == header.size();
-    if (f)
-      std::fclose(f);
-    if (!written)
-    {
-      vtkErrorMacro("Cannot write '" << target << "': could not rewrite the .mhd header.");
+      vtkErrorMacro("Cannot write '" << target << "': " << why);
       return 0;
     }
   }

@@ -132,6 +132,81 @@ std::string Describe(double v)
   os << v;
   return os.str();
 }
+
+/// The sform and the qform, when their codes say they are used; the problem, or "".
+std::string CheckOrientation(const Header& h)
+{
+  const int16_t qcode = h.Get<int16_t>(252), scode = h.Get<int16_t>(254);
+  if (scode > 0)
+  {
+    static const char* rows[3] = { "srow_x", "srow_y", "srow_z" };
+    double m[3][4];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c)
+      {
+        m[r][c] = h.Get<float>(280 + 16 * r + 4 * c);
+        if (!std::isfinite(m[r][c]))
+          return std::string("its sform row ") + rows[r] + " holds a non-finite value (" + Describe(m[r][c]) + ")";
+      }
+    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+      m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    if (det == 0)
+      return "its sform (srow_x, srow_y, srow_z) is degenerate (determinant 0): it maps the voxels to a plane";
+  }
+  if (qcode > 0)
+  {
+    static const char* names[6] = { "quatern_b", "quatern_c", "quatern_d", "qoffset_x", "qoffset_y", "qoffset_z" };
+    double q[6];
+    for (int k = 0; k < 6; ++k)
+    {
+      q[k] = h.Get<float>(256 + 4 * k);
+      if (!std::isfinite(q[k]))
+        return std::string("its qform field ") + names[k] + " is non-finite (" + Describe(q[k]) + ")";
+    }
+    if (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] > 1.0 + 1e-4)
+      return "its qform quaternion (quatern_b, quatern_c, quatern_d) has a norm above 1: not a rotation";
+    if (!std::isfinite(h.Get<float>(76)))
+      return "its qform factor (pixdim[0]) is non-finite";
+  }
+  return "";
+}
+
+/// The voxel data of a header and image pair (.hdr and .img, either compressed): all of it after
+/// vox_offset; the problem, or "".
+std::string CheckPairData(
+  const std::string& path, bool compressed, const Header& h, bool swap, long long dataBytes, bool finiteVoxels)
+{
+  std::string img = path.substr(0, path.size() - (compressed ? 7 : 4)) + ".img";
+  // A pipe or a device would block the reading (or never end).
+  for (const std::string& data : { img, img + ".gz" })
+    if (amInflate::FileSize(data) >= 0 && !amInflate::IsRegularFile(data))
+      return "its data file '" + data + "' is not a regular file";
+  long long bytes = amInflate::FileSize(img);
+  if (bytes < 0 && amInflate::FileSize(img + ".gz") >= 0)
+  {
+    std::vector<unsigned char> none;
+    const std::string why = Inflate(img + ".gz", 0, none, bytes);
+    if (!why.empty())
+      return "its data file '" + img + ".gz': " + why;
+  }
+  if (bytes < 0)
+    return "its data file '" + img + "' does not exist";
+  const float offset = h.Get<float>(108);
+  if (std::isfinite(offset) && offset >= static_cast<float>(amByteCount::Limit - dataBytes))
+    return "its voxel data offset (vox_offset) is " + Describe(offset) + ", past the end of any file";
+  const long long start = std::isfinite(offset) && offset > 0 ? static_cast<long long>(offset) : 0;
+  if (bytes < start + dataBytes)
+    return "its data file '" + img + "' is truncated (" + std::to_string(bytes) + " bytes for the " +
+      std::to_string(start + dataBytes) + " the header announces)";
+  const bool imgCompressed = amInflate::FileSize(img) < 0;
+  const long long nonFinite = !finiteVoxels
+    ? 0
+    : CountNonFinite(imgCompressed ? img + ".gz" : img, imgCompressed, h.Get<int16_t>(70), swap, start, dataBytes);
+  if (nonFinite > 0)
+    return NonFiniteMessage(nonFinite);
+  return "";
+}
+
 }
 
 bool amNiftiCheck::IsNifti(const std::string& path)
@@ -208,39 +283,9 @@ std::string amNiftiCheck::Check(const std::string& path, bool finiteVoxels)
         Describe(s) + "; it must be a finite non-zero length";
   }
 
-  // Orientation: the sform and the qform, when their codes say they are used.
-  const int16_t qcode = h.Get<int16_t>(252), scode = h.Get<int16_t>(254);
-  if (scode > 0)
-  {
-    static const char* rows[3] = { "srow_x", "srow_y", "srow_z" };
-    double m[3][4];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c)
-      {
-        m[r][c] = h.Get<float>(280 + 16 * r + 4 * c);
-        if (!std::isfinite(m[r][c]))
-          return std::string("its sform row ") + rows[r] + " holds a non-finite value (" + Describe(m[r][c]) + ")";
-      }
-    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-      m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    if (det == 0)
-      return "its sform (srow_x, srow_y, srow_z) is degenerate (determinant 0): it maps the voxels to a plane";
-  }
-  if (qcode > 0)
-  {
-    static const char* names[6] = { "quatern_b", "quatern_c", "quatern_d", "qoffset_x", "qoffset_y", "qoffset_z" };
-    double q[6];
-    for (int k = 0; k < 6; ++k)
-    {
-      q[k] = h.Get<float>(256 + 4 * k);
-      if (!std::isfinite(q[k]))
-        return std::string("its qform field ") + names[k] + " is non-finite (" + Describe(q[k]) + ")";
-    }
-    if (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] > 1.0 + 1e-4)
-      return "its qform quaternion (quatern_b, quatern_c, quatern_d) has a norm above 1: not a rotation";
-    if (!std::isfinite(h.Get<float>(76)))
-      return "its qform factor (pixdim[0]) is non-finite";
-  }
+  const std::string orientation = CheckOrientation(h);
+  if (!orientation.empty())
+    return orientation;
 
   // The voxel data: all of it after vox_offset, in this file or in the .img beside the .hdr.
   if (single)
@@ -263,35 +308,7 @@ std::string amNiftiCheck::Check(const std::string& path, bool finiteVoxels)
       return NonFiniteMessage(nonFinite);
   }
   else
-  {
-    std::string img = path.substr(0, path.size() - (compressed ? 7 : 4)) + ".img";
-    // A pipe or a device would block the reading (or never end).
-    for (const std::string& data : { img, img + ".gz" })
-      if (amInflate::FileSize(data) >= 0 && !amInflate::IsRegularFile(data))
-        return "its data file '" + data + "' is not a regular file";
-    long long bytes = amInflate::FileSize(img);
-    if (bytes < 0 && amInflate::FileSize(img + ".gz") >= 0)
-    {
-      std::vector<unsigned char> none;
-      const std::string why = Inflate(img + ".gz", 0, none, bytes);
-      if (!why.empty())
-        return "its data file '" + img + ".gz': " + why;
-    }
-    if (bytes < 0)
-      return "its data file '" + img + "' does not exist";
-    const float offset = h.Get<float>(108);
-    if (std::isfinite(offset) && offset >= static_cast<float>(amByteCount::Limit - dataBytes))
-      return "its voxel data offset (vox_offset) is " + Describe(offset) + ", past the end of any file";
-    const long long start = std::isfinite(offset) && offset > 0 ? static_cast<long long>(offset) : 0;
-    if (bytes < start + dataBytes)
-      return "its data file '" + img + "' is truncated (" + std::to_string(bytes) + " bytes for the " +
-        std::to_string(start + dataBytes) + " the header announces)";
-    const bool imgCompressed = amInflate::FileSize(img) < 0;
-    const long long nonFinite = !finiteVoxels
-      ? 0
-      : CountNonFinite(imgCompressed ? img + ".gz" : img, imgCompressed, h.Get<int16_t>(70), swap, start, dataBytes);
-    if (nonFinite > 0)
-      return NonFiniteMessage(nonFinite);
-  }
+    return CheckPairData(path, compressed, h, swap, dataBytes, finiteVoxels);
+
   return "";
 }

@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,88 @@ std::string Stem(const std::string& path)
   const bool has = path.size() > ending.size() && path.compare(path.size() - ending.size(), ending.size(), ending) == 0;
   return has ? path.substr(0, path.size() - ending.size()) : path;
 }
+
+/// The tetrahedra, their regions, the points they use (renumbered in their order, -1 unused) and
+/// every point's coordinates.
+struct Tetrahedra
+{
+  std::vector<std::array<vtkIdType, 4>> Tets;
+  std::vector<int> Labels;
+  std::vector<vtkIdType> Number;
+  std::vector<double> Points;
+  vtkIdType Used = 0;
+};
+
+/// The grid's tetrahedra checked and gathered; the problem, or "".
+std::string ReadTetrahedra(vtkUnstructuredGrid* grid, vtkDataArray* regions, Tetrahedra& in)
+{
+  const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
+  in.Tets.resize(static_cast<std::size_t>(nc));
+  in.Labels.assign(static_cast<std::size_t>(nc), 1);
+  in.Number.assign(np, -1);
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    if (grid->GetCellType(c) != VTK_TETRA)
+      return "cell " + std::to_string(c) + " has VTK type " + std::to_string(grid->GetCellType(c)) +
+        "; only tetrahedra are written.";
+    vtkIdType n;
+    const vtkIdType* ids;
+    grid->GetCellPoints(c, n, ids);
+    std::copy(ids, ids + 4, in.Tets[c].begin());
+    for (int a = 0; a < 4; ++a)
+      in.Number[ids[a]] = 0;
+    if (regions)
+    {
+      const double r = regions->GetComponent(c, 0);
+      if (!(r == std::floor(r) && std::fabs(r) < 2e9))
+      {
+        std::ostringstream why;
+        why << "cell " << c << " has region " << r << ", not a whole number.";
+        return why.str();
+      }
+      in.Labels[c] = static_cast<int>(r);
+    }
+  }
+  in.Points.resize(3 * static_cast<std::size_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double* x = &in.Points[3 * i];
+    grid->GetPoint(i, x);
+    if (in.Number[i] < 0)
+      continue;
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      return "point " + std::to_string(i) + " has a non-finite coordinate.";
+    in.Number[i] = in.Used++;
+  }
+  return "";
+}
+
+/// Each region's and each interface's name (the organ's, where the mesh carries its label map's
+/// "LabelNames"), without the characters XML would have to escape.
+std::map<long long, std::string> TagNames(
+  vtkUnstructuredGrid* grid, const std::vector<int>& labels, const std::vector<amTetraFaces::Face>& faces)
+{
+  auto* names = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("LabelNames"));
+  auto nameOf = [&](long long label) {
+    std::string name = label == 0 ? "Outside" : "Region " + std::to_string(label);
+    if (label > 0 && names && label < names->GetNumberOfValues() && !names->GetValue(label).empty())
+      name = names->GetValue(label);
+    std::string clean;
+    for (char ch : name)
+      if (ch != '"' && ch != '<' && ch != '>' && ch != '&')
+        clean += ch;
+    return clean;
+  };
+  std::map<long long, std::string> tagNames;
+  for (int l : labels)
+    tagNames[l] = nameOf(l);
+  for (const auto& f : faces)
+  {
+    const long long lower = f.Second == amTetraFaces::Outside() ? 0 : f.Second;
+    tagNames[1000LL * f.First + lower] = nameOf(f.First) + " | " + nameOf(lower);
+  }
+  return tagNames;
+}
 }
 
 std::string amXdmfWriter::HeavyDataFileName(const std::string& path)
@@ -100,68 +183,20 @@ int amXdmfWriter::WriteData(vtkDataObject* data)
   }
   const vtkIdType np = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
   vtkDataArray* regions = this->RegionArrayName ? grid->GetCellData()->GetArray(this->RegionArrayName) : nullptr;
-  std::vector<std::array<vtkIdType, 4>> tets(static_cast<std::size_t>(nc));
-  std::vector<int> labels(static_cast<std::size_t>(nc), 1);
-  std::vector<vtkIdType> number(np, -1);
-  for (vtkIdType c = 0; c < nc; ++c)
+  Tetrahedra in;
+  const std::string problem = ReadTetrahedra(grid, regions, in);
+  if (!problem.empty())
   {
-    if (grid->GetCellType(c) != VTK_TETRA)
-    {
-      vtkErrorMacro("Cannot write '" << target << "': cell " << c << " has VTK type " << grid->GetCellType(c)
-                                     << "; only tetrahedra are written.");
-      return 0;
-    }
-    vtkIdType n;
-    const vtkIdType* ids;
-    grid->GetCellPoints(c, n, ids);
-    std::copy(ids, ids + 4, tets[c].begin());
-    for (int a = 0; a < 4; ++a)
-      number[ids[a]] = 0;
-    if (regions)
-    {
-      const double r = regions->GetComponent(c, 0);
-      if (!(r == std::floor(r) && std::fabs(r) < 2e9))
-      {
-        vtkErrorMacro("Cannot write '" << target << "': cell " << c << " has region " << r << ", not a whole number.");
-        return 0;
-      }
-      labels[c] = static_cast<int>(r);
-    }
+    vtkErrorMacro("Cannot write '" << target << "': " << problem);
+    return 0;
   }
-  std::vector<double> xyz(3 * static_cast<std::size_t>(np));
-  vtkIdType used = 0;
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    grid->GetPoint(i, &xyz[3 * i]);
-    if (number[i] < 0)
-      continue;
-    if (!std::isfinite(xyz[3 * i]) || !std::isfinite(xyz[3 * i + 1]) || !std::isfinite(xyz[3 * i + 2]))
-    {
-      vtkErrorMacro("Cannot write '" << target << "': point " << i << " has a non-finite coordinate.");
-      return 0;
-    }
-    number[i] = used++;
-  }
+  const auto& tets = in.Tets;
+  const auto& labels = in.Labels;
+  const auto& number = in.Number;
+  const auto& xyz = in.Points;
+  const vtkIdType used = in.Used;
   const std::vector<amTetraFaces::Face> faces = amTetraFaces::Find(xyz.data(), tets, labels.data());
-  auto* names = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("LabelNames"));
-  auto nameOf = [&](long long label) {
-    std::string name = label == 0 ? "Outside" : "Region " + std::to_string(label);
-    if (label > 0 && names && label < names->GetNumberOfValues() && !names->GetValue(label).empty())
-      name = names->GetValue(label);
-    std::string clean;
-    for (char ch : name)
-      if (ch != '"' && ch != '<' && ch != '>' && ch != '&')
-        clean += ch;
-    return clean;
-  };
-  std::map<long long, std::string> tagNames;
-  for (int l : labels)
-    tagNames[l] = nameOf(l);
-  for (const auto& f : faces)
-  {
-    const long long lower = f.Second == amTetraFaces::Outside() ? 0 : f.Second;
-    tagNames[1000LL * f.First + lower] = nameOf(f.First) + " | " + nameOf(lower);
-  }
+  const std::map<long long, std::string> tagNames = TagNames(grid, labels, faces);
 
   // Two files, each one grid (as meshio and FEniCSx's XDMFFile read them): the mesh with its cell
   // tags, and the facets with theirs, on the same points.

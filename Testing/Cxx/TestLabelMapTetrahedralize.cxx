@@ -523,8 +523,8 @@ TEST(LabelMapTetrahedralize, PreserveVolumesGivesEveryRegionItsVoxels)
         sheet, preserve, static_cast<long long>(misses[preserve]), 100 * worst, m->GetVolumeDisplacement());
       amTest::RecordFigure(preserve ? "cgal_atlas.volume_misses" : "cgal_atlas.volume_misses_alone",
         static_cast<double>(misses[preserve]), "", preserve ? 0.0 : NAN);
-      amTest::RecordFigure(
-        preserve ? "cgal_atlas.worst_volume_off" : "cgal_atlas.worst_volume_off_alone", 100 * worst, "%", preserve ? 2.0 : NAN);
+      amTest::RecordFigure(preserve ? "cgal_atlas.worst_volume_off" : "cgal_atlas.worst_volume_off_alone", 100 * worst,
+        "%", preserve ? 2.0 : NAN);
       if (preserve)
       {
         EXPECT_LE(worst, 0.02);

@@ -7,6 +7,8 @@ import os
 
 
 def record(test, name, value, unit="", bar=None):
+    """bar: the number the test holds the figure to, or [low, high] for a range it must lie in (a
+    clinical norm, not a regression bar)."""
     path = os.environ.get("ANATOMESH_FIGURES")
     if not path:
         return

@@ -167,3 +167,24 @@ class PhantomFromPython(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ReadmeExample(unittest.TestCase):
+    """The README's Python example runs as it is written and prints what its last comment says."""
+
+    def test_the_readme_example_prints_what_it_says(self):
+        import contextlib
+        import io
+        import re
+        source = os.environ.get("ANATOMESH_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+        with open(os.path.join(source, "README.md")) as f:
+            code = re.search(r"```python\n(.*?)```", f.read(), re.S).group(1)
+        claimed = re.search(r"# (\d+) triangles .*Hausdorff ([\d.]+) mm", code)
+        self.assertIsNotNone(claimed, "the example's last comment gives its triangles and Hausdorff distance")
+        printed = io.StringIO()
+        with contextlib.redirect_stdout(printed):
+            exec(compile(code, "README.md", "exec"), {})
+        got = re.search(r"(\d+) triangles, Hausdorff ([\d.]+) mm", printed.getvalue())
+        self.assertIsNotNone(got, printed.getvalue())
+        self.assertEqual(int(got.group(1)), int(claimed.group(1)))
+        self.assertAlmostEqual(float(got.group(2)), float(claimed.group(2)), places=5)

@@ -178,9 +178,9 @@ class ChestCTToECG(unittest.TestCase):
         activation = vtk_to_numpy(heart.GetOutput().GetPointData().GetArray("ActivationTime"))
         self.assertLess(abs(figures["QRS ms"] - activation.max()), 8.0, activation.max())  # the QRS spans it
         leads_order = ("I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6")
-        record(self, "chest_ct.qrs", figures["QRS ms"], "ms", 120)
+        record(self, "chest_ct.qrs", figures["QRS ms"], "ms", [80, 120])
         record(self, "chest_ct.activation", float(activation.max()), "ms")
-        record(self, "chest_ct.qt", figures["QT ms"], "ms", 460)
+        record(self, "chest_ct.qt", figures["QT ms"], "ms", [320, 460])
         record(self, "chest_ct.t_upright", ", ".join(l for l in leads_order if figures["T %s" % l] == "upright"),
                "leads")
         self.assertTrue(320 <= figures["QT ms"] <= 460, figures)

@@ -162,6 +162,50 @@ double HalfWay(double a, double b)
     d += 2.0 * M_PI;
   return a + 0.5 * d;
 }
+/// The LV pool's ends along the long axis: the endocardial apex and the valve plane's centre (the
+/// pool within 5 mm of its basal end); and the epicardial apex, the wall beyond the endocardial
+/// apex within 15 mm of the axis through it.
+void Apexes(const std::vector<Vec>& pool, const std::vector<Vec>& wall, const Vec& centre, const Vec& axis, Vec& endo,
+  Vec& base, Vec& epi)
+{
+  double top = -std::numeric_limits<double>::max(), bottom = std::numeric_limits<double>::max();
+  endo = centre;
+  for (const auto& p : pool)
+  {
+    const double s = Dot(Sub(p, centre), axis);
+    if (s > top)
+    {
+      top = s;
+      endo = p;
+    }
+    bottom = std::min(bottom, s);
+  }
+  base = Vec{};
+  double count = 0.0;
+  for (const auto& p : pool)
+    if (Dot(Sub(p, centre), axis) <= bottom + 5.0)
+    {
+      for (int a = 0; a < 3; ++a)
+        base[a] += p[a];
+      ++count;
+    }
+  for (auto& x : base)
+    x /= count;
+  // The epicardial apex: the wall beyond the endocardial apex, within 15 mm of the axis through it.
+  epi = endo;
+  double farthest = 0.0;
+  for (const auto& p : wall)
+  {
+    const Vec d = Sub(p, endo);
+    const double s = Dot(d, axis);
+    const double off = std::sqrt(std::max(0.0, Dot(d, d) - s * s));
+    if (off <= 15.0 && s > farthest)
+    {
+      farthest = s;
+      epi = p;
+    }
+  }
+}
 }
 
 amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::vector<std::uint8_t>& labels)
@@ -229,44 +273,8 @@ amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::v
       x = -x;
   r.LongAxis = axis;
 
-  // The LV pool's ends along the axis: the apex, and the valve plane.
-  double top = -std::numeric_limits<double>::max(), bottom = std::numeric_limits<double>::max();
-  Vec endo = centre;
-  for (const auto& p : pool)
-  {
-    const double s = Dot(Sub(p, centre), axis);
-    if (s > top)
-    {
-      top = s;
-      endo = p;
-    }
-    bottom = std::min(bottom, s);
-  }
-  Vec base{};
-  double count = 0.0;
-  for (const auto& p : pool)
-    if (Dot(Sub(p, centre), axis) <= bottom + 5.0)
-    {
-      for (int a = 0; a < 3; ++a)
-        base[a] += p[a];
-      ++count;
-    }
-  for (auto& x : base)
-    x /= count;
-  // The epicardial apex: the wall beyond the endocardial apex, within 15 mm of the axis through it.
-  Vec epi = endo;
-  double farthest = 0.0;
-  for (const auto& p : wall)
-  {
-    const Vec d = Sub(p, endo);
-    const double s = Dot(d, axis);
-    const double off = std::sqrt(std::max(0.0, Dot(d, d) - s * s));
-    if (off <= 15.0 && s > farthest)
-    {
-      farthest = s;
-      epi = p;
-    }
-  }
+  Vec endo, base, epi;
+  Apexes(pool, wall, centre, axis, endo, base, epi);
   r.LongAxisLength = Dot(Sub(epi, base), axis);
   const Vec stimulus{ 0.5 * (endo[0] + epi[0]), 0.5 * (endo[1] + epi[1]), 0.5 * (endo[2] + epi[2]) };
 

@@ -130,40 +130,7 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
       return false;
   }
   this->Approximation.KeepHints(this->W());
-  for (int t : edge)
-    this->Detach(t);
-  this->Mesh.Cluster[b].insert(this->Mesh.Cluster[b].end(), this->Mesh.Cluster[a].begin(), this->Mesh.Cluster[a].end());
-  std::vector<ClusterEntry>().swap(this->Mesh.Cluster[a]);
-  for (int t : this->Mesh.VT[a])
-  {
-    for (int k = 0; k < 3; ++k)
-      if (this->Mesh.T[t].V[k] == a)
-        this->Mesh.T[t].V[k] = b;
-    this->Mesh.VT[b].push_back(t);
-  }
-  if (zip)
-  {
-    auto& merged = this->Mesh.Merged[b];
-    const auto& sheets = this->Curves.InputSheets[this->Mesh.Anchor[a]];
-    merged.insert(merged.end(), sheets.begin(), sheets.end());
-    merged.insert(merged.end(), this->Mesh.Merged[a].begin(), this->Mesh.Merged[a].end());
-    std::sort(merged.begin(), merged.end());
-    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-    this->Mesh.Kind[b] = amSurfaceMesh::Corner;
-  }
-  this->Mesh.VT[a].clear();
-  this->Mesh.VAlive[a] = 0;
-  this->Mesh.P[b] = x;
-  this->Mesh.M[b] = mx;
-  this->Grid.Update(changed);
-  ++worker.Collapses;
-  if (CurrentZone() >= 0)
-    ++worker.Removed[this->Parts.Of[a]];
-  for (int w : na)
-    this->Mesh.Touch(w);
-  if (to)
-    for (int w : nb)
-      this->Mesh.Touch(w);
+  this->ApplyCollapse(a, b, x, mx, zip, to != nullptr);
   return true;
 }
 
@@ -283,5 +250,45 @@ int Remesher::CollapsePass()
         return this->Mesh.VAlive[a] && this->Mesh.VAlive[b] ? -1 : 0;
       return this->TryCollapse(a, b);
     });
+}
+
+void Remesher::ApplyCollapse(int a, int b, const Vec3& x, const Mat3& mx, bool zip, bool moved)
+{
+  Worker& worker = this->W();
+  const auto &edge = worker.C.Edge, &na = worker.C.Na, &nb = worker.C.Nb, &changed = worker.C.Changed;
+  for (int t : edge)
+    this->Detach(t);
+  this->Mesh.Cluster[b].insert(this->Mesh.Cluster[b].end(), this->Mesh.Cluster[a].begin(), this->Mesh.Cluster[a].end());
+  std::vector<ClusterEntry>().swap(this->Mesh.Cluster[a]);
+  for (int t : this->Mesh.VT[a])
+  {
+    for (int k = 0; k < 3; ++k)
+      if (this->Mesh.T[t].V[k] == a)
+        this->Mesh.T[t].V[k] = b;
+    this->Mesh.VT[b].push_back(t);
+  }
+  if (zip)
+  {
+    auto& merged = this->Mesh.Merged[b];
+    const auto& sheets = this->Curves.InputSheets[this->Mesh.Anchor[a]];
+    merged.insert(merged.end(), sheets.begin(), sheets.end());
+    merged.insert(merged.end(), this->Mesh.Merged[a].begin(), this->Mesh.Merged[a].end());
+    std::sort(merged.begin(), merged.end());
+    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+    this->Mesh.Kind[b] = amSurfaceMesh::Corner;
+  }
+  this->Mesh.VT[a].clear();
+  this->Mesh.VAlive[a] = 0;
+  this->Mesh.P[b] = x;
+  this->Mesh.M[b] = mx;
+  this->Grid.Update(changed);
+  ++worker.Collapses;
+  if (CurrentZone() >= 0)
+    ++worker.Removed[this->Parts.Of[a]];
+  for (int w : na)
+    this->Mesh.Touch(w);
+  if (moved)
+    for (int w : nb)
+      this->Mesh.Touch(w);
 }
 }

@@ -93,6 +93,9 @@ public:
   /// Edge collapse: a disappears onto b, which stays where it is (half-edge collapse) or, given
   /// 'to' (two surface vertices only), moves there: a point of the input between them.
   bool Collapse(int a, int b, const Vec3* to = nullptr);
+  /// The collapse Collapse has checked, made: a's triangles given to b (its edge's removed), a's
+  /// clusters to b, b moved to x with metric mx; zip: b takes a's interfaces and becomes a corner.
+  void ApplyCollapse(int a, int b, const Vec3& x, const Mat3& mx, bool zip, bool moved);
   /// Collapse of an edge between two surface vertices into the point of the input nearest its
   /// middle; 'outside': refused because that point lies outside the calling worker's zone.
   bool CollapseToMiddle(int a, int b, bool& outside);

@@ -47,7 +47,7 @@ from .AnatomeshIOMesh import (
 )
 from .allocator import keep_freed_memory
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 __all__ = [
     "amCardiacLandmarks",
