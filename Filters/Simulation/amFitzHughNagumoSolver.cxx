@@ -56,22 +56,13 @@ struct amFitzHughNagumoSolver::Run
 };
 
 amFitzHughNagumoSolver::amFitzHughNagumoSolver()
-  : HeartRegions{ 5 }
-  , EndocardialConductionVelocity(0.0)
-  , RegionArrayName(nullptr)
-  , Conductivity(3.5)
-  , FiberArrayName(nullptr)
+  : Conductivity(3.5)
   , TransverseConductivityRatio(0.25)
   , C1(0.26)
   , C2(0.1)
   , C3(0.013)
   , C4(1.0)
   , A(0.13)
-  , TimeStep(0.5)
-  , EndTime(500.0)
-  , OutputInterval(5.0)
-  , StimulusCenter{ 0, 0, 0 }
-  , StimulusRadius(10.0)
   , StimulusRegion(-1)
   , StimulusStart(0.0)
   , StimulusDuration(5.0)
@@ -80,16 +71,15 @@ amFitzHughNagumoSolver::amFitzHughNagumoSolver()
   , Solver(DIRECT)
   , SolverTolerance(1e-8)
   , MaximumIterations(1000)
-  , NumberOfHeartNodes(0)
   , NumberOfSteps(0)
   , MeanIterations(0)
-  , WallSeconds(0)
   , ActivatedFraction(0)
 {
   amThreading::Initialize();
   this->SetNumberOfInputPorts(2);
-  this->SetRegionArrayName("Region");
-  this->SetFiberArrayName("Fibers");
+  this->TimeStep = 0.5;
+  this->OutputInterval = 5.0;
+  this->EndocardialConductionVelocity = 0.0;
 }
 
 int amFitzHughNagumoSolver::FillInputPortInformation(int port, vtkInformation* info)
@@ -100,17 +90,7 @@ int amFitzHughNagumoSolver::FillInputPortInformation(int port, vtkInformation* i
   return 1;
 }
 
-amFitzHughNagumoSolver::~amFitzHughNagumoSolver()
-{
-  this->SetRegionArrayName(nullptr);
-  this->SetFiberArrayName(nullptr);
-}
-
-void amFitzHughNagumoSolver::AddHeartRegion(int label)
-{
-  this->HeartRegions.push_back(label);
-  this->Modified();
-}
+amFitzHughNagumoSolver::~amFitzHughNagumoSolver() = default;
 
 void amFitzHughNagumoSolver::AddEndocardialRegion(int label)
 {
@@ -123,15 +103,6 @@ void amFitzHughNagumoSolver::RemoveAllEndocardialRegions()
   if (!this->EndocardialRegions.empty())
   {
     this->EndocardialRegions.clear();
-    this->Modified();
-  }
-}
-
-void amFitzHughNagumoSolver::RemoveAllHeartRegions()
-{
-  if (!this->HeartRegions.empty())
-  {
-    this->HeartRegions.clear();
     this->Modified();
   }
 }
@@ -504,12 +475,8 @@ void amFitzHughNagumoSolver::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Conductivity: " << this->Conductivity << "\n";
   os << indent << "C1, C2, C3, C4, A: " << this->C1 << ", " << this->C2 << ", " << this->C3 << ", " << this->C4 << ", "
      << this->A << "\n";
-  os << indent << "TimeStep: " << this->TimeStep << " EndTime: " << this->EndTime
-     << " OutputInterval: " << this->OutputInterval << "\n";
-  os << indent << "StimulusCenter: " << this->StimulusCenter[0] << " " << this->StimulusCenter[1] << " "
-     << this->StimulusCenter[2] << " radius " << this->StimulusRadius << " region " << this->StimulusRegion << "\n";
-  os << indent << "EndocardialRegions: " << this->EndocardialRegions.size()
-     << " EndocardialConductionVelocity: " << this->EndocardialConductionVelocity << "\n";
+  os << indent << "StimulusRegion: " << this->StimulusRegion << "\n";
+  os << indent << "EndocardialRegions: " << this->EndocardialRegions.size() << "\n";
   os << indent << "Solver: " << (this->Solver == DIRECT ? "DIRECT" : "CONJUGATE_GRADIENT")
      << " SolverTolerance: " << this->SolverTolerance << " MaximumIterations: " << this->MaximumIterations << "\n";
 }

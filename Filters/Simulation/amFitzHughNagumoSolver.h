@@ -60,7 +60,7 @@
 #define amFitzHughNagumoSolver_h
 
 #include "AnatomeshFiltersSimulationModule.h" // export macro
-#include "vtkUnstructuredGridAlgorithm.h"
+#include "amHeartSolver.h"
 
 #include <memory>
 #include <string>
@@ -69,26 +69,18 @@
 class amTetraSubset;
 class vtkDataArray;
 
-class ANATOMESHFILTERSSIMULATION_EXPORT amFitzHughNagumoSolver : public vtkUnstructuredGridAlgorithm
+class ANATOMESHFILTERSSIMULATION_EXPORT amFitzHughNagumoSolver : public amHeartSolver
 {
 public:
   static amFitzHughNagumoSolver* New();
-  vtkTypeMacro(amFitzHughNagumoSolver, vtkUnstructuredGridAlgorithm);
+  vtkTypeMacro(amFitzHughNagumoSolver, amHeartSolver);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /// Regions that make up the heart (default: 5, the phantom's myocardium).
-  void AddHeartRegion(int label);
-  void RemoveAllHeartRegions();
-  int GetNumberOfHeartRegions() { return static_cast<int>(this->HeartRegions.size()); }
-  int GetHeartRegion(int i) { return this->HeartRegions.at(i); }
-  ///@}
-
-  ///@{
-  /// Cell array of region labels (default "Region").
-  vtkSetStringMacro(RegionArrayName);
-  vtkGetStringMacro(RegionArrayName);
-  ///@}
+  // From amHeartSolver: HeartRegions (default 5), RegionArrayName ("Region"), FiberArrayName
+  // ("Fibers"; unused when absent), StimulusCenter and StimulusRadius (10 mm),
+  // EndocardialConductionVelocity (below; default 0), TimeStep (default 0.5 ms), EndTime (500 ms),
+  // OutputInterval (default 5 ms; rounded to a whole number of steps), NumberOfHeartNodes and
+  // WallSeconds (the time loop's).
 
   ///@{
   /// Conductivity Sigma (mm^2/ms) where no per-region value is given (default 3.5).
@@ -103,10 +95,7 @@ public:
   ///@}
 
   ///@{
-  /// Cell vector array of fiber directions (default "Fibers"; unused when absent) and the ratio of
-  /// cross-fiber to along-fiber conductivity (default 0.25).
-  vtkSetStringMacro(FiberArrayName);
-  vtkGetStringMacro(FiberArrayName);
+  /// The ratio of cross-fiber to along-fiber conductivity (default 0.25).
 #ifndef __VTK_WRAP__
   [[deprecated("use SetFiberArrayName")]] void SetFibreArrayName(const char* name)
   {
@@ -137,17 +126,6 @@ public:
   ///@}
 
   ///@{
-  /// Time step (ms, default 0.5), simulated time (ms, default 500), time between output frames
-  /// (ms, default 5; rounded to a whole number of steps).
-  vtkSetClampMacro(TimeStep, double, 1e-6, 1e6);
-  vtkGetMacro(TimeStep, double);
-  vtkSetClampMacro(EndTime, double, 0.0, 1e7);
-  vtkGetMacro(EndTime, double);
-  vtkSetClampMacro(OutputInterval, double, 1e-6, 1e7);
-  vtkGetMacro(OutputInterval, double);
-  ///@}
-
-  ///@{
   /// Optional input 1: landmarks with named points (amCardiacLandmarks' output); its "Stimulus"
   /// point is the stimulus sphere's centre, in place of StimulusCenter.
   void SetLandmarksConnection(vtkAlgorithmOutput* output)
@@ -155,12 +133,8 @@ public:
     this->SetInputConnection(1, output);
   }
 
-  /// Stimulus: a sphere (centre in mm, radius in mm, default radius 10) or, when StimulusRegion >= 0,
-  /// that region; start (ms, 0), duration (ms, 2), strength (1/ms added to du/dt, 0.5).
-  vtkSetVector3Macro(StimulusCenter, double);
-  vtkGetVector3Macro(StimulusCenter, double);
-  vtkSetClampMacro(StimulusRadius, double, 0.0, 1e6);
-  vtkGetMacro(StimulusRadius, double);
+  /// Stimulus: the sphere (StimulusCenter, StimulusRadius) or, when StimulusRegion >= 0, that
+  /// region; start (ms, 0), duration (ms, 2), strength (1/ms added to du/dt, 0.5).
   vtkSetMacro(StimulusRegion, int);
   vtkGetMacro(StimulusRegion, int);
   /// Endocardial fast activation: regions (not heart regions; e.g. 6 7, the blood pools) whose
@@ -180,8 +154,6 @@ public:
   /// stand-in for the network's spread, not its tree (its fibres conduct at 2-4 mm/ms along
   /// longer paths; on the 2 mm phantom heart 1.5 gives an activation of 96 ms, 2 of 85 ms,
   /// against 59 ms at once).
-  vtkSetClampMacro(EndocardialConductionVelocity, double, 0.0, 1e6);
-  vtkGetMacro(EndocardialConductionVelocity, double);
   vtkSetMacro(StimulusStart, double);
   vtkGetMacro(StimulusStart, double);
   vtkSetClampMacro(StimulusDuration, double, 0.0, 1e7);
@@ -226,13 +198,10 @@ public:
   ///@}
 
   ///@{
-  /// Figures of the last run: heart nodes, steps, mean CG iterations per step (0 with the
-  /// DIRECT solver), wall seconds of
-  /// the time loop, fraction of heart nodes activated by the end.
-  vtkGetMacro(NumberOfHeartNodes, vtkIdType);
+  /// Figures of the last run (besides NumberOfHeartNodes and WallSeconds): steps, mean CG
+  /// iterations per step (0 with the DIRECT solver), fraction of heart nodes activated by the end.
   vtkGetMacro(NumberOfSteps, int);
   vtkGetMacro(MeanIterations, double);
-  vtkGetMacro(WallSeconds, double);
   vtkGetMacro(ActivatedFraction, double);
   ///@}
 
@@ -246,19 +215,12 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  std::vector<int> HeartRegions;
   std::vector<int> EndocardialRegions;
-  double EndocardialConductionVelocity;
-  char* RegionArrayName;
   double Conductivity;
   std::vector<double> RegionConductivities; // pairs
-  char* FiberArrayName;
   double TransverseConductivityRatio;
   double C1, C2, C3, C4, A;
-  double TimeStep, EndTime, OutputInterval;
-  double StimulusCenter[3];
   double ActiveStimulus[3] = { 0, 0, 0 }; // StimulusCenter, or the Landmarks input's Stimulus
-  double StimulusRadius;
   int StimulusRegion;
   double StimulusStart, StimulusDuration, StimulusStrength;
   double ActivationThreshold;
@@ -266,10 +228,8 @@ protected:
   double SolverTolerance;
   int MaximumIterations;
 
-  vtkIdType NumberOfHeartNodes;
   int NumberOfSteps;
   double MeanIterations;
-  double WallSeconds;
   double ActivatedFraction;
 
 private:

@@ -48,54 +48,25 @@ struct amReactionEikonalSolver::Run
 };
 
 amReactionEikonalSolver::amReactionEikonalSolver()
-  : RegionArrayName(nullptr)
-  , FiberArrayName(nullptr)
-  , HeartRegions{ 5 }
-  , ConductionVelocityFibre(0.6)
+  : ConductionVelocityFibre(0.6)
   , ConductionVelocityTransverse(0.25)
-  , EndocardialConductionVelocity(2.0)
   , EarlySites(DURRER)
   , RightVentricleDelay(5.0)
-  , StimulusCenter{ 0, 0, 0 }
-  , StimulusRadius(10.0)
   , ActionPotentialDurationEndocardium(340.0)
   , ActionPotentialDurationEpicardium(300.0)
   , ApicoBasalDurationDifference(30.0)
   , ActivationDurationSlope(-0.7)
-  , EndTime(500.0)
-  , OutputInterval(1.0)
-  , TimeStep(0.05)
-  , NumberOfHeartNodes(0)
   , FirstActivation(0)
   , LastActivation(0)
   , LastRepolarisation(0)
-  , WallSeconds(0)
 {
   this->SetNumberOfInputPorts(3);
-  this->SetRegionArrayName("Region");
-  this->SetFiberArrayName("Fibers");
+  this->EndocardialConductionVelocity = 2.0;
+  this->TimeStep = 0.05;
+  this->OutputInterval = 1.0;
 }
 
-amReactionEikonalSolver::~amReactionEikonalSolver()
-{
-  this->SetRegionArrayName(nullptr);
-  this->SetFiberArrayName(nullptr);
-}
-
-void amReactionEikonalSolver::AddHeartRegion(int label)
-{
-  this->HeartRegions.push_back(label);
-  this->Modified();
-}
-
-void amReactionEikonalSolver::RemoveAllHeartRegions()
-{
-  if (!this->HeartRegions.empty())
-  {
-    this->HeartRegions.clear();
-    this->Modified();
-  }
-}
+amReactionEikonalSolver::~amReactionEikonalSolver() = default;
 
 int amReactionEikonalSolver::FillInputPortInformation(int port, vtkInformation* info)
 {

@@ -50,54 +50,42 @@
 #define amReactionEikonalSolver_h
 
 #include "AnatomeshFiltersSimulationModule.h" // export macro
-#include "vtkUnstructuredGridAlgorithm.h"
+#include "amHeartSolver.h"
 
 #include <memory>
 #include <vector>
 
 class vtkPolyData;
 
-class ANATOMESHFILTERSSIMULATION_EXPORT amReactionEikonalSolver : public vtkUnstructuredGridAlgorithm
+class ANATOMESHFILTERSSIMULATION_EXPORT amReactionEikonalSolver : public amHeartSolver
 {
 public:
   static amReactionEikonalSolver* New();
-  vtkTypeMacro(amReactionEikonalSolver, vtkUnstructuredGridAlgorithm);
+  vtkTypeMacro(amReactionEikonalSolver, amHeartSolver);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Input 1: amVentricularFibres' Tags output; input 2: landmarks (their Stimulus point).
   void SetTagsConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   void SetLandmarksConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(2, output); }
 
-  ///@{
-  /// Cell arrays of region labels (default "Region") and fibre directions (default "Fibers").
-  vtkSetStringMacro(RegionArrayName);
-  vtkGetStringMacro(RegionArrayName);
-  vtkSetStringMacro(FiberArrayName);
-  vtkGetStringMacro(FiberArrayName);
-  ///@}
+  // From amHeartSolver: HeartRegions (default 5), RegionArrayName ("Region"), FiberArrayName
+  // ("Fibers"), StimulusCenter and StimulusRadius (10 mm), EndocardialConductionVelocity (below;
+  // default 2), TimeStep (the cell model's, default 0.05 ms), EndTime (500 ms), OutputInterval
+  // (default 1 ms), NumberOfHeartNodes and WallSeconds.
 
   ///@{
-  /// Regions of the heart muscle (default 5).
-  void AddHeartRegion(int label);
-  void RemoveAllHeartRegions();
-  int GetNumberOfHeartRegions() { return static_cast<int>(this->HeartRegions.size()); }
-  int GetHeartRegion(int i) { return this->HeartRegions.at(i); }
-  ///@}
-
-  ///@{
-  /// Conduction velocities (mm/ms, which is m/s): along the fibres (default 0.6), across them
-  /// (0.25), and over the endocardium (2; 0: no fast layer).
+  /// Conduction velocities (mm/ms, which is m/s): along the fibres (default 0.6) and across them
+  /// (0.25); over the endocardium EndocardialConductionVelocity (2; 0: no fast layer).
   vtkSetClampMacro(ConductionVelocityFibre, double, 1e-3, 100.0);
   vtkGetMacro(ConductionVelocityFibre, double);
   vtkSetClampMacro(ConductionVelocityTransverse, double, 1e-3, 100.0);
   vtkGetMacro(ConductionVelocityTransverse, double);
-  vtkSetClampMacro(EndocardialConductionVelocity, double, 0.0, 100.0);
-  vtkGetMacro(EndocardialConductionVelocity, double);
   ///@}
 
   ///@{
   /// Where activation starts. DURRER (default): the septal endocardium of both ventricles (needs
-  /// the Tags input); STIMULUS: the sphere at StimulusCenter (or the Landmarks' Stimulus).
+  /// the Tags input); STIMULUS: the sphere (StimulusCenter, StimulusRadius; or the Landmarks'
+  /// Stimulus point).
   enum EarlySitesType
   {
     DURRER = 0,
@@ -108,10 +96,6 @@ public:
   /// The RV's septal sites' delay after the LV's (ms, default 5).
   vtkSetClampMacro(RightVentricleDelay, double, 0.0, 1000.0);
   vtkGetMacro(RightVentricleDelay, double);
-  vtkSetVector3Macro(StimulusCenter, double);
-  vtkGetVector3Macro(StimulusCenter, double);
-  vtkSetClampMacro(StimulusRadius, double, 0.0, 1e6);
-  vtkGetMacro(StimulusRadius, double);
   ///@}
 
   ///@{
@@ -130,24 +114,11 @@ public:
   ///@}
 
   ///@{
-  /// Simulated time (ms, default 500), time between frames (ms, default 1), the cell model's time
-  /// step (ms, default 0.05).
-  vtkSetClampMacro(EndTime, double, 0.0, 1e6);
-  vtkGetMacro(EndTime, double);
-  vtkSetClampMacro(OutputInterval, double, 1e-3, 1e6);
-  vtkGetMacro(OutputInterval, double);
-  vtkSetClampMacro(TimeStep, double, 1e-4, 10.0);
-  vtkGetMacro(TimeStep, double);
-  ///@}
-
-  ///@{
-  /// Figures of the last run: heart nodes, the first and last activation (ms), the last
-  /// repolarisation (ms), the wall seconds.
-  vtkGetMacro(NumberOfHeartNodes, vtkIdType);
+  /// Figures of the last run (besides NumberOfHeartNodes and WallSeconds): the first and last
+  /// activation (ms), the last repolarisation (ms).
   vtkGetMacro(FirstActivation, double);
   vtkGetMacro(LastActivation, double);
   vtkGetMacro(LastRepolarisation, double);
-  vtkGetMacro(WallSeconds, double);
   ///@}
 
 protected:
@@ -157,19 +128,12 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  char* RegionArrayName;
-  char* FiberArrayName;
-  std::vector<int> HeartRegions;
-  double ConductionVelocityFibre, ConductionVelocityTransverse, EndocardialConductionVelocity;
+  double ConductionVelocityFibre, ConductionVelocityTransverse;
   int EarlySites;
   double RightVentricleDelay;
-  double StimulusCenter[3];
-  double StimulusRadius;
   double ActionPotentialDurationEndocardium, ActionPotentialDurationEpicardium, ApicoBasalDurationDifference;
   double ActivationDurationSlope;
-  double EndTime, OutputInterval, TimeStep;
-  vtkIdType NumberOfHeartNodes;
-  double FirstActivation, LastActivation, LastRepolarisation, WallSeconds;
+  double FirstActivation, LastActivation, LastRepolarisation;
 
 private:
   amReactionEikonalSolver(const amReactionEikonalSolver&) = delete;

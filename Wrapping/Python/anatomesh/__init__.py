@@ -21,6 +21,7 @@ from .AnatomeshFiltersSegmentation import (
     amCardiacLandmarks, amIntensityClassifier, amLabelOverlap, amSnakeSegmentation, amTorsoSegmentation)
 from .AnatomeshFiltersSimulation import (
     amFitzHughNagumoSolver,
+    amHeartSolver,
     amLeadFieldECG,
     amReactionEikonalSolver,
     amTorsoPotential,
@@ -54,6 +55,7 @@ __all__ = [
     "amConcurrentXMLWriter",
     "amCurvatureMetric",
     "amFitzHughNagumoSolver",
+    "amHeartSolver",
     "amGmshWriter",
     "amImageReader",
     "amImageWriter",
