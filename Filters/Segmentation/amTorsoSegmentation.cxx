@@ -268,6 +268,26 @@ std::vector<std::string> ClassWarnings(vtkDataArray* classTable, bool windowed, 
   return warnings;
 }
 
+// Bone stands further above everything else than any noise the smoothing is for reaches, and the
+// smoothing takes thin bones (ribs) below its bound: where the scan was smoothed, bone is read from
+// the unsmoothed intensities (above the bone class's lower bound, and at least five noise deviations
+// above the class below it; also where the smoothed histogram shows no bone peak), the other classes
+// from the smoothed ones. A voxel the smoothing put in
+// the bone class that is not bone unsmoothed goes to the class below.
+void BoneFromUnsmoothed(
+  vtkDataArray* classTable, const std::vector<float>& hu, double noise, std::vector<std::uint8_t>& classes)
+{
+  if (!classTable)
+    return;
+  const int below = classTable->GetComponent(amTorso::BloodClass, 4) != 0.0 ? amTorso::BloodClass : amTorso::SoftClass;
+  const double bound = std::max(classTable->GetComponent(below, 5), classTable->GetComponent(below, 1) + 5.0 * noise);
+  for (std::size_t v = 0; v < classes.size(); ++v)
+    if (hu[v] > bound)
+      classes[v] = amTorso::BoneClass;
+    else if (classes[v] == amTorso::BoneClass)
+      classes[v] = static_cast<std::uint8_t>(below);
+}
+
 // What the myocardium's step could not do, in words.
 std::vector<std::string> WallWarnings(const amTorso::WallReport& heart, double minimumContrast, double thickness)
 {
@@ -362,9 +382,11 @@ int amTorsoSegmentation::RequestData(
   // noisy to tell.
   const double noise = amVoxel::NoiseLevel(grid, hu->GetPointer(0), -500.0f);
   double noiseSmoothing = 0.0;
+  std::vector<float> unsmoothed;
   if (noise > this->MaximumNoise)
   {
     noiseSmoothing = amVoxel::GaussianForNoise(grid, noise, 0.8 * this->MaximumNoise);
+    unsmoothed.assign(hu->GetPointer(0), hu->GetPointer(0) + n);
     std::vector<float> smoothed(hu->GetPointer(0), hu->GetPointer(0) + n);
     amVoxel::Gaussian(grid, smoothed, noiseSmoothing);
     std::copy(smoothed.begin(), smoothed.end(), hu->GetPointer(0));
@@ -388,8 +410,10 @@ int amTorsoSegmentation::RequestData(
     vtkWarningMacro(<< warning);
   this->UpdateProgress(0.2);
 
-  const std::vector<std::uint8_t> classes(static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)),
+  std::vector<std::uint8_t> classes(static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)),
     static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)) + n);
+  if (!unsmoothed.empty())
+    BoneFromUnsmoothed(classTable, unsmoothed, noise, classes);
   const double* origin = input->GetOrigin();
   const double* spacing = input->GetSpacing();
   vtkMatrix3x3* direction = input->GetDirectionMatrix();
