@@ -271,18 +271,33 @@ std::vector<std::string> ClassWarnings(vtkDataArray* classTable, bool windowed, 
 // Bone stands further above everything else than any noise the smoothing is for reaches, and the
 // smoothing takes thin bones (ribs) below its bound: where the scan was smoothed, bone is read from
 // the unsmoothed intensities (above the bone class's lower bound, and at least five noise deviations
-// above the class below it; also where the smoothed histogram shows no bone peak), the other classes
-// from the smoothed ones. A voxel the smoothing put in
-// the bone class that is not bone unsmoothed goes to the class below.
-void BoneFromUnsmoothed(
-  vtkDataArray* classTable, const std::vector<float>& hu, double noise, std::vector<std::uint8_t>& classes)
+// above the class below it; also where the smoothed histogram shows no bone peak), with the voxels
+// beside it brighter than half-way from soft tissue to its median (partial volume: a voxel more than
+// half bone), the other classes from the smoothed ones. A voxel the smoothing put in the bone class
+// that is not bone unsmoothed goes to the class below.
+void BoneFromUnsmoothed(const amVoxelGrid& g, vtkDataArray* classTable, const std::vector<float>& hu, double noise,
+  std::vector<std::uint8_t>& classes)
 {
   if (!classTable)
     return;
   const int below = classTable->GetComponent(amTorso::BloodClass, 4) != 0.0 ? amTorso::BloodClass : amTorso::SoftClass;
   const double bound = std::max(classTable->GetComponent(below, 5), classTable->GetComponent(below, 1) + 5.0 * noise);
+  amVoxelMask bone(classes.size());
+  std::vector<float> boneValues;
   for (std::size_t v = 0; v < classes.size(); ++v)
-    if (hu[v] > bound)
+    if ((bone[v] = hu[v] > bound))
+      boneValues.push_back(hu[v]);
+  if (boneValues.empty())
+    return;
+  // A voxel half bone, half soft tissue beside bone is bone (its centre lies in the bone).
+  std::nth_element(boneValues.begin(), boneValues.begin() + boneValues.size() / 2, boneValues.end());
+  const double edge = 0.5 * (classTable->GetComponent(amTorso::SoftClass, 1) + boneValues[boneValues.size() / 2]);
+  amVoxelMask grown = bone;
+  for (std::size_t v = 0; v < classes.size(); ++v)
+    if (!bone[v] && hu[v] > edge)
+      g.AllNeighbours(v, [&](std::size_t w) { grown[v] = grown[v] || bone[w]; });
+  for (std::size_t v = 0; v < classes.size(); ++v)
+    if (grown[v])
       classes[v] = amTorso::BoneClass;
     else if (classes[v] == amTorso::BoneClass)
       classes[v] = static_cast<std::uint8_t>(below);
@@ -413,7 +428,7 @@ int amTorsoSegmentation::RequestData(
   std::vector<std::uint8_t> classes(static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)),
     static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)) + n);
   if (!unsmoothed.empty())
-    BoneFromUnsmoothed(classTable, unsmoothed, noise, classes);
+    BoneFromUnsmoothed(grid, classTable, unsmoothed, noise, classes);
   const double* origin = input->GetOrigin();
   const double* spacing = input->GetSpacing();
   vtkMatrix3x3* direction = input->GetDirectionMatrix();

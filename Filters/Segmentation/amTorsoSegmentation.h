@@ -13,8 +13,8 @@
  * 0 outside the body, 1 soft tissue, 2 fat, 3 right lung, 4 left lung, 5 myocardium, 6 LV blood,
  * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone). Steps:
  * 0. a scan noisier than MaximumNoise is smoothed to four fifths of it (the least Gaussian); its
- *    bone is read from the unsmoothed intensities (five noise deviations above the class below), as
- *    the smoothing takes thin bones below the bone class;
+ *    bone is read from the unsmoothed intensities (five noise deviations above the class below, and
+ *    the voxels beside it more than half bone), as the smoothing takes thin bones below the bone class;
  * 1. voxels are classed as air, lung, fat, soft tissue, contrast blood or bone: with
  *    AutomaticClasses (default), by the classes read from this scan's own histogram
  *    (amIntensityClassifier's Automatic mode: a Gaussian mixture with each class's centre held in
