@@ -192,4 +192,6 @@ TEST(HeavyNoise, BoneIsReadUnsmoothed)
   std::cout << "noise_60 bone: spine " << dice[9] << ", ribs " << dice[10] << std::endl;
   EXPECT_GE(dice[9], 0.95);
   EXPECT_GE(dice[10], 0.95);
+  amTest::RecordFigure("heavy_noise.spine_dice", dice[9], "", 0.95);
+  amTest::RecordFigure("heavy_noise.ribs_dice", dice[10], "", 0.95);
 }
