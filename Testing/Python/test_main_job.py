@@ -162,6 +162,8 @@ class MainJob(AgreesWithTruth, unittest.TestCase):
         # Its seconds on this machine (scripts/figures.py runs this test alone); not a bar.
         stages = figures["stage_seconds"]
         record(self, "main_job.seconds", figures["seconds"], "s")
+        for stage, seconds in stages.items():
+            record(self, "main_job.stage." + stage, seconds, "s")
         record(self, "main_job.heartbeat_seconds", stages["fibres"] + stages["heart"] + stages["ecg"], "s")
 
     def test_fenicsx_loads_the_main_jobs_mesh_and_solves_on_it(self):
