@@ -99,7 +99,7 @@ def k(n):
     return "%.0f k" % (n / 1000.0)
 
 
-def count(n, noun):
+def how_many(n, noun):
     """'no region', 'one region', '3 regions'."""
     return "no " + noun if n == 0 else "one " + noun if n == 1 else "%d %ss" % (n, noun)
 
@@ -171,7 +171,7 @@ def row_atlas700(f):
             "%.3f° (surface moved %.3f mm), %s of ≥ 1 cm³ more than 2 %% off its voxels" % (
                 f.v(name + "real_time"), f.v(name + "peak_MB") / 1024.0, f.v(name + "remesh_s"), f.v(name + "regions"),
                 f.v(name + "tetrahedra") / 1e6, f.v(name + "worst_Q"), f.v(name + "min_dihedral"),
-                f.v(name + "surface_moved_mm"), count(f.v(name + "volume_misses"), "region")), "—")
+                f.v(name + "surface_moved_mm"), how_many(f.v(name + "volume_misses"), "region")), "—")
 
 
 def row_dice(f):

@@ -77,15 +77,7 @@ amTetraMeshOptimizer::Report amTetraMeshOptimizer::Optimize(std::vector<double>&
     m.FixedFaces.insert(Sorted(f[0], f[1], f[2]));
   for (const Tri& f : amTetraFaces::Boundary(tets))
     m.FixedFaces.insert(f);
-  auto fixEdges = [&m]() {
-    m.FixedEdges.clear();
-    for (const Tri& f : m.FixedFaces)
-      for (int k = 0; k < 3; ++k)
-      {
-        m.FixedVertex[f[k]] = 1;
-        m.FixedEdges.insert(EdgeKey(f[k], f[(k + 1) % 3]));
-      }
-  };
+  auto fixEdges = [&m]() { m.FixEdgesOfFixedFaces(); };
   fixEdges();
 
   const double bad = 1.0 / options.FlipQuality, poor = 1.0 / options.SearchQuality, split = 1.0 / options.SplitQuality;

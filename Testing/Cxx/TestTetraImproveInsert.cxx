@@ -22,6 +22,7 @@ struct Needles
   int U, V;
   Needles()
   {
+    this->P.reserve(3 * 9); // u, v, the hexagon and the split's new vertex
     const double u[3] = { 0, 0, -2 }, v[3] = { 0, 0, 2 };
     this->U = this->M.AddPoint(u);
     this->V = this->M.AddPoint(v);

@@ -32,17 +32,7 @@ struct CapAndSliver
     for (const Tri& f :
       { Sorted(0, 1, 3), Sorted(1, 2, 3), Sorted(0, 2, 3), Sorted(0, 1, 4), Sorted(1, 2, 4), Sorted(0, 2, 4) })
       this->M.FixedFaces.insert(f);
-    this->FixEdges();
-  }
-  void FixEdges()
-  {
-    this->M.FixedEdges.clear();
-    for (const Tri& f : this->M.FixedFaces)
-      for (int k = 0; k < 3; ++k)
-      {
-        this->M.FixedVertex[f[k]] = 1;
-        this->M.FixedEdges.insert(amTetraImprove::EdgeKey(f[k], f[(k + 1) % 3]));
-      }
+    this->M.FixEdgesOfFixedFaces();
   }
 };
 }
@@ -84,7 +74,7 @@ TEST(TetraImproveSlivers, FreedWithinABudgetAboveItsDepthKeptBelowIt)
     amTetraImprove::Report report;
     const std::vector<double> original = s.P;
     amTetraImprove::FreeSlivers(
-      s.M, options, report, [](int) {}, [&s]() { s.FixEdges(); });
+      s.M, options, report, [](int) {}, [&s]() { s.M.FixEdgesOfFixedFaces(); });
     const long left = amTetraImprove::CountSlivers(s.M, options);
     EXPECT_LE(report.SurfaceDeviation, budget + 1e-12) << budget;
     double moved = 0;

@@ -101,8 +101,7 @@ class MainJob(AgreesWithTruth, unittest.TestCase):
     def test_the_ecg_reads_as_a_heartbeat(self):
         with open(os.path.join(self.segmented_dir, "thorax_ecg_features.csv")) as f:
             rows = {r["Lead"]: r for r in csv.DictReader(f)}
-        with open(os.path.join(self.segmented_dir, "anatomesh-run.json")) as f:
-            figures = json.load(f)["figures"]["thorax_ecg_features.csv"]
+        figures = run_figures(self.segmented_dir)["figures"]["thorax_ecg_features.csv"]
         qrs, qt = figures["QRS ms"], figures["QT ms"]
         print("QRS %.0f ms, QT %.0f ms; R (mV) %s; T %s" % (
             qrs, qt, " ".join("%s %.2f" % (k, float(r["R_mV"])) for k, r in rows.items()),

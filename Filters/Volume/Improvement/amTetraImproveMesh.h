@@ -129,6 +129,18 @@ public:
     }
     return id;
   }
+  /// FixedEdges and FixedVertex from FixedFaces: every edge and vertex of a fixed face is fixed
+  /// (the edges afresh; vertices once fixed stay fixed).
+  void FixEdgesOfFixedFaces()
+  {
+    this->FixedEdges.clear();
+    for (const Tri& f : this->FixedFaces)
+      for (int k = 0; k < 3; ++k)
+      {
+        this->FixedVertex[f[k]] = 1;
+        this->FixedEdges.insert(EdgeKey(f[k], f[(k + 1) % 3]));
+      }
+  }
   void Kill(int id)
   {
     this->Alive[id] = 0;
