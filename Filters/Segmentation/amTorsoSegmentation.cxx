@@ -185,17 +185,17 @@ amTorso::TissueParameters TissueParametersFor(vtkDataArray* classTable, vtkMatri
   p.GasIsNotLung = classTable && classTable->GetComponent(amTorso::LungClass, 4) != 0.0;
   if (classTable && classTable->GetComponent(amTorso::SoftClass, 4) != 0.0)
   {
-    // Marrow brighter than soft tissue's upper tail is trabecular bone.
+    // Enclosed by cortex and a deviation brighter than soft tissue's centre is trabecular bone (an
+    // old patient's marrow reads 80-120 HU at 3 mm); the spinal canal's fluid and cord are darker.
     p.HU = hu;
     p.TrabecularLevel =
-      classTable->GetComponent(amTorso::SoftClass, 1) + 3.0 * classTable->GetComponent(amTorso::SoftClass, 2);
+      classTable->GetComponent(amTorso::SoftClass, 1) + classTable->GetComponent(amTorso::SoftClass, 2);
     if (classTable->GetComponent(amTorso::BoneClass, 4) != 0.0)
       // Half-way to cortical bone (700 HU at least in an adult); a lower centre is a soft kernel's,
       // a higher one a window's ceiling or dense cortex, neither of which moves a thin bone's edge.
       p.BonePartialLevel = 0.5 *
         (classTable->GetComponent(amTorso::SoftClass, 1) +
           std::min(700.0, classTable->GetComponent(amTorso::BoneClass, 1)));
-    p.AxialAxis = p.SuperiorAxis;
   }
   return p;
 }

@@ -4,6 +4,7 @@
 #include "Torso/amVoxelGrid.h"
 #include "amSnakeSegmentation.h"
 #include "amTestUtilities.h"
+#include "amThoraxPhantomModel.h"
 #include "amThoraxPhantomSource.h"
 #include "amTorsoSegmentation.h"
 
@@ -522,4 +523,53 @@ TEST(TorsoTissues, GasBelowTheDiaphragmIsNotLung)
     const amVoxelMask none = amTorso::GasBelowLungs(g, air, -1, sign);
     EXPECT_EQ(std::count(none.begin(), none.end(), 1), 0);
   }
+}
+
+TEST(TorsoTissues, TrabecularBoneIsWhatTheCortexEnclosesInAnySlice)
+{
+  // A vertebral body: a cylinder (radius 10 mm, 20 mm tall, axis along k) of cortex 1.5 mm thick
+  // with end plates, its side wall broken by a vertical slit (a foramen: no axial slice is closed),
+  // filled with marrow 2.5 deviations above soft tissue; behind it a canal (a closed ring in every
+  // axial slice) holding fluid darker than soft tissue.
+  amVoxelGrid g;
+  g.N[0] = g.N[1] = g.N[2] = 48;
+  std::vector<std::uint8_t> classes(g.Size());
+  std::vector<float> hu(g.Size());
+  std::vector<std::uint8_t> truth(g.Size());
+  for (int k = 0; k < g.N[2]; ++k)
+    for (int j = 0; j < g.N[1]; ++j)
+      for (int i = 0; i < g.N[0]; ++i)
+      {
+        const std::size_t v = g.Index(i, j, k);
+        const double r = std::hypot(i - 20.0, j - 20.0), canal = std::hypot(i - 20.0, j - 36.0);
+        const bool body = i > 1 && j > 1 && i < 46 && j < 46;
+        const bool inside = r < 10.0 && k >= 10 && k <= 30;
+        const bool slit = std::fabs(i - 20.0) < 1.0 && j < 20 && r >= 8.5;
+        const bool cortex = inside && (r >= 8.5 || k < 12 || k > 28) && !slit;
+        const bool marrow = inside && !cortex && r < 8.5;
+        const bool ring = canal >= 3.5 && canal < 5.0 && k >= 5 && k <= 35;
+        classes[v] = !body ? amTorso::AirClass : cortex || ring ? amTorso::BoneClass : amTorso::SoftClass;
+        hu[v] = !body ? -1000.0f : cortex || ring ? 800.0f : marrow ? 90.0f : canal < 3.5 ? 10.0f : 40.0f;
+        truth[v] = marrow ? 1 : canal < 3.5 && k > 5 && k < 35 ? 2 : 0;
+      }
+  const double worldX[4] = { 1.0, 0.0, 0.0, -24.0 };
+  amTorso::TissueParameters p;
+  p.MinimumVoxels = 10;
+  p.HU = hu.data();
+  p.TrabecularLevel = 40.0 + 20.0; // soft tissue's centre and one deviation
+  std::vector<std::uint8_t> labels;
+  amTorso::Tissues(g, classes, worldX, p, labels);
+  std::size_t marrow = 0, marrowBone = 0, fluid = 0, fluidBone = 0;
+  for (std::size_t v = 0; v < g.Size(); ++v)
+  {
+    const bool bone = labels[v] == amThoraxPhantomModel::Spine || labels[v] == amThoraxPhantomModel::Ribs;
+    marrow += truth[v] == 1;
+    marrowBone += truth[v] == 1 && bone;
+    fluid += truth[v] == 2;
+    fluidBone += truth[v] == 2 && bone;
+  }
+  ASSERT_GT(marrow, 3000u);
+  EXPECT_GT(marrowBone, 0.99 * marrow); // closed in sagittal and coronal slices, not in axial ones
+  EXPECT_EQ(fluidBone, 0u);             // enclosed, but darker than marrow
+  ASSERT_GT(fluid, 500u);
 }

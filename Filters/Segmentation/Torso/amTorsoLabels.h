@@ -54,11 +54,10 @@ struct TissueParameters
   // grows towards the head: air under the lungs across tissue is not lung (GasBelowLungs).
   int SuperiorAxis = -1;
   int SuperiorSign = 1;
-  // Trabecular bone: voxels brighter than TrabecularLevel (HU) that cortical bone encloses in an
-  // axial slice (across index axis AxialAxis), in holes of at most MaximumMarrowArea mm^2.
+  // Trabecular bone: voxels brighter than TrabecularLevel (HU) that cortical bone encloses in a
+  // slice across any index axis, in holes of at most MaximumMarrowArea mm^2.
   const float* HU = nullptr;
   double TrabecularLevel = 1e30;
-  int AxialAxis = 2;
   double MaximumMarrowArea = 2000.0;
   // Bone's partial volume: voxels brighter than BonePartialLevel (HU) within two voxels of the
   // bone class (where contrast blood pushes the bone class's boundary above thin bones' edges).

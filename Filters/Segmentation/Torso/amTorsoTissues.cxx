@@ -96,8 +96,8 @@ std::vector<int> LungCandidates(const amVoxelGrid& g, const std::vector<std::uin
 
 // Bone: the bone class, its partial volume (brighter than BonePartialLevel within two voxels of
 // it), and the trabecular bone it encloses (darker, among soft tissue and contrast blood in
-// intensity, but inside a cortical ring in an axial slice; the spinal canal and the marrow's fat
-// are darker than TrabecularLevel and stay out).
+// intensity, but inside a cortical ring in a slice; the spinal canal's fluid and cord and the
+// marrow's fat are darker than TrabecularLevel and stay out).
 amVoxelMask BoneMask(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& exterior,
   const amTorso::TissueParameters& p)
 {
@@ -116,9 +116,16 @@ amVoxelMask BoneMask(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
           g.AllNeighbours(v, [&](std::size_t w) { grown[v] = grown[v] || mask[w]; });
       mask.swap(grown);
     }
-  const int a = p.AxialAxis;
-  const double pixel = g.Spacing[(a + 1) % 3] * g.Spacing[(a + 2) % 3];
-  const amVoxelMask marrow = amVoxel::SliceHoles(g, mask, a, static_cast<std::size_t>(p.MaximumMarrowArea / pixel));
+  // A ring in one slice may be open in another (a 3 mm slice's partial volume, a foramen): the
+  // marrow is what a ring encloses in a slice across any of the three axes.
+  amVoxelMask marrow(n, 0);
+  for (int a = 0; a < 3; ++a)
+  {
+    const double pixel = g.Spacing[(a + 1) % 3] * g.Spacing[(a + 2) % 3];
+    const amVoxelMask holes = amVoxel::SliceHoles(g, mask, a, static_cast<std::size_t>(p.MaximumMarrowArea / pixel));
+    for (std::size_t v = 0; v < n; ++v)
+      marrow[v] = marrow[v] || holes[v];
+  }
   for (std::size_t v = 0; v < n; ++v)
     if (marrow[v] && !exterior[v] && p.HU[v] > p.TrabecularLevel)
       mask[v] = 1;
