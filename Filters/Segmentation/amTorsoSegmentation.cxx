@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 vtkStandardNewMacro(amTorsoSegmentation);
@@ -303,6 +304,23 @@ void BoneFromUnsmoothed(const amVoxelGrid& g, vtkDataArray* classTable, const st
       classes[v] = static_cast<std::uint8_t>(below);
 }
 
+// A voxel between lung and tissue (the fat class's partial-volume sheets) is lung only when more
+// than half of it is air: brighter than half-way from the lung's class to soft tissue's, it goes to
+// the tissue beside it; and darker than soft tissue, it holds no bone.
+std::function<bool(std::size_t, std::uint8_t)> PartialVolumeRefusals(vtkDataArray* classTable, const float* values)
+{
+  if (!classTable || classTable->GetComponent(amTorso::LungClass, 4) == 0.0 ||
+    classTable->GetComponent(amTorso::SoftClass, 4) == 0.0)
+    return nullptr;
+  const float soft = static_cast<float>(classTable->GetComponent(amTorso::SoftClass, 1));
+  const float halfAir = 0.5f * (static_cast<float>(classTable->GetComponent(amTorso::LungClass, 1)) + soft);
+  return [values, halfAir, soft](std::size_t v, std::uint8_t l) {
+    using Phantom = amThoraxPhantomModel;
+    return ((l == Phantom::RightLung || l == Phantom::LeftLung) && values[v] > halfAir) ||
+      ((l == Phantom::Spine || l == Phantom::Ribs) && values[v] < soft);
+  };
+}
+
 // What the myocardium's step could not do, in words.
 std::vector<std::string> WallWarnings(const amTorso::WallReport& heart, double minimumContrast, double thickness)
 {
@@ -471,7 +489,7 @@ int amTorsoSegmentation::RequestData(
     vtkWarningMacro(<< warning);
   this->UpdateProgress(0.7);
 
-  amVoxel::HandOver(grid, labels);
+  amVoxel::HandOver(grid, labels, PartialVolumeRefusals(classTable, hu->GetPointer(0)));
   std::vector<bool> single(256, false);
   for (int l = 1; l < 255; ++l)
     single[l] =

@@ -37,7 +37,10 @@
  * depth where they fall into two lungs, and every voxel to the nearer (where no depth parts it, at the body's
  * mid-plane, with a warning). Other air inside the body goes to its neighbours, or is fat when InputWindow starts above
  * fat's -100 HU (fat then reads as air);
- * 4. the largest bone component is the spine, every other one is rib (or other bone);
+ * 4. bone is the bone class, the voxels beside it more than half bone, and the trabecular bone it
+ *    encloses (what a cortical ring encloses in a slice across any of the three axes, a deviation
+ *    brighter than soft tissue's centre); the largest bone component is the spine, every other
+ *    one is rib (or other bone);
  * 5. the organs of input 1 are written over these;
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
  *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a
@@ -57,7 +60,9 @@
  *    blood pools' level (HU; pools not brighter than the wall by MinimumWallContrast give a
  *    warning: a scan without contrast, or a seed outside the blood pool), and the Gaussian
  *    used (mm);
- * 7. every voxel left undecided goes to the most frequent label among its neighbours; components
+ * 7. every voxel left undecided goes to the most frequent label among its neighbours (never to a
+ *    lung when it is less than half air, brighter than half-way from the lung class to soft tissue,
+ *    nor to bone when darker than soft tissue, while another label reaches it); components
  *    smaller than MinimumComponentVolume are handed to their neighbours the same way, and every
  *    organ but soft tissue, fat and ribs keeps only its largest component.
  * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split at the

@@ -4,10 +4,10 @@
 // potentials at every 5 ms frame), as a ratio.
 // Run: build/bin/BenchmarkHeartbeat [MESH.vtu LANDMARKS.vtp] (the main job's thorax_tets.vtu and
 // thorax_landmarks.vtp; without them: the phantom's exact labels at 1 mm meshed by CGAL, facet 4 mm).
-// build/bin/BenchmarkHeartbeat slab: the N-version benchmark's slab (Niederer et al. 2011: 20 x 7 x 3 mm,
-// fibres along x, sigma 0.17 / 0.019 S/m, chi 1400 /cm, Cm 1 uF/cm2, a 1.5 mm corner stimulus) with the
-// Mitchell-Schaeffer monodomain at several dx and dt: activation at the far corner P8 and the centre,
-// a self-convergence study of the model we ship.
+// build/bin/BenchmarkHeartbeat slab [DX DT]: the N-version benchmark's slab (Niederer et al. 2011:
+// 20 x 7 x 3 mm, fibres along x, sigma 0.17 / 0.019 S/m, chi 1400 /cm, Cm 1 uF/cm2, a 1.5 mm corner
+// stimulus) with the Mitchell-Schaeffer monodomain at several dx and dt (or the one given): activation
+// at the far corner P8 and the centre, a self-convergence study of the model we ship.
 #include "../Cxx/amSimulationTestUtilities.h"
 #include "amCardiacLandmarks.h"
 #include "amFitzHughNagumoSolver.h"
@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace
@@ -95,6 +96,11 @@ int main(int argc, char* argv[])
   if (argc >= 2 && std::string(argv[1]) == "slab")
   {
     std::printf("N-version slab, Mitchell-Schaeffer monodomain (activation: Vm crossing -35 mV):\n");
+    if (argc == 4) // one level: slab DX DT
+    {
+      Slab(std::atof(argv[2]), std::atof(argv[3]));
+      return 0;
+    }
     for (double dx : { 0.5, 0.25, 0.2 })
       for (double dt : { 0.05, 0.02, 0.01 })
         Slab(dx, dt);

@@ -573,3 +573,24 @@ TEST(TorsoTissues, TrabecularBoneIsWhatTheCortexEnclosesInAnySlice)
   EXPECT_EQ(fluidBone, 0u);             // enclosed, but darker than marrow
   ASSERT_GT(fluid, 500u);
 }
+
+TEST(VoxelOperations, HandOverKeepsARefusedLabelWhileAnotherReaches)
+{
+  // A row of voxels: label 3 (lung) | two pending voxels | label 1 (tissue); the pending voxel
+  // beside the lung refuses it and takes the tissue through its pending neighbour. A pending voxel
+  // whose only neighbours are refused takes them.
+  amVoxelGrid g;
+  g.N[0] = 8;
+  g.N[1] = g.N[2] = 1;
+  std::vector<std::uint8_t> labels = { 3, 3, 3, amVoxel::Pending, amVoxel::Pending, 1, 1, 1 };
+  const auto refuses = [](std::size_t, std::uint8_t l) { return l == 3; };
+  std::vector<std::uint8_t> free = labels;
+  amVoxel::HandOver(g, free);
+  EXPECT_EQ(free[3], 3); // unconstrained, the lung's front reaches it first
+  EXPECT_EQ(amVoxel::HandOver(g, labels, refuses), 2u);
+  EXPECT_EQ(labels[3], 1);
+  EXPECT_EQ(labels[4], 1);
+  std::vector<std::uint8_t> enclosed = { 3, 3, 3, amVoxel::Pending, 3, 3, 3, 3 };
+  amVoxel::HandOver(g, enclosed, refuses);
+  EXPECT_EQ(enclosed[3], 3);
+}

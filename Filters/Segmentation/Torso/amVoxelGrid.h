@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 struct amVoxelGrid
@@ -117,9 +118,12 @@ int Basins(const amVoxelGrid& g, const amVoxelMask& mask, const std::vector<floa
 
 /// Hands every voxel whose label is Pending to the most frequent label among its 26 neighbours
 /// that are not Pending, front by front (each front decided from the previous state, so the
-/// result does not depend on the visiting order). Returns the voxels handed over.
+/// result does not depend on the visiting order). Returns the voxels handed over. refuses(v, l),
+/// when given, keeps label l from voxel v while another label can reach it (a voxel whose only
+/// neighbours are refused takes them).
 constexpr std::uint8_t Pending = 255;
-std::size_t HandOver(const amVoxelGrid& g, std::vector<std::uint8_t>& labels);
+std::size_t HandOver(const amVoxelGrid& g, std::vector<std::uint8_t>& labels,
+  const std::function<bool(std::size_t, std::uint8_t)>& refuses = nullptr);
 
 /// Marks Pending every component (6-connected) of a non-zero label smaller than minimumVoxels,
 /// and every component but the largest of the labels flagged in single[label]; then hands them
