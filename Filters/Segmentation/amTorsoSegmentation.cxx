@@ -321,6 +321,58 @@ std::function<bool(std::size_t, std::uint8_t)> PartialVolumeRefusals(vtkDataArra
   };
 }
 
+// Where the scan shows contrast blood and the organ map seeds its pools, the blood connected to
+// them (brighter than half a deviation below the blood class's centre) is never bone; where the
+// window's ceiling lies below cortical bone (700 HU at least in an adult), bone is its cortex
+// (brighter than two deviations above the blood's centre) and the marrow it reaches (ClippedBone).
+void ContrastBone(const amVoxelGrid& g, vtkDataArray* classTable, const float* hu,
+  const std::vector<std::uint8_t>& organs, const std::vector<int>& poolLabels, double ceiling, amVoxelMask& vessels,
+  amTorso::TissueParameters& p)
+{
+  if (!classTable || !p.HU || classTable->GetComponent(amTorso::BloodClass, 4) == 0.0 || organs.empty())
+    return;
+  amVoxelMask pools(organs.size(), 0);
+  bool any = false;
+  for (std::size_t v = 0; v < organs.size(); ++v)
+    if (organs[v] && std::find(poolLabels.begin(), poolLabels.end(), organs[v]) != poolLabels.end())
+      any = pools[v] = 1;
+  if (!any)
+    return;
+  const double centre = classTable->GetComponent(amTorso::BloodClass, 1);
+  const double spread = classTable->GetComponent(amTorso::BloodClass, 2);
+  vessels = amTorso::ContrastVessels(g, hu, static_cast<float>(centre - 0.5 * spread), pools);
+  p.Vessels = &vessels;
+  p.BoneClipped = ceiling < 700.0;
+  p.CortexLevel = centre + 2.0 * spread;
+  p.MarrowLevel = centre - 0.5 * spread;
+}
+
+// World x of voxel (i, j, k): worldX[0] i + worldX[1] j + worldX[2] k + worldX[3].
+void WorldXRow(vtkImageData* image, double worldX[4])
+{
+  const double* spacing = image->GetSpacing();
+  vtkMatrix3x3* direction = image->GetDirectionMatrix();
+  for (int a = 0; a < 3; ++a)
+    worldX[a] = direction->GetElement(0, a) * spacing[a];
+  worldX[3] = image->GetOrigin()[0];
+}
+
+// What the lungs' step could not do, in words.
+std::vector<std::string> LungWarnings(const amTorso::TissueReport& tissues, double minimumVolume)
+{
+  std::vector<std::string> warnings;
+  std::ostringstream text;
+  if (tissues.LungComponents == 0)
+  {
+    text << "No lungs: no air inside the body of at least " << minimumVolume << " mm^3.";
+    warnings.push_back(text.str());
+  }
+  else if (tissues.LungsSplitAtMidPlane)
+    warnings.push_back("The lungs are one component that no depth parts in two (joined more widely than at the "
+                       "trachea or bronchi): they are split at the body's mid-plane into right and left lung.");
+  return warnings;
+}
+
 // What the myocardium's step could not do, in words.
 std::vector<std::string> WallWarnings(const amTorso::WallReport& heart, double minimumContrast, double thickness)
 {
@@ -447,27 +499,25 @@ int amTorsoSegmentation::RequestData(
     static_cast<std::uint8_t*>(classArray->GetVoidPointer(0)) + n);
   if (!unsmoothed.empty())
     BoneFromUnsmoothed(grid, classTable, unsmoothed, noise, classes);
-  const double* origin = input->GetOrigin();
-  const double* spacing = input->GetSpacing();
-  vtkMatrix3x3* direction = input->GetDirectionMatrix();
-  const double worldX[4] = { direction->GetElement(0, 0) * spacing[0], direction->GetElement(0, 1) * spacing[1],
-    direction->GetElement(0, 2) * spacing[2], origin[0] };
+  double worldX[4];
+  WorldXRow(input, worldX);
   const std::size_t minimumVoxels =
     static_cast<std::size_t>(std::ceil(this->MinimumComponentVolume / grid.VoxelVolume()));
 
   std::vector<std::uint8_t> labels;
-  amTorso::TissueParameters tissueParameters = TissueParametersFor(classTable, direction, hu->GetPointer(0));
+  amTorso::TissueParameters tissueParameters =
+    TissueParametersFor(classTable, input->GetDirectionMatrix(), hu->GetPointer(0));
   tissueParameters.MinimumVoxels = minimumVoxels;
   tissueParameters.BodyGap = this->BodyGapClosing;
   tissueParameters.LungOpening = this->LungOpening;
   // Below a window that starts above fat's -100 HU, fat reads as air: what is not lung is fat.
   tissueParameters.LeftoverAirIsFat = windowed && lowest > -100.0;
+  amVoxelMask vessels;
+  ContrastBone(grid, classTable, hu->GetPointer(0), organs, this->BloodPoolLabels,
+    windowed ? this->InputWindow[1] + 0.5 * this->InputWindow[0] : 1e30, vessels, tissueParameters);
   const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
-  if (tissues.LungComponents == 0)
-    vtkWarningMacro("No lungs: no air inside the body of at least " << this->MinimumComponentVolume << " mm^3.");
-  else if (tissues.LungsSplitAtMidPlane)
-    vtkWarningMacro("The lungs are one component that no depth parts in two (joined more widely than at the "
-                    "trachea or bronchi): they are split at the body's mid-plane into right and left lung.");
+  for (const std::string& warning : LungWarnings(tissues, this->MinimumComponentVolume))
+    vtkWarningMacro(<< warning);
   this->UpdateProgress(0.4);
 
   std::vector<bool> organ(256, false);

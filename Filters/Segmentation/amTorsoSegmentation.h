@@ -39,8 +39,13 @@
  * fat's -100 HU (fat then reads as air);
  * 4. bone is the bone class, the voxels beside it more than half bone, and the trabecular bone it
  *    encloses (what a cortical ring encloses in a slice across any of the three axes, a deviation
- *    brighter than soft tissue's centre); the largest bone component is the spine, every other
- *    one is rib (or other bone);
+ *    brighter than soft tissue's centre); never the contrast blood connected to the seeded blood
+ *    pools (BloodPoolLabels; brighter than half a deviation below the blood class's centre, through
+ *    the scan opened by the 6-neighbour cross) nor the two voxels around it; where InputWindow's
+ *    ceiling lies below cortical bone (700 HU), bone is the cortex (two deviations above the blood's
+ *    centre) away from that blood and not bordered mostly by lung, and the marrow it reaches
+ *    within 12 mm (brighter than the vessels' level); the largest bone component is the spine,
+ *    every other one is rib (or other bone);
  * 5. the organs of input 1 are written over these;
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
  *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a

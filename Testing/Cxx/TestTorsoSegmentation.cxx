@@ -594,3 +594,68 @@ TEST(VoxelOperations, HandOverKeepsARefusedLabelWhileAnotherReaches)
   amVoxel::HandOver(g, enclosed, refuses);
   EXPECT_EQ(enclosed[3], 3);
 }
+
+TEST(TorsoTissues, ContrastConnectedToThePoolsIsNeverBone)
+{
+  // A blood pool (radius 10 mm, 250 HU) with a vessel (radius 3 mm) to a bolus of dense contrast
+  // (radius 6 mm, 600 HU: the window's ceiling, as bright as the cortex); apart from them, 5 mm of
+  // soft tissue away, a vertebra: a cylinder of cortex 2 mm thick (600 HU) around marrow of 200 HU
+  // (in the blood's range). The bolus is blood whatever the window; where the window clips bone,
+  // the vertebra is its cortex and the marrow it reaches.
+  amVoxelGrid g;
+  g.N[0] = 80;
+  g.N[1] = g.N[2] = 44;
+  std::vector<std::uint8_t> classes(g.Size()), truth(g.Size()), organs(g.Size(), 0);
+  std::vector<float> hu(g.Size());
+  for (int k = 0; k < g.N[2]; ++k)
+    for (int j = 0; j < g.N[1]; ++j)
+      for (int i = 0; i < g.N[0]; ++i)
+      {
+        const std::size_t v = g.Index(i, j, k);
+        const bool body = i > 1 && j > 1 && i < 78 && j < 42;
+        const bool pool = std::hypot(i - 15.0, j - 22.0, k - 22.0) < 10.0;
+        const bool vessel = i >= 15 && i <= 35 && std::hypot(j - 22.0, k - 22.0) < 3.0;
+        const bool bolus = std::hypot(i - 35.0, j - 22.0, k - 22.0) < 6.0;
+        const double r = std::hypot(i - 60.0, j - 22.0);
+        const bool vertebra = r < 12.0 && k > 6 && k < 38;
+        const bool cortex = vertebra && (r >= 10.0 || k < 9 || k > 35);
+        hu[v] = !body ? -1000.0f : bolus || cortex ? 600.0f : pool || vessel ? 250.0f : vertebra ? 200.0f : 41.0f;
+        classes[v] = !body  ? amTorso::AirClass
+          : hu[v] >= 600.0f ? amTorso::BoneClass
+          : hu[v] >= 200.0f ? amTorso::BloodClass
+                            : amTorso::SoftClass;
+        organs[v] = pool ? 6 : 0;
+        truth[v] = vertebra ? 1 : bolus ? 2 : 0;
+      }
+  amVoxelMask pools(g.Size());
+  for (std::size_t v = 0; v < g.Size(); ++v)
+    pools[v] = organs[v] == 6;
+  const amVoxelMask vessels = amTorso::ContrastVessels(g, hu.data(), 200.0f, pools);
+  const double worldX[4] = { 1.0, 0.0, 0.0, -40.0 };
+  for (const bool clipped : { false, true })
+  {
+    amTorso::TissueParameters p;
+    p.MinimumVoxels = 10;
+    p.HU = hu.data();
+    p.TrabecularLevel = 60.0;
+    p.Vessels = &vessels;
+    p.BoneClipped = clipped;
+    p.CortexLevel = 400.0;
+    p.MarrowLevel = 200.0 - 1.0;
+    std::vector<std::uint8_t> labels;
+    amTorso::Tissues(g, classes, worldX, p, labels);
+    std::size_t vertebra = 0, vertebraBone = 0, bolusBone = 0, otherBone = 0;
+    for (std::size_t v = 0; v < g.Size(); ++v)
+    {
+      const bool bone = labels[v] == amThoraxPhantomModel::Spine || labels[v] == amThoraxPhantomModel::Ribs;
+      vertebra += truth[v] == 1;
+      vertebraBone += truth[v] == 1 && bone;
+      bolusBone += truth[v] == 2 && bone;
+      otherBone += truth[v] == 0 && bone;
+    }
+    EXPECT_EQ(bolusBone, 0u) << "clipped " << clipped;
+    EXPECT_EQ(otherBone, 0u) << "clipped " << clipped;
+    // Unclipped, the marrow is what the cortex encloses; clipped, what it reaches.
+    EXPECT_GT(vertebraBone, 0.99 * vertebra) << "clipped " << clipped;
+  }
+}

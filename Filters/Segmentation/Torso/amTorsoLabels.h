@@ -62,7 +62,31 @@ struct TissueParameters
   // Bone's partial volume: voxels brighter than BonePartialLevel (HU) within two voxels of the
   // bone class (where contrast blood pushes the bone class's boundary above thin bones' edges).
   double BonePartialLevel = 1e30;
+  // Contrast blood connected to the seeded pools (ContrastVessels; null: none): never bone, nor
+  // the two voxels around it (its partial volume).
+  const amVoxelMask* Vessels = nullptr;
+  // Where the scan's window clips bone below cortical bone's intensity (a window's ceiling under
+  // 700 HU), bone cannot be told from contrast by intensity: it is the cortex (brighter than
+  // CortexLevel, HU) away from the vessels and not bordered mostly by lung, and the marrow it
+  // reaches (brighter than MarrowLevel, within MarrowReach mm; ClippedBone).
+  bool BoneClipped = false;
+  double CortexLevel = 1e30;
+  double MarrowLevel = 1e30;
+  double MarrowReach = 12.0;
 };
+
+/// The contrast-filled vessels and chambers: the voxels brighter than level connected to the pools
+/// (the seeded blood pools) through the mask opened by the 6-neighbour cross (so a vessel touching
+/// a bone through a voxel-thin contact does not carry the bone along).
+amVoxelMask ContrastVessels(const amVoxelGrid& g, const float* hu, float level, const amVoxelMask& pools);
+
+/// The mask grown by rings of 26-neighbours.
+amVoxelMask Grown(const amVoxelGrid& g, const amVoxelMask& mask, int rings);
+
+/// Bone where the window clips it (TissueParameters::BoneClipped): outside the exterior and
+/// away from nearVessels.
+amVoxelMask ClippedBone(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& exterior,
+  const amVoxelMask& nearVessels, const TissueParameters& p);
 
 /// Tissue labels from the classes: the exterior air (the air class connected to the sides of the
 /// first two index axes) 0; the body SoftTissue; fat (opened: partial-volume sheets are left

@@ -94,7 +94,8 @@ std::vector<int> LungCandidates(const amVoxelGrid& g, const std::vector<std::uin
   return order;
 }
 
-// Bone: the bone class, its partial volume (brighter than BonePartialLevel within two voxels of
+// Bone: the bone class (or, where the window clips bone, ClippedBone), never contrast blood of
+// the seeded pools' vessels, its partial volume (brighter than BonePartialLevel within two voxels of
 // it), and the trabecular bone it encloses (darker, among soft tissue and contrast blood in
 // intensity, but inside a cortical ring in a slice; the spinal canal's fluid and cord and the
 // marrow's fat are darker than TrabecularLevel and stay out).
@@ -102,9 +103,13 @@ amVoxelMask BoneMask(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
   const amTorso::TissueParameters& p)
 {
   const std::size_t n = classes.size();
+  const amVoxelMask nearVessels = p.Vessels ? amTorso::Grown(g, *p.Vessels, 2) : amVoxelMask(n, 0);
   amVoxelMask mask(n);
-  for (std::size_t v = 0; v < n; ++v)
-    mask[v] = classes[v] == amTorso::BoneClass && !exterior[v];
+  if (p.HU && p.BoneClipped)
+    mask = amTorso::ClippedBone(g, classes, exterior, nearVessels, p);
+  else
+    for (std::size_t v = 0; v < n; ++v)
+      mask[v] = classes[v] == amTorso::BoneClass && !exterior[v] && !nearVessels[v];
   if (!p.HU)
     return mask;
   if (p.BonePartialLevel < 1e30)
@@ -112,7 +117,7 @@ amVoxelMask BoneMask(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
     {
       amVoxelMask grown = mask;
       for (std::size_t v = 0; v < n; ++v)
-        if (!mask[v] && !exterior[v] && p.HU[v] > p.BonePartialLevel)
+        if (!mask[v] && !exterior[v] && !nearVessels[v] && p.HU[v] > p.BonePartialLevel)
           g.AllNeighbours(v, [&](std::size_t w) { grown[v] = grown[v] || mask[w]; });
       mask.swap(grown);
     }
@@ -127,7 +132,7 @@ amVoxelMask BoneMask(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
       marrow[v] = marrow[v] || holes[v];
   }
   for (std::size_t v = 0; v < n; ++v)
-    if (marrow[v] && !exterior[v] && p.HU[v] > p.TrabecularLevel)
+    if (marrow[v] && !exterior[v] && !(p.Vessels && (*p.Vessels)[v]) && p.HU[v] > p.TrabecularLevel)
       mask[v] = 1;
   return mask;
 }
