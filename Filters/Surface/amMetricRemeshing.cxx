@@ -1,6 +1,7 @@
 #include "amMetricRemeshing.h"
 
 #include "amProvenance.h"
+#include "amRemeshKeepInput.h"
 #include "amRemesher.h"
 #include "amSurfaceMesh.h"
 #include "amThreading.h"
@@ -21,6 +22,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -35,6 +37,7 @@ amMetricRemeshing::amMetricRemeshing()
   , HausdorffUpperBound(0)
   , InsertedPoints(0)
   , InterfacesAboveTolerance(0)
+  , InputVerticesKept(0)
 {
   amThreading::Initialize();
 }
@@ -89,21 +92,26 @@ int amMetricRemeshing::RequestData(
     }
   }
 
-  amRemesh::Remesher r;
-  r.Setup(mesh, std::move(tensors), this->Tolerance);
-  r.KeepVolumes = this->PreserveVolumes != 0;
-  // The remesher keeps what it needs of the input (its points, interfaces and curves; the
-  // tensors are moved into it): the input's topology (a quarter of the memory on a many-label
-  // input) goes now.
+  // The remesher keeps what it needs of the input (its points, interfaces and curves): the input's
+  // topology (a quarter of the memory on a many-label input) goes before it runs.
   const bool labelled = !mesh.Labels.empty();
-  mesh = amSurfaceMesh();
-  this->UpdateProgress(0.05);
-  const amRemesh::Remesher::Result result =
-    r.Run(this->NumberOfIterations, [this](double fraction) { this->UpdateProgress(fraction); });
+  const amRemesh::KeepInputRun options{ this->Tolerance, this->PreserveVolumes != 0, this->NumberOfIterations,
+    [this](double fraction) { this->UpdateProgress(fraction); },
+    [input](amSurfaceMesh& surface) {
+      std::string unused;
+      return surface.Build(input, unused);
+    } };
+  amRemesh::Remesher::Result result;
+  long long kept = 0;
+  const std::shared_ptr<amRemesh::Remesher> remesher =
+    amRemesh::RemeshKeepingTheBound(mesh, tensors, options, result, kept);
+  tensors.clear();
+  const amRemesh::Remesher& r = *remesher;
   const double h = result.Hausdorff, upper = result.UpperBound;
   this->Hausdorff = h;
   this->HausdorffUpperBound = upper;
   this->InsertedPoints = result.Inserted;
+  this->InputVerticesKept = kept;
   this->UpdateProgress(0.95);
 
   // Output: live vertices and triangles, labels and orientation kept.
@@ -182,8 +190,8 @@ int amMetricRemeshing::RequestData(
   std::ostringstream params;
   params << "Tolerance=" << this->Tolerance << " TargetSize=" << this->TargetSize
          << " NumberOfIterations=" << this->NumberOfIterations << " PreserveVolumes=" << this->PreserveVolumes
-         << " Hausdorff=" << h << " InsertedPoints=" << result.Inserted << " Collapses=" << r.Collapses()
-         << " Flips=" << r.Flips() << " Moves=" << r.Moves();
+         << " Hausdorff=" << h << " InsertedPoints=" << result.Inserted << " InputVerticesKept=" << kept
+         << " Collapses=" << r.Collapses() << " Flips=" << r.Flips() << " Moves=" << r.Moves();
   amProvenance::Record(output, input, "amMetricRemeshing", params.str());
   this->UpdateProgress(1.0);
   return 1;

@@ -27,7 +27,13 @@
  * halfway along the curve), or the far point inserted; an insertion refused because something is
  * in the way refines that instead, up to 30 rounds. Last, triangles with an angle under 10 degrees
  * that the insertions left are flipped or collapsed away under the same guards, kept only if the
- * bound and the angles end no worse.
+ * bound and the angles end no worse. Where the bound is still missed, the input's own triangles are
+ * kept there: the remeshing runs again with the input vertices near the far triangles (within a
+ * far triangle's longest edge and the tolerance of its corners) given a size far below any edge, so
+ * that every operation that would change them is refused; up to four times, adding each run's far
+ * triangles over a neighbourhood wider by their own size each time, until a run keeps the bound
+ * (taken; InputVerticesKept counts the vertices held) — else the first result stands and the
+ * warning says so.
  *
  * The achieved distance is in field data "Hausdorff" (and "HausdorffUpperBound", with the
  * sampling gap); per triangle in cell data "HausdorffDistance" (the largest distance measured on
@@ -98,6 +104,8 @@ public:
   vtkGetMacro(InsertedPoints, vtkIdType);
   /// Interfaces (label pairs) whose largest distance is above Tolerance.
   vtkGetMacro(InterfacesAboveTolerance, int);
+  /// Input vertices whose triangles were kept where the remeshing could not keep the bound.
+  vtkGetMacro(InputVerticesKept, vtkIdType);
   ///@}
 
 protected:
@@ -113,6 +121,7 @@ protected:
   double HausdorffUpperBound;
   vtkIdType InsertedPoints;
   int InterfacesAboveTolerance;
+  vtkIdType InputVerticesKept;
 
 private:
   amMetricRemeshing(const amMetricRemeshing&) = delete;

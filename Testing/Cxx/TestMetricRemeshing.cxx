@@ -504,3 +504,37 @@ TEST(MetricRemeshing, TinyFragmentsNeverBecomeTetrahedra)
   }
   EXPECT_TRUE(positive == 0 || negative == 0) << positive << " fragments one way, " << negative << " the other";
 }
+
+TEST(MetricRemeshing, WhereTheBoundCannotBeKeptTheInputTrianglesAre)
+{
+  // The phantom at 4 mm, tolerance 2 mm, sizes up to 16 mm (the main job's settings at that
+  // spacing): the first remeshing ends above the tolerance on one interface; the input's own
+  // triangles are kept there and the bound holds.
+  vtkNew<amThoraxPhantomSource> source;
+  source->SetSpacing(4, 4, 4);
+  vtkNew<amLabelSurface> surface;
+  surface->SetInputConnection(source->GetOutputPort(1));
+  surface->SetComputeTopology(false);
+  vtkNew<amSurfaceSmoothing> smooth;
+  smooth->SetInputConnection(surface->GetOutputPort());
+  vtkNew<amCurvatureMetric> metric;
+  metric->SetInputConnection(smooth->GetOutputPort());
+  metric->SetTolerance(2.0);
+  metric->SetMinimumSize(4.0);
+  metric->SetMaximumSize(16.0);
+  metric->SetAnisotropic(false);
+  vtkNew<amMetricRemeshing> remesh;
+  remesh->SetInputConnection(metric->GetOutputPort());
+  remesh->SetTolerance(2.0);
+  remesh->Update();
+  EXPECT_GT(remesh->GetInputVerticesKept(), 0);
+  EXPECT_LE(remesh->GetHausdorff(), 2.0);
+  EXPECT_EQ(remesh->GetInterfacesAboveTolerance(), 0);
+  ExpectClosedRegions(remesh->GetOutput());
+  // Measured independently: the two-sided distance between output and input.
+  vtkNew<amSurfaceDistance> distance;
+  distance->SetInputConnection(0, remesh->GetOutputPort());
+  distance->SetInputConnection(1, smooth->GetOutputPort());
+  distance->Update();
+  EXPECT_LE(distance->GetHausdorff(), remesh->GetHausdorffUpperBound() + 1e-9);
+}

@@ -1,0 +1,48 @@
+/**
+ * @file    amRemeshKeepInput.h
+ * @brief   Where the remeshing cannot keep its Hausdorff bound, the input's own triangles are kept:
+ *          the input vertices near the triangles that end beyond the tolerance are given a size far
+ *          below any edge (the collapses, flips and moves that would change them are then refused)
+ *          and the remeshing runs again.
+ */
+#ifndef amRemeshKeepInput_h
+#define amRemeshKeepInput_h
+
+#include "amRemesher.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace amRemesh
+{
+/// The input vertices (of points, the input surface's) within reach of a triangle of the remeshed
+/// surface whose distance to the input exceeds the tolerance: within that triangle's longest edge
+/// and the tolerance, times widen, of any of its corners. Marks them in keep (set to the input's
+/// size) and returns how many it marked anew.
+long long MarkNearFarTriangles(const Remesher& remeshed, const std::vector<std::array<double, 3>>& points, double near,
+  double widen, std::vector<unsigned char>& keep);
+
+/// How RemeshKeepingTheBound runs the remesher.
+struct KeepInputRun
+{
+  double Tolerance = 0.2;
+  bool KeepVolumes = true;
+  int Iterations = 3;
+  std::function<void(double)> Progress;        // 0..1 (may be empty)
+  std::function<bool(amSurfaceMesh&)> Rebuild; // the input surface again, when a run is needed
+};
+
+/// Remeshes surface (emptied before the first run, to free its memory) with the metric; where the
+/// result ends beyond the tolerance, runs again with the input vertices near the far triangles
+/// held (MarkNearFarTriangles, KeptMetric; those of every run so far, wider by one far triangle
+/// each time, up to four times) and takes the first run that keeps the bound, else the first
+/// result. Returns the remesher of the result taken, with its result and the vertices held.
+std::shared_ptr<Remesher> RemeshKeepingTheBound(amSurfaceMesh& surface, const std::vector<Mat3>& metric,
+  const KeepInputRun& options, Remesher::Result& result, long long& kept);
+
+/// The metric with the kept vertices' sizes far below any edge (a thousandth of the tolerance).
+std::vector<Mat3> KeptMetric(const std::vector<Mat3>& metric, const std::vector<unsigned char>& keep, double tolerance);
+}
+
+#endif
