@@ -84,8 +84,8 @@ def whole_mesh_row(path):
 
 
 class MainJob(AgreesWithTruth, unittest.TestCase):
-    # Deterministic outputs: the bars sit just past the README's figures (1.20 ms, 0.997).
-    activation_rms_bar = 1.5
+    # Deterministic outputs: the bars sit just past the README's figures (1.02 ms, 0.996).
+    activation_rms_bar = 1.25
     correlation_bar = 0.99
     figure_prefix = "main_job"
 
@@ -202,13 +202,13 @@ class PaperTable(unittest.TestCase):
         record(self, "paper_table.vertices", int(whole["np"]), "")
         record(self, "paper_table.tetrahedra", int(whole["ne"]), "")
         record(self, "paper_table.mean_q", float(whole["MeanQuality"]), "", 1.40)
-        record(self, "paper_table.worst_q", float(whole["MaximumQuality"]), "", 10.0)
+        record(self, "paper_table.worst_q", float(whole["MaximumQuality"]), "", 8.0)
         record(self, "paper_table.smallest_dihedral", float(whole["MinimumDihedralAngle_deg"]), "deg", 10.0)
         record(self, "paper_table.seconds", figures["seconds"], "s")
         record(self, "paper_table.mesh_seconds", sum(v for k, v in stages.items() if k in (
             "surface", "smooth", "metric", "remesh", "tets", "quality")), "s")
         self.assertLessEqual(float(whole["MeanQuality"]), 1.40)
-        self.assertLessEqual(float(whole["MaximumQuality"]), 10.0)
+        self.assertLessEqual(float(whole["MaximumQuality"]), 8.0)
         self.assertGreaterEqual(float(whole["MinimumDihedralAngle_deg"]), 10.0)
         self.assertEqual(int(whole["InvertedTetrahedra"]), 0)
 
