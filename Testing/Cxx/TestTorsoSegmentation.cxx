@@ -525,6 +525,27 @@ TEST(TorsoTissues, GasBelowTheDiaphragmIsNotLung)
   }
 }
 
+namespace
+{
+// Voxels of each truth class (0, 1, 2) and those of them labelled bone (spine or ribs).
+struct BoneCount
+{
+  std::size_t Voxels[3] = { 0, 0, 0 };
+  std::size_t Bone[3] = { 0, 0, 0 };
+};
+
+BoneCount CountBone(const std::vector<std::uint8_t>& labels, const std::vector<std::uint8_t>& truth)
+{
+  BoneCount count;
+  for (std::size_t v = 0; v < labels.size(); ++v)
+  {
+    ++count.Voxels[truth[v]];
+    count.Bone[truth[v]] += labels[v] == amThoraxPhantomModel::Spine || labels[v] == amThoraxPhantomModel::Ribs;
+  }
+  return count;
+}
+}
+
 TEST(TorsoTissues, TrabecularBoneIsWhatTheCortexEnclosesInAnySlice)
 {
   // A vertebral body: a cylinder (radius 10 mm, 20 mm tall, axis along k) of cortex 1.5 mm thick
@@ -559,15 +580,9 @@ TEST(TorsoTissues, TrabecularBoneIsWhatTheCortexEnclosesInAnySlice)
   p.TrabecularLevel = 40.0 + 20.0; // soft tissue's centre and one deviation
   std::vector<std::uint8_t> labels;
   amTorso::Tissues(g, classes, worldX, p, labels);
-  std::size_t marrow = 0, marrowBone = 0, fluid = 0, fluidBone = 0;
-  for (std::size_t v = 0; v < g.Size(); ++v)
-  {
-    const bool bone = labels[v] == amThoraxPhantomModel::Spine || labels[v] == amThoraxPhantomModel::Ribs;
-    marrow += truth[v] == 1;
-    marrowBone += truth[v] == 1 && bone;
-    fluid += truth[v] == 2;
-    fluidBone += truth[v] == 2 && bone;
-  }
+  const BoneCount count = CountBone(labels, truth);
+  const std::size_t marrow = count.Voxels[1], marrowBone = count.Bone[1], fluid = count.Voxels[2],
+                    fluidBone = count.Bone[2];
   ASSERT_GT(marrow, 3000u);
   EXPECT_GT(marrowBone, 0.99 * marrow); // closed in sagittal and coronal slices, not in axial ones
   EXPECT_EQ(fluidBone, 0u);             // enclosed, but darker than marrow
@@ -644,15 +659,9 @@ TEST(TorsoTissues, ContrastConnectedToThePoolsIsNeverBone)
     p.MarrowLevel = 200.0 - 1.0;
     std::vector<std::uint8_t> labels;
     amTorso::Tissues(g, classes, worldX, p, labels);
-    std::size_t vertebra = 0, vertebraBone = 0, bolusBone = 0, otherBone = 0;
-    for (std::size_t v = 0; v < g.Size(); ++v)
-    {
-      const bool bone = labels[v] == amThoraxPhantomModel::Spine || labels[v] == amThoraxPhantomModel::Ribs;
-      vertebra += truth[v] == 1;
-      vertebraBone += truth[v] == 1 && bone;
-      bolusBone += truth[v] == 2 && bone;
-      otherBone += truth[v] == 0 && bone;
-    }
+    const BoneCount count = CountBone(labels, truth);
+    const std::size_t vertebra = count.Voxels[1], vertebraBone = count.Bone[1], bolusBone = count.Bone[2],
+                      otherBone = count.Bone[0];
     EXPECT_EQ(bolusBone, 0u) << "clipped " << clipped;
     EXPECT_EQ(otherBone, 0u) << "clipped " << clipped;
     // Unclipped, the marrow is what the cortex encloses; clipped, what it reaches.

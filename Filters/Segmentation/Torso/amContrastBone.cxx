@@ -25,30 +25,6 @@ amVoxelMask amTorso::ContrastVessels(const amVoxelGrid& g, const float* hu, floa
   return vessels;
 }
 
-amVoxelMask amTorso::Grown(const amVoxelGrid& g, const amVoxelMask& mask, int rings)
-{
-  // Ring by ring from the last ring's voxels only: the cost follows the mask, not the grid.
-  amVoxelMask grown = mask;
-  std::vector<std::size_t> front, next;
-  for (std::size_t v = 0; v < mask.size(); ++v)
-    if (mask[v])
-      front.push_back(v);
-  for (int r = 0; r < rings; ++r)
-  {
-    next.clear();
-    for (const std::size_t v : front)
-      g.AllNeighbours(v, [&](std::size_t w) {
-        if (!grown[w])
-        {
-          grown[w] = 1;
-          next.push_back(w);
-        }
-      });
-    front.swap(next);
-  }
-  return grown;
-}
-
 namespace
 {
 bool LungLike(std::uint8_t c)

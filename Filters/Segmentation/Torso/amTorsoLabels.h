@@ -80,9 +80,6 @@ struct TissueParameters
 /// a bone through a voxel-thin contact does not carry the bone along).
 amVoxelMask ContrastVessels(const amVoxelGrid& g, const float* hu, float level, const amVoxelMask& pools);
 
-/// The mask grown by rings of 26-neighbours.
-amVoxelMask Grown(const amVoxelGrid& g, const amVoxelMask& mask, int rings);
-
 /// Bone where the window clips it (TissueParameters::BoneClipped): outside the exterior and
 /// away from nearVessels.
 amVoxelMask ClippedBone(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& exterior,

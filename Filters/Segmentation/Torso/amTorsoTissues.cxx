@@ -103,7 +103,7 @@ amVoxelMask BoneMask(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
   const amTorso::TissueParameters& p)
 {
   const std::size_t n = classes.size();
-  const amVoxelMask nearVessels = p.Vessels ? amTorso::Grown(g, *p.Vessels, 2) : amVoxelMask(n, 0);
+  const amVoxelMask nearVessels = p.Vessels ? amVoxel::Dilate26(g, *p.Vessels, 2) : amVoxelMask(n, 0);
   amVoxelMask mask(n);
   if (p.HU && p.BoneClipped)
     mask = amTorso::ClippedBone(g, classes, exterior, nearVessels, p);

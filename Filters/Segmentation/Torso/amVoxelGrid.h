@@ -88,6 +88,9 @@ amVoxelMask Erode26(const amVoxelGrid& g, const amVoxelMask& mask);
 /// Opening by the 6-neighbour cross: removes sheets and threads one voxel thick.
 amVoxelMask Open6(const amVoxelGrid& g, const amVoxelMask& mask);
 
+/// Dilation by rings of 26-neighbours (rings of them).
+amVoxelMask Dilate26(const amVoxelGrid& g, const amVoxelMask& mask, int rings);
+
 /// Separable Gaussian of standard deviation sigma (mm) in place, truncated at 3 sigma; the grid's
 /// border is extended by its edge values.
 void Gaussian(const amVoxelGrid& g, std::vector<float>& field, double sigma);

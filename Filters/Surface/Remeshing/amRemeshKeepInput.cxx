@@ -5,18 +5,13 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkStaticPointLocator.h"
 
 #include <algorithm>
 
 namespace amRemesh
 {
-long long MarkNearFarTriangles(const Remesher& remeshed, const std::vector<std::array<double, 3>>& points, double near,
-  double widen, std::vector<unsigned char>& keep)
+vtkSmartPointer<vtkStaticPointLocator> InputLocator(const std::vector<std::array<double, 3>>& points)
 {
-  const Surface& s = remeshed.Mesh;
-  const std::vector<double>& local = remeshed.Hausdorff.TriangleDistances();
-  const double eps = remeshed.In.Eps;
   vtkNew<vtkPoints> cloud;
   cloud->SetDataTypeToDouble();
   cloud->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
@@ -24,14 +19,23 @@ long long MarkNearFarTriangles(const Remesher& remeshed, const std::vector<std::
     cloud->SetPoint(static_cast<vtkIdType>(v), points[v].data());
   vtkNew<vtkPolyData> holder;
   holder->SetPoints(cloud);
-  vtkNew<vtkStaticPointLocator> locator;
+  auto locator = vtkSmartPointer<vtkStaticPointLocator>::New();
   locator->SetDataSet(holder);
   locator->BuildLocator();
+  return locator;
+}
+
+long long MarkNearFarTriangles(
+  const Remesher& remeshed, vtkStaticPointLocator* input, double widen, std::vector<unsigned char>& keep)
+{
+  const Surface& s = remeshed.Mesh;
+  const std::vector<double>& local = remeshed.Hausdorff.TriangleDistances();
+  const double eps = remeshed.In.Eps;
   vtkNew<vtkIdList> found;
   long long marked = 0;
   for (size_t t = 0; t < s.T.size() && t < local.size(); ++t)
   {
-    if (!s.T[t].Alive || !(local[t] > near * eps))
+    if (!s.T[t].Alive || !(local[t] > eps))
       continue;
     double longest = 0;
     for (int k = 0; k < 3; ++k)
@@ -39,7 +43,7 @@ long long MarkNearFarTriangles(const Remesher& remeshed, const std::vector<std::
     const double reach = widen * (longest + eps);
     for (int k = 0; k < 3; ++k)
     {
-      locator->FindPointsWithinRadius(reach, s.P[s.T[t].V[k]].data(), found);
+      input->FindPointsWithinRadius(reach, s.P[s.T[t].V[k]].data(), found);
       for (vtkIdType i = 0; i < found->GetNumberOfIds(); ++i)
       {
         unsigned char& mark = keep[static_cast<size_t>(found->GetId(i))];
@@ -85,10 +89,11 @@ std::shared_ptr<Remesher> RemeshKeepingTheBound(amSurfaceMesh& surface, const st
   // A run is taken only when it keeps the bound: one that comes closer without keeping it changes
   // more of the surface for no guarantee.
   std::vector<unsigned char> keep(surface.Points.size(), 0);
+  const vtkSmartPointer<vtkStaticPointLocator> input = InputLocator(surface.Points);
   std::shared_ptr<Remesher> last = remesher;
   for (int widen = 1; widen <= 4; ++widen)
   {
-    if (MarkNearFarTriangles(*last, surface.Points, 1.0, widen, keep) == 0)
+    if (MarkNearFarTriangles(*last, input, widen, keep) == 0)
       break;
     last = setup(surface, KeptMetric(metric, keep, options.Tolerance));
     const Remesher::Result again = run(*last, 0.5 + 0.1 * (widen - 1), 0.1);

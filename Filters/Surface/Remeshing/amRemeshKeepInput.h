@@ -10,18 +10,24 @@
 
 #include "amRemesher.h"
 
+#include "vtkSmartPointer.h"
+#include "vtkStaticPointLocator.h"
+
 #include <functional>
 #include <memory>
 #include <vector>
 
 namespace amRemesh
 {
-/// The input vertices (of points, the input surface's) within reach of a triangle of the remeshed
+/// A locator over the input surface's points, for MarkNearFarTriangles.
+vtkSmartPointer<vtkStaticPointLocator> InputLocator(const std::vector<std::array<double, 3>>& points);
+
+/// The input vertices (found by input, InputLocator's) within reach of a triangle of the remeshed
 /// surface whose distance to the input exceeds the tolerance: within that triangle's longest edge
-/// and the tolerance, times widen, of any of its corners. Marks them in keep (set to the input's
-/// size) and returns how many it marked anew.
-long long MarkNearFarTriangles(const Remesher& remeshed, const std::vector<std::array<double, 3>>& points, double near,
-  double widen, std::vector<unsigned char>& keep);
+/// and the tolerance, times widen, of any of its corners. Marks them in keep (sized as the input's
+/// points) and returns how many it marked anew.
+long long MarkNearFarTriangles(
+  const Remesher& remeshed, vtkStaticPointLocator* input, double widen, std::vector<unsigned char>& keep);
 
 /// How RemeshKeepingTheBound runs the remesher.
 struct KeepInputRun
