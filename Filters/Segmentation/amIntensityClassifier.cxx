@@ -42,8 +42,9 @@ template<typename F>
 void FaceNeighbours(const int dims[3], vtkIdType id, F&& f)
 {
   const vtkIdType sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
-  const int i = static_cast<int>(id % dims[0]), j = static_cast<int>((id / dims[0]) % dims[1]),
-            k = static_cast<int>(id / sz);
+  const vtkIdType row = id / dims[0];
+  const int i = static_cast<int>(id - row * dims[0]), j = static_cast<int>(row % dims[1]),
+            k = static_cast<int>(row / dims[1]);
   if (i > 0)
     f(id - 1);
   if (i < dims[0] - 1)
@@ -59,13 +60,13 @@ void FaceNeighbours(const int dims[3], vtkIdType id, F&& f)
 }
 
 // The voxels that open() lets through and that connect (across faces) to the sides of the first
-// two index axes.
+// two index axes. A scan-line flood: runs along the first axis, each seeding the rows beside it.
 template<typename Open>
 std::vector<unsigned char> FloodFromSides(const int dims[3], Open&& open)
 {
   const vtkIdType sy = dims[0], sz = static_cast<vtkIdType>(dims[0]) * dims[1];
   std::vector<unsigned char> reached(static_cast<size_t>(sz * dims[2]), 0);
-  std::vector<vtkIdType> front;
+  std::vector<vtkIdType> front; // a voxel from which to fill a run
   for (int k = 0; k < dims[2]; ++k)
     for (int j = 0; j < dims[1]; ++j)
       for (int i = 0; i < dims[0]; ++i)
@@ -73,22 +74,42 @@ std::vector<unsigned char> FloodFromSides(const int dims[3], Open&& open)
         {
           const vtkIdType id = k * sz + j * sy + i;
           if (open(id))
-          {
-            reached[id] = 1;
             front.push_back(id);
-          }
         }
   while (!front.empty())
   {
     const vtkIdType id = front.back();
     front.pop_back();
-    FaceNeighbours(dims, id, [&](vtkIdType q) {
-      if (!reached[q] && open(q))
+    if (reached[id])
+      continue;
+    const vtkIdType rowStart = id - id % sy;
+    vtkIdType lo = id, hi = id;
+    while (lo > rowStart && !reached[lo - 1] && open(lo - 1))
+      --lo;
+    while (hi + 1 < rowStart + sy && !reached[hi + 1] && open(hi + 1))
+      ++hi;
+    std::fill(reached.begin() + lo, reached.begin() + hi + 1, 1);
+    const vtkIdType row = id / sy;
+    const int j = static_cast<int>(row % dims[1]), k = static_cast<int>(row / dims[1]);
+    // The rows beside the run: one voxel of each open stretch seeds it.
+    const auto seedRow = [&](vtkIdType offset) {
+      bool inside = false;
+      for (vtkIdType q = lo + offset; q <= hi + offset; ++q)
       {
-        reached[q] = 1;
-        front.push_back(q);
+        const bool free = !reached[q] && open(q);
+        if (free && !inside)
+          front.push_back(q);
+        inside = free;
       }
-    });
+    };
+    if (j > 0)
+      seedRow(-sy);
+    if (j < dims[1] - 1)
+      seedRow(sy);
+    if (k > 0)
+      seedRow(-sz);
+    if (k < dims[2] - 1)
+      seedRow(sz);
   }
   return reached;
 }
@@ -102,9 +123,11 @@ std::vector<unsigned char> Body(const int dims[3], const std::vector<double>& va
   for (int ring = 0; ring < 3; ++ring)
   {
     std::vector<unsigned char> grown = outside;
-    for (vtkIdType id = 0; id < static_cast<vtkIdType>(values.size()); ++id)
-      if (!outside[id] && values[id] < -500.0)
-        FaceNeighbours(dims, id, [&](vtkIdType q) { grown[id] = grown[id] || outside[q]; });
+    vtkSMPTools::For(0, static_cast<vtkIdType>(values.size()), [&](vtkIdType id0, vtkIdType id1) {
+      for (vtkIdType id = id0; id < id1; ++id)
+        if (!outside[id] && values[id] < -500.0)
+          FaceNeighbours(dims, id, [&](vtkIdType q) { grown[id] = grown[id] || outside[q]; });
+    });
     outside.swap(grown);
   }
   for (auto& v : outside)

@@ -125,14 +125,72 @@ void RegionAround(const std::vector<std::array<double, 3>>& seeds, double margin
 std::vector<float> Region(vtkDataArray* scalars, const int dims[3], const int lo[3], const int rd[3])
 {
   std::vector<float> roi(static_cast<size_t>(rd[0]) * rd[1] * rd[2]);
-  for (int k = 0; k < rd[2]; ++k)
-    for (int j = 0; j < rd[1]; ++j)
-      for (int i = 0; i < rd[0]; ++i)
+  vtkSMPTools::For(0, rd[2], [&](vtkIdType k0, vtkIdType k1) {
+    for (int k = static_cast<int>(k0); k < k1; ++k)
+      for (int j = 0; j < rd[1]; ++j)
       {
-        const vtkIdType id = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + (i + lo[0]);
-        roi[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i] = static_cast<float>(scalars->GetComponent(id, 0));
+        const vtkIdType row = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + lo[0];
+        float* out = roi.data() + (static_cast<size_t>(k) * rd[1] + j) * rd[0];
+        for (int i = 0; i < rd[0]; ++i)
+          out[i] = static_cast<float>(scalars->GetComponent(row + i, 0));
       }
+  });
   return roi;
+}
+
+// The part of a box's values (box at lo, size rd) in a box inside it (at sub, size sd).
+std::vector<float> SubRegion(
+  const std::vector<float>& values, const int lo[3], const int rd[3], const int sub[3], const int sd[3])
+{
+  std::vector<float> out(static_cast<size_t>(sd[0]) * sd[1] * sd[2]);
+  for (int k = 0; k < sd[2]; ++k)
+    for (int j = 0; j < sd[1]; ++j)
+    {
+      const float* from = values.data() +
+        (static_cast<size_t>(k + sub[2] - lo[2]) * rd[1] + (j + sub[1] - lo[1])) * rd[0] + (sub[0] - lo[0]);
+      std::copy(from, from + sd[0], out.data() + (static_cast<size_t>(k) * sd[1] + j) * sd[0]);
+    }
+  return out;
+}
+
+// One organ's contour: its region of interest, its tracker, and how it ended.
+struct Organ
+{
+  int Lo[3], Size[3];
+  std::unique_ptr<amSnakeTracker> Tracker;
+  bool Segmented = false;
+  long AirSeed = -1; // a seed found in air, before any contour
+};
+
+// The organs' regions overlap (each reaches MaximumDistance from its seeds): the box that holds
+// them all (lo, size) is smoothed once, on every core, and each organ takes its part.
+std::vector<float> SmoothedBoxOfAll(const std::vector<Organ>& organs, vtkDataArray* scalars, const int dims[3],
+  const double spacing[3], double sigma, int lo[3], int size[3])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    int hi = 0;
+    lo[a] = dims[a];
+    for (const Organ& organ : organs)
+    {
+      lo[a] = std::min(lo[a], organ.Lo[a]);
+      hi = std::max(hi, organ.Lo[a] + organ.Size[a]);
+    }
+    size[a] = hi - lo[a];
+  }
+  return amSnakeTracker::Smooth(size, spacing, sigma, Region(scalars, dims, lo, size));
+}
+
+// The organs, largest region first, so that the last one to start is a small one.
+std::vector<size_t> LargestFirst(const std::vector<Organ>& organs)
+{
+  std::vector<size_t> schedule(organs.size());
+  std::iota(schedule.begin(), schedule.end(), 0);
+  auto voxels = [&](size_t li) {
+    return static_cast<double>(organs[li].Size[0]) * organs[li].Size[1] * organs[li].Size[2];
+  };
+  std::stable_sort(schedule.begin(), schedule.end(), [&](size_t a, size_t b) { return voxels(a) > voxels(b); });
+  return schedule;
 }
 
 // The seeds' labels in the order they first appear: their precedence.
@@ -355,13 +413,6 @@ int amSnakeSegmentation::RequestData(
   // Each organ's contour is independent of the others (its own region of interest, its own
   // intensity interval), so the organs run at once, one per core; the pasting below keeps the
   // precedence of their order.
-  struct Organ
-  {
-    int Lo[3], Size[3];
-    std::unique_ptr<amSnakeTracker> Tracker;
-    bool Segmented = false;
-    long AirSeed = -1; // a seed found in air, before any contour
-  };
   std::vector<Organ> organs(order.size());
   std::vector<std::vector<std::array<double, 3>>> organSeeds(order.size());
   for (size_t li = 0; li < order.size(); ++li)
@@ -372,13 +423,9 @@ int amSnakeSegmentation::RequestData(
     // 1. Region of interest around the seeds.
     RegionAround(organSeeds[li], this->MaximumDistance, spacing, dims, organs[li].Lo, organs[li].Size);
   }
-  // The largest regions first, so that the last one to start is a small one.
-  std::vector<size_t> schedule(order.size());
-  std::iota(schedule.begin(), schedule.end(), 0);
-  auto voxels = [&](size_t li) {
-    return static_cast<double>(organs[li].Size[0]) * organs[li].Size[1] * organs[li].Size[2];
-  };
-  std::stable_sort(schedule.begin(), schedule.end(), [&](size_t a, size_t b) { return voxels(a) > voxels(b); });
+  int ulo[3], urd[3];
+  const std::vector<float> smoothed = SmoothedBoxOfAll(organs, scalars, dims, spacing, tp.SmoothingSigma, ulo, urd);
+  const std::vector<size_t> schedule = LargestFirst(organs);
   amConcurrentTasks::Run(
     order.size(), 0,
     [&](size_t task, std::atomic<double>& fraction, const std::atomic<bool>& abort) {
@@ -387,10 +434,9 @@ int amSnakeSegmentation::RequestData(
       const std::vector<std::array<double, 3>>& mine = organSeeds[li];
       const int* lo = organ.Lo;
       const int* rd = organ.Size;
-      const std::vector<float> roi = Region(scalars, dims, lo, rd);
       organ.Tracker.reset(new amSnakeTracker(tp, spacing));
       amSnakeTracker& tracker = *organ.Tracker;
-      tracker.SetRegion(lo, rd, roi);
+      tracker.SetSmoothedRegion(lo, rd, SubRegion(smoothed, ulo, urd, lo, rd));
       fraction = 0.1;
       // 2. Intensity statistics in the seed balls; a seed in air (a CT in HU) is a mistake.
       tracker.MeasureSeeds(mine);

@@ -22,21 +22,30 @@ amSnakeTracker::amSnakeTracker(const Parameters& parameters, const double spacin
 
 void amSnakeTracker::SetRegion(const int lo[3], const int size[3], const std::vector<float>& intensities)
 {
+  this->SetSmoothedRegion(lo, size, Smooth(size, this->Spacing, this->P.SmoothingSigma, intensities));
+}
+
+void amSnakeTracker::SetSmoothedRegion(const int lo[3], const int size[3], std::vector<float> smoothed)
+{
   std::copy(lo, lo + 3, this->Lo);
   std::copy(size, size + 3, this->Size);
-  if (this->P.SmoothingSigma > 0)
-  {
-    auto roi = NewImage<FloatImage<3>>(size, this->Spacing);
-    std::copy(intensities.begin(), intensities.end(), roi->GetBufferPointer());
-    auto smooth = itk::SmoothingRecursiveGaussianImageFilter<FloatImage<3>, FloatImage<3>>::New();
-    smooth->SetInput(roi);
-    smooth->SetSigma(this->P.SmoothingSigma);
-    smooth->Update();
-    const float* f = smooth->GetOutput()->GetBufferPointer();
-    this->Feature.assign(f, f + intensities.size());
-  }
-  else
-    this->Feature = intensities;
+  this->Feature = std::move(smoothed);
+}
+
+std::vector<float> amSnakeTracker::Smooth(
+  const int size[3], const double spacing[3], double sigma, std::vector<float> values)
+{
+  if (sigma <= 0)
+    return values;
+  auto box = NewImage<FloatImage<3>>(size, spacing);
+  std::copy(values.begin(), values.end(), box->GetBufferPointer());
+  auto smooth = itk::SmoothingRecursiveGaussianImageFilter<FloatImage<3>, FloatImage<3>>::New();
+  smooth->SetInput(box);
+  smooth->SetSigma(sigma);
+  smooth->Update();
+  const float* f = smooth->GetOutput()->GetBufferPointer();
+  values.assign(f, f + values.size());
+  return values;
 }
 
 void amSnakeTracker::MeasureSeeds(const std::vector<std::array<double, 3>>& seeds)

@@ -75,6 +75,11 @@ public:
   /// The region of interest: its first voxel's index in the scan (lo), its size, and its
   /// intensities (x fastest); smoothed here by SmoothingSigma.
   void SetRegion(const int lo[3], const int size[3], const std::vector<float>& intensities);
+  /// The region of interest with intensities already smoothed (Smooth): organs whose regions
+  /// overlap share one smoothing of the box that holds them all.
+  void SetSmoothedRegion(const int lo[3], const int size[3], std::vector<float> smoothed);
+  /// The intensities of a box (x fastest) smoothed by a Gaussian of sigma mm (none when sigma <= 0).
+  static std::vector<float> Smooth(const int size[3], const double spacing[3], double sigma, std::vector<float> values);
   /// The organ's seeds (continuous indices in the scan): each one's ball statistics, and the
   /// pooled mean and standard deviation.
   void MeasureSeeds(const std::vector<std::array<double, 3>>& seeds);

@@ -271,34 +271,6 @@ TEST(TorsoSegmentation, BadInputGivesClearErrors)
   EXPECT_TRUE(errors->ErrorContains("empty")) << errors->AllErrors();
 }
 
-TEST(VoxelGrid, DistanceIsExactOnAnAnisotropicGrid)
-{
-  amVoxelGrid g;
-  g.N[0] = 9, g.N[1] = 7, g.N[2] = 5;
-  g.Spacing[0] = 0.7, g.Spacing[1] = 1.3, g.Spacing[2] = 2.5;
-  std::mt19937 random(3);
-  amVoxelMask mask(g.Size(), 0);
-  for (auto& m : mask)
-    m = random() % 17 == 0;
-  const std::vector<float> d = amVoxel::Distance(g, mask);
-  for (std::size_t v = 0; v < g.Size(); ++v)
-  {
-    int a[3], b[3];
-    g.Ijk(v, a);
-    double best = std::numeric_limits<double>::max();
-    for (std::size_t w = 0; w < g.Size(); ++w)
-      if (mask[w])
-      {
-        g.Ijk(w, b);
-        double s = 0;
-        for (int c = 0; c < 3; ++c)
-          s += std::pow((a[c] - b[c]) * g.Spacing[c], 2);
-        best = std::min(best, std::sqrt(s));
-      }
-    ASSERT_NEAR(d[v], best, 1e-4) << "voxel " << v;
-  }
-}
-
 TEST(VoxelGrid, HolesSpecksAndHandOver)
 {
   amVoxelGrid g;

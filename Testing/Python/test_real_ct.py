@@ -194,9 +194,11 @@ class ChestCTToECG(unittest.TestCase):
         heart.SetFileName(os.path.join(out, "chest_heart_0100.vtu"))
         heart.Update()
         activation = vtk_to_numpy(heart.GetOutput().GetPointData().GetArray("ActivationTime"))
-        # The QRS spans the activation: all but its last thousandth of the nodes (a node or two of a
-        # coarse mesh, late behind a long edge, move with the mesh and leave no mark on the leads).
-        self.assertLess(abs(figures["QRS ms"] - np.percentile(activation, 99.9)), 8.0, activation.max())
+        # The QRS spans the activation: at least all but its last thousandth of the nodes, at most all
+        # of them (a node or two of a coarse mesh, late behind a long edge, move with the mesh and may
+        # or may not leave a mark on the leads).
+        self.assertGreater(figures["QRS ms"], np.percentile(activation, 99.9) - 8.0, activation.max())
+        self.assertLess(figures["QRS ms"], activation.max() + 8.0, np.percentile(activation, 99.9))
         leads_order = ("I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6")
         record(self, "chest_ct.qrs", figures["QRS ms"], "ms", [80, 120])
         record(self, "chest_ct.activation", float(activation.max()), "ms")

@@ -69,7 +69,7 @@ amVoxelMask amTorso::ClippedBone(const amVoxelGrid& g, const std::vector<std::ui
   DropPiecesInLung(g, classes, bone);
   // The marrow: voxels brighter than MarrowLevel reached from the cortex through such voxels,
   // within MarrowReach of it.
-  const std::vector<float> reach = amVoxel::Distance(g, bone);
+  const std::vector<float> reach = amVoxel::DistanceWithin(g, bone, p.MarrowReach);
   std::deque<std::size_t> front;
   for (std::size_t v = 0; v < n; ++v)
     if (bone[v])

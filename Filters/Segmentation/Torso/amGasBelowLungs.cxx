@@ -10,10 +10,7 @@ amVoxelMask amTorso::GasBelowLungs(const amVoxelGrid& g, const amVoxelMask& air,
   amVoxelMask below(n, 0);
   if (superiorAxis < 0 || superiorAxis > 2)
     return below;
-  amVoxelMask outside(n);
-  for (std::size_t v = 0; v < n; ++v)
-    outside[v] = !air[v];
-  const std::vector<float> depth = amVoxel::Distance(g, outside);
+  const std::vector<float> depth = amVoxel::Depth(g, air);
   // A part of the air joined to the rest by a neck two voxels thinner than its own deepest point
   // is a basin of its own (the lungs are thick, the passages between them and the gas below the
   // diaphragm thin).

@@ -8,10 +8,7 @@ bool amTorso::SplitJoinedLungs(
   const amVoxelGrid& g, const amVoxelMask& lungs, std::size_t minimumVoxels, std::vector<std::uint8_t>& side)
 {
   const std::size_t n = lungs.size();
-  amVoxelMask outside(n);
-  for (std::size_t v = 0; v < n; ++v)
-    outside[v] = !lungs[v];
-  const std::vector<float> depth = amVoxel::Distance(g, outside);
+  const std::vector<float> depth = amVoxel::Depth(g, lungs);
   const double step = std::max({ g.Spacing[0], g.Spacing[1], g.Spacing[2] });
   std::size_t total = 0;
   for (const auto l : lungs)

@@ -19,7 +19,7 @@ amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
     amVoxelMask body(classes.size());
     for (std::size_t v = 0; v < classes.size(); ++v)
       body[v] = !air[v];
-    fromBody = amVoxel::Distance(g, body);
+    fromBody = amVoxel::DistanceWithin(g, body, gap);
     for (std::size_t v = 0; v < classes.size(); ++v)
       air[v] = air[v] && fromBody[v] > gap;
   }
@@ -44,7 +44,7 @@ amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
   if (gap > 0.0)
   {
     // Back to the body's surface: the air within the gap of the outside air is outside too.
-    const std::vector<float> fromOutside = amVoxel::Distance(g, exterior);
+    const std::vector<float> fromOutside = amVoxel::DistanceWithin(g, exterior, gap);
     for (std::size_t v = 0; v < classes.size(); ++v)
       exterior[v] = classes[v] == amTorso::AirClass && fromOutside[v] <= gap;
   }
@@ -75,10 +75,7 @@ std::vector<int> LungCandidates(const amVoxelGrid& g, const std::vector<std::uin
   const amVoxelMask& lungs, const std::vector<int>& id, const std::vector<std::size_t>& sizes, bool gasIsNotLung)
 {
   const std::size_t n = lungs.size();
-  amVoxelMask other(n);
-  for (std::size_t v = 0; v < n; ++v)
-    other[v] = !lungs[v];
-  const std::vector<float> depth = amVoxel::Distance(g, other);
+  const std::vector<float> depth = amVoxel::Depth(g, lungs);
   const double thick = 2.0 * std::max({ g.Spacing[0], g.Spacing[1], g.Spacing[2] });
   std::vector<std::size_t> deep(sizes.size(), 0), parenchyma(sizes.size(), 0);
   for (std::size_t v = 0; v < n; ++v)
@@ -178,14 +175,11 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   {
     // Opening by a ball: the lungs are thick, the fat that reads as air beside them (below a
     // window that starts above fat) is a layer a few mm thick.
-    amVoxelMask other(n);
-    for (std::size_t v = 0; v < n; ++v)
-      other[v] = !mask[v];
-    const std::vector<float> depth = amVoxel::Distance(g, other);
+    const std::vector<float> depth = amVoxel::Depth(g, mask);
     amVoxelMask core(n);
     for (std::size_t v = 0; v < n; ++v)
       core[v] = depth[v] > p.LungOpening;
-    const std::vector<float> fromCore = amVoxel::Distance(g, core);
+    const std::vector<float> fromCore = amVoxel::DistanceWithin(g, core, p.LungOpening);
     for (std::size_t v = 0; v < n; ++v)
       lungs[v] = mask[v] && fromCore[v] <= p.LungOpening;
   }

@@ -110,6 +110,14 @@ double GaussianForNoise(const amVoxelGrid& g, double noise, double target);
 /// a large value everywhere when the mask is empty). Felzenszwalb-Huttenlocher, per axis.
 std::vector<float> Distance(const amVoxelGrid& g, const amVoxelMask& mask);
 
+/// Distance (as Distance) where it is at most reach (mm), the largest float beyond: computed over
+/// the mask's box grown by reach alone.
+std::vector<float> DistanceWithin(const amVoxelGrid& g, const amVoxelMask& mask, double reach);
+
+/// The depth of each voxel of the region: its distance (mm) to the nearest voxel outside it (0
+/// outside; the grid's border is not outside). Distance of the complement, over the region's box.
+std::vector<float> Depth(const amVoxelGrid& g, const amVoxelMask& region);
+
 /// The basins of a depth map over the mask (e.g. the distance to the mask's outside): a watershed
 /// that floods from the deepest voxels down, 6-connected. Where two floods meet they merge unless
 /// each has risen at least `dynamic` (the depth's unit) above the level where they meet, so a

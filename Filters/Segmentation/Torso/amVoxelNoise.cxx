@@ -11,9 +11,14 @@ double amVoxel::NoiseLevel(const amVoxelGrid& g, const float* values, float floo
   // variance); the few sharp edges left are outliers to the median.
   std::vector<float> d;
   d.reserve(g.Size() / 4);
-  for (std::size_t v = 1; v + 1 < g.Size(); ++v)
-    if (v % g.N[0] != 0 && (v + 1) % g.N[0] != 0 && values[v - 1] > floor && values[v] > floor && values[v + 1] > floor)
-      d.push_back(std::fabs(values[v - 1] - 2.0f * values[v] + values[v + 1]));
+  const std::size_t rows = g.Size() / g.N[0];
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    const float* row = values + r * g.N[0];
+    for (int i = 1; i + 1 < g.N[0]; ++i)
+      if (row[i - 1] > floor && row[i] > floor && row[i + 1] > floor)
+        d.push_back(std::fabs(row[i - 1] - 2.0f * row[i] + row[i + 1]));
+  }
   if (d.empty())
     return 0.0;
   const auto mid = d.begin() + d.size() / 2;
