@@ -540,10 +540,12 @@ int amTorsoSegmentation::RequestData(
   this->UpdateProgress(0.7);
 
   amVoxel::HandOver(grid, labels, PartialVolumeRefusals(classTable, hu->GetPointer(0)));
+  // Organs are one piece each; the ribs, fat and soft tissue are many, and so are the vertebrae
+  // once the ribs joining them are parted from them.
   std::vector<bool> single(256, false);
   for (int l = 1; l < 255; ++l)
-    single[l] =
-      l != amThoraxPhantomModel::SoftTissue && l != amThoraxPhantomModel::Fat && l != amThoraxPhantomModel::Ribs;
+    single[l] = l != amThoraxPhantomModel::SoftTissue && l != amThoraxPhantomModel::Fat &&
+      l != amThoraxPhantomModel::Ribs && l != amThoraxPhantomModel::Spine;
   amVoxel::DropSmallComponents(grid, labels, minimumVoxels, single);
   this->UpdateProgress(0.9);
 

@@ -44,8 +44,13 @@
  *    the scan opened by the 6-neighbour cross) nor the two voxels around it; where InputWindow's
  *    ceiling lies below cortical bone (700 HU), bone is the cortex (two deviations above the blood's
  *    centre) away from that blood and not bordered mostly by lung, and the marrow it reaches
- *    within 12 mm (brighter than the vessels' level); the largest bone component is the spine,
- *    every other one is rib (or other bone);
+ *    within 12 mm (brighter than the vessels' level). The spine is the vertebral column within the
+ *    largest bone component: slice by slice across the head-feet axis, the bone within 35 mm of
+ *    the column's centre along the left-right axis (the median of the deepest bone within 60 mm of
+ *    the body's centre and 20 mm above and below: the vertebral bodies), in pieces that hold a
+ *    vertebral body, and the pieces beyond that end within 20 mm (transverse processes); the ribs
+ *    joined to the vertebrae at their joints, and every other bone component, are ribs (or other
+ *    bone);
  * 5. the organs of input 1 are written over these;
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
  *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a
@@ -69,7 +74,7 @@
  *    lung when it is less than half air, brighter than half-way from the lung class to soft tissue,
  *    nor to bone when darker than soft tissue, while another label reaches it); components
  *    smaller than MinimumComponentVolume are handed to their neighbours the same way, and every
- *    organ but soft tissue, fat and ribs keeps only its largest component.
+ *    organ but soft tissue, fat, spine and ribs keeps only its largest component.
  * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split at the
  * mid-plane, no blood pools (no myocardium), pools no brighter than the wall, a pool at the image's border (a
  * scan that cuts the heart), an empty myocardium, a label of input 1 lost.

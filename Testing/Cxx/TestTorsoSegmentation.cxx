@@ -640,3 +640,60 @@ TEST(TorsoTissues, ContrastConnectedToThePoolsIsNeverBone)
     EXPECT_GT(vertebraBone, 0.99 * vertebra) << "clipped " << clipped;
   }
 }
+
+TEST(TorsoTissues, RibsJoinedToTheSpineAreParted)
+{
+  // A skeleton at 2 mm (x to the patient's left, y to the back, z to the head): five vertebrae
+  // (bodies of radius 15 mm, 20 mm tall, discs of 4 mm between them; a spinous process behind
+  // and transverse processes reaching 40 mm either side), a pair of ribs joined to each body's
+  // sides and running 120 mm out, a sternum in front, and two humeral heads (radius 22 mm, deeper
+  // than any vertebral body) far to the sides, joined to the ribs. All one piece of bone.
+  amVoxelGrid g;
+  g.N[0] = 130, g.N[1] = 90, g.N[2] = 60;
+  g.Spacing[0] = g.Spacing[1] = g.Spacing[2] = 2.0;
+  amVoxelMask bone(g.Size(), 0);
+  std::vector<std::uint8_t> part(g.Size(), 0); // 1 vertebra, 2 rib, 3 sternum, 4 humerus
+  for (int k = 0; k < g.N[2]; ++k)
+    for (int j = 0; j < g.N[1]; ++j)
+      for (int i = 0; i < g.N[0]; ++i)
+      {
+        const double x = 2.0 * i - 130.0, y = 2.0 * j - 90.0, z = 2.0 * k;
+        const double level = std::fmod(z - 2.0, 24.0); // within a vertebra: 0..20, a disc beyond
+        const bool inColumn = z >= 2.0 && z < 118.0 && level < 20.0;
+        const bool body = inColumn && std::hypot(x, y - 20.0) < 15.0;
+        const bool spinous = inColumn && std::fabs(x) < 3.0 && y >= 30.0 && y < 60.0;
+        const bool transverse = inColumn && std::fabs(level - 6.0) < 4.0 && std::fabs(x) < 40.0 && y >= 30.0 &&
+          y < 38.0 && std::fabs(x) >= 2.0;
+        const bool rib = inColumn && std::fabs(level - 14.0) < 4.0 && std::fabs(x) >= 14.0 && std::fabs(x) < 120.0 &&
+          y >= 16.0 && y < 24.0;
+        const bool sternum = std::fabs(x) < 12.0 && y >= -80.0 && y < -68.0 && z >= 10.0 && z < 110.0;
+        const bool humerus = std::hypot(std::fabs(x) - 110.0, y - 0.0, z - 100.0) < 22.0 ||
+          (std::fabs(x) >= 105.0 && std::fabs(x) < 115.0 && y >= 0.0 && y < 24.0 && std::fabs(z - 86.0) < 4.0);
+        const std::size_t v = g.Index(i, j, k);
+        part[v] = body || spinous || transverse ? 1 : rib ? 2 : sternum ? 3 : humerus ? 4 : 0;
+        bone[v] = part[v] != 0;
+      }
+  const double worldX[4] = { 2.0, 0.0, 0.0, -130.0 };
+  amTorso::ColumnParameters p;
+  p.Midline = 0.0;
+  const amVoxelMask column = amTorso::VertebralColumn(g, bone, worldX, 2, p);
+  std::size_t count[5] = { 0, 0, 0, 0, 0 }, inColumn[5] = { 0, 0, 0, 0, 0 }, farRib = 0;
+  for (std::size_t v = 0; v < g.Size(); ++v)
+  {
+    ++count[part[v]];
+    inColumn[part[v]] += column[v] != 0;
+    int c[3];
+    g.Ijk(v, c);
+    farRib += part[v] == 2 && column[v] && std::fabs(2.0 * c[0] - 130.0) > 38.0;
+  }
+  ASSERT_GT(count[1], 10000u);
+  ASSERT_GT(count[2], 5000u);
+  EXPECT_GT(inColumn[1], 0.99 * count[1]); // bodies, spinous and transverse processes
+  EXPECT_LT(inColumn[2], 0.25 * count[2]); // the ribs' heads and necks within 35 mm
+  EXPECT_EQ(farRib, 0u);
+  EXPECT_EQ(inColumn[3], 0u); // in the band, but thin
+  EXPECT_EQ(inColumn[4], 0u); // deep, but far from the midline
+  EXPECT_EQ(inColumn[0], 0u);
+  // Without a head-feet axis, the bone is one column.
+  EXPECT_EQ(amTorso::VertebralColumn(g, bone, worldX, -1, p), bone);
+}

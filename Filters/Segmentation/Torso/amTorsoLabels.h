@@ -39,7 +39,8 @@ struct TissueReport
   bool LungsSplit = false;           // one air component held both lungs, parted where they meet
   bool LungsSplitAtMidPlane = false; // ... and they could not be parted there: split at the mid-plane
   int BoneComponents = 0;
-  std::size_t GasBelowLungs = 0; // air voxels under the lungs across tissue: not lung
+  std::size_t RibsJoinedToSpine = 0; // voxels of the largest bone piece parted from its column
+  std::size_t GasBelowLungs = 0;     // air voxels under the lungs across tissue: not lung
 };
 
 struct TissueParameters
@@ -108,6 +109,27 @@ bool SplitJoinedLungs(
 /// the head). The stomach's and the bowel's gas, and abdominal fat under a window that shows it as
 /// air, are joined to a lung only through narrow passages; the lungs lie under no other air.
 amVoxelMask GasBelowLungs(const amVoxelGrid& g, const amVoxelMask& air, int superiorAxis, int superiorSign);
+
+/// Where a vertebral column is parted from the ribs joined to it (VertebralColumn), in mm.
+struct ColumnParameters
+{
+  double HalfWidth = 35.0;    // the band either side of the column's centre (a thoracic vertebra's
+                              // transverse processes end 25-40 mm from it; the ribs' heads lie inside)
+  double Stub = 20.0;         // a piece outside the band that ends within this of it is a process
+  double Window = 20.0;       // slices this far above and below place the column's centre
+  double Midline = 0.0;       // the body's centre along the left-right axis (world x)
+  double MidlineReach = 60.0; // the column's centre lies this near it (the shoulders lie beyond)
+};
+
+/// The vertebral column within a skeleton whose ribs are joined to it (the largest bone
+/// component of a scan whose voxels join ribs to vertebrae at their joints): the bone within
+/// HalfWidth of the column's centre along the patient's left-right axis (world x), slice by slice
+/// across superiorAxis, in pieces that hold a vertebral body (bone at least three quarters as deep
+/// as the deepest within Window), and the pieces beyond that end within Stub of the band. The centre of a
+/// slice is the median x of the deepest bone within MidlineReach of Midline and within Window.
+/// Without a superior axis (-1), all of the bone.
+amVoxelMask VertebralColumn(
+  const amVoxelGrid& g, const amVoxelMask& bone, const double worldX[4], int superiorAxis, const ColumnParameters& p);
 
 struct WallParameters
 {

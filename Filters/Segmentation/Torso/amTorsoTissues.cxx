@@ -251,12 +251,22 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
       labels[v] = p.LeftoverAirIsFat ? Phantom::Fat : amVoxel::Pending;
   }
 
-  // Bone: the largest piece is the spine, the others ribs.
+  // Bone: the vertebral column within the largest piece (ribs joined to it at their joints parted
+  // from it), the rest ribs.
   mask = BoneMask(g, classes, exterior, p);
   amVoxel::Components(g, mask, id, sizes);
   const std::vector<int> bones = BySize(sizes);
   for (const int c : bones)
     report.BoneComponents += sizes[c] >= minimumVoxels;
+  amVoxelMask column;
+  if (!bones.empty())
+  {
+    for (std::size_t v = 0; v < n; ++v)
+      mask[v] = id[v] == bones[0];
+    ColumnParameters cp;
+    cp.Midline = bodyX;
+    column = amTorso::VertebralColumn(g, mask, worldX, p.SuperiorAxis, cp);
+  }
   for (std::size_t v = 0; v < n; ++v)
   {
     const int c = id[v];
@@ -265,7 +275,8 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     if (sizes[c] < minimumVoxels)
       labels[v] = amVoxel::Pending;
     else
-      labels[v] = c == bones[0] ? Phantom::Spine : Phantom::Ribs;
+      labels[v] = column[v] ? Phantom::Spine : Phantom::Ribs;
+    report.RibsJoinedToSpine += c == bones[0] && !column[v];
   }
   return report;
 }
