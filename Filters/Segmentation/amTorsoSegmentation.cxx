@@ -33,8 +33,8 @@ vtkStandardNewMacro(amTorsoSegmentation);
 amTorsoSegmentation::amTorsoSegmentation()
   : AutomaticClasses(true)
   , MaximumNoise(25.0)
-  , BodyGapClosing(0.0)
-  , LungOpening(0.0)
+  , BodyGapClosing(-1.0)
+  , LungOpening(-1.0)
   , MinimumComponentVolume(50.0)
   , BloodPoolLabels{ amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood }
   , MaximumWallThickness(40.0)
@@ -348,6 +348,16 @@ void ContrastBone(const amVoxelGrid& g, vtkDataArray* classTable, const float* h
 }
 
 // World x of voxel (i, j, k): worldX[0] i + worldX[1] j + worldX[2] k + worldX[3].
+// Below a window that starts above fat's -100 HU (fatReadsAsAir), fat reads as air: what is not
+// lung is fat, the body wall shows as muscle and bone with gaps, and fat lies beside the lungs as a
+// thinner layer. The gap closing and the lung opening (negative: automatic) follow.
+void AirBelowTheWindow(bool fatReadsAsAir, double gap, double opening, amTorso::TissueParameters& p)
+{
+  p.BodyGap = gap >= 0.0 ? gap : fatReadsAsAir ? 15.0 : 0.0;
+  p.LungOpening = opening >= 0.0 ? opening : fatReadsAsAir ? 12.0 : 0.0;
+  p.LeftoverAirIsFat = fatReadsAsAir;
+}
+
 void WorldXRow(vtkImageData* image, double worldX[4])
 {
   const double* spacing = image->GetSpacing();
@@ -508,10 +518,7 @@ int amTorsoSegmentation::RequestData(
   amTorso::TissueParameters tissueParameters =
     TissueParametersFor(classTable, input->GetDirectionMatrix(), hu->GetPointer(0));
   tissueParameters.MinimumVoxels = minimumVoxels;
-  tissueParameters.BodyGap = this->BodyGapClosing;
-  tissueParameters.LungOpening = this->LungOpening;
-  // Below a window that starts above fat's -100 HU, fat reads as air: what is not lung is fat.
-  tissueParameters.LeftoverAirIsFat = windowed && lowest > -100.0;
+  AirBelowTheWindow(windowed && lowest > -100.0, this->BodyGapClosing, this->LungOpening, tissueParameters);
   amVoxelMask vessels;
   ContrastBone(grid, classTable, hu->GetPointer(0), organs, this->BloodPoolLabels,
     windowed ? this->InputWindow[1] + 0.5 * this->InputWindow[0] : 1e30, vessels, tissueParameters);

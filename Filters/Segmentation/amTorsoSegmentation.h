@@ -20,23 +20,25 @@
  *    (amIntensityClassifier's Automatic mode: a Gaussian mixture with each class's centre held in
  *    its anatomical range; field data "TissueClasses" gives the centres, spreads and boundaries
  *    found, and a warning names a class a chest CT shows that this scan does not: lung, fat,
- *    bone); without it, by amIntensityClassifier's fixed CT ranges; the air connected to the
- *    sides of the first two index axes is the exterior (through no gap of the body wall
- *    narrower than twice BodyGapClosing), everything else is the body (soft tissue unless a
- *    step below says otherwise);
+ *    bone); without it, by amIntensityClassifier's fixed CT ranges; the air connected to the sides
+ *    of the first two index axes is the exterior (through no gap of the body wall narrower than
+ *    twice BodyGapClosing: by default none, or 15 mm where InputWindow starts above fat),
+ *    everything else is the body (soft tissue unless a step below says otherwise);
  * 2. fat is the fat class opened by the 6-neighbour cross: the one-voxel sheets that partial
  *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
  * 3. the lungs are the two largest components of air inside the body (opened by a ball of
- *    LungOpening mm when it is set) whose voxels are mostly of the lung class where the scan tells
- *    aerated lung from gas (gas in the stomach or bowel is never lung), right and left by their centres' world x (x
- * towards the patient's left). Air under the lungs across the diaphragm is not lung: the air is cut into the basins
- * of its depth (parts joined by necks at least two voxels thinner than their own deepest point), and a basin that
- * lies, for more than half its voxels, under air of a larger basin with tissue between (down the index axis closest
- * to the patient's head-feet axis) is gas or abdominal fat joined to a lung through a narrow passage; where one
- * component holds both (joined at the trachea), it is parted where the lungs meet: its deepest parts, at the least
- * depth where they fall into two lungs, and every voxel to the nearer (where no depth parts it, at the body's
- * mid-plane, with a warning). Other air inside the body goes to its neighbours, or is fat when InputWindow starts above
- * fat's -100 HU (fat then reads as air);
+ *    LungOpening mm when it is set: by default where InputWindow starts above fat, 12 mm) whose
+ *    voxels are mostly of the lung class where the scan tells aerated lung from gas (gas in the
+ *    stomach or bowel is never lung), right and left by their centres' world x (x towards the
+ *    patient's left). Air under the lungs across the diaphragm is not lung: the air is cut into
+ *    the basins of its depth (parts joined by necks at least two voxels thinner than their own
+ *    deepest point), and a basin that lies, for more than half its voxels, under air of a larger
+ *    basin with tissue between (down the index axis closest to the patient's head-feet axis) is
+ *    gas or abdominal fat joined to a lung through a narrow passage; where one component holds
+ *    both (joined at the trachea), it is parted where the lungs meet: its deepest parts, at the
+ *    least depth where they fall into two lungs, and every voxel to the nearer (where no depth
+ *    parts it, at the body's mid-plane, with a warning). Other air inside the body goes to its
+ *    neighbours, or is fat when InputWindow starts above fat's -100 HU (fat then reads as air);
  * 4. bone is the bone class, the voxels beside it more than half bone, and the trabecular bone it
  *    encloses (what a cortical ring encloses in a slice across any of the three axes, a deviation
  *    brighter than soft tissue's centre); never the contrast blood connected to the seeded blood
@@ -126,17 +128,19 @@ public:
   ///@}
 
   ///@{
-  /// Gaps in the body wall (mm) that the outside air may not pass (default 0: none). A scan
-  /// windowed above fat (its fat reads as air) shows the body wall as muscle and bone alone, with
-  /// holes; closing them by this distance keeps the lungs inside the body.
-  vtkSetClampMacro(BodyGapClosing, double, 0.0, 100.0);
+  /// Gaps in the body wall (mm) that the outside air may not pass; 0: none. A scan windowed above
+  /// fat (its fat reads as air) shows the body wall as muscle and bone alone, with holes; closing
+  /// them by this distance keeps the lungs inside the body. Default -1: automatic, 15 mm where
+  /// InputWindow starts above fat's -100 HU, else 0.
+  vtkSetClampMacro(BodyGapClosing, double, -1.0, 100.0);
   vtkGetMacro(BodyGapClosing, double);
   ///@}
 
   ///@{
-  /// The lungs are the air inside the body opened by a ball of this radius, mm (default 0: not
-  /// opened). For scans windowed above fat, where fat beside the lungs reads as air too.
-  vtkSetClampMacro(LungOpening, double, 0.0, 100.0);
+  /// The lungs are the air inside the body opened by a ball of this radius, mm; 0: not opened.
+  /// For scans windowed above fat, where the fat beside the lungs (a thinner layer) reads as air
+  /// too. Default -1: automatic, 12 mm where InputWindow starts above fat's -100 HU, else 0.
+  vtkSetClampMacro(LungOpening, double, -1.0, 100.0);
   vtkGetMacro(LungOpening, double);
   ///@}
 

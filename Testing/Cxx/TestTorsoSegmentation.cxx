@@ -141,6 +141,56 @@ TEST(TorsoSegmentation, EveryOrganOfTheNoisyPhantomFromThreeSeededOrgans)
   EXPECT_NE(seg->GetFieldData()->GetAbstractArray("LabelNames"), nullptr);
 }
 
+TEST(TorsoSegmentation, AScanWindowedAboveFatFindsItsLungsByDefault)
+{
+  // The phantom (3 mm) stored as the real chest CT is: 8 bits through a 600/300 HU window, so
+  // fat, lung and air all read 0. Its blood pools come from its truth. With the defaults the
+  // window sets the lung opening (12 mm: the fat beside the lungs is a thinner layer) and the gap
+  // closing; without them the lungs take the fat around them.
+  vtkNew<amThoraxPhantomSource> phantom;
+  phantom->SetSpacing(3, 3, 3);
+  phantom->SetSeed(1);
+  phantom->Update();
+  auto* ct = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(0));
+  auto* truth = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1));
+  vtkNew<vtkImageData> windowed, organs;
+  windowed->CopyStructure(ct);
+  organs->CopyStructure(ct);
+  vtkNew<vtkUnsignedCharArray> bytes, pools;
+  const vtkIdType n = ct->GetNumberOfPoints();
+  bytes->SetNumberOfTuples(n);
+  pools->SetNumberOfTuples(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    const double hu = ct->GetPointData()->GetScalars()->GetComponent(v, 0);
+    bytes->SetValue(v, static_cast<unsigned char>(std::lround(std::clamp(hu / 600.0 * 255.0, 0.0, 255.0))));
+    const int l = static_cast<int>(truth->GetPointData()->GetScalars()->GetComponent(v, 0));
+    pools->SetValue(v, l == 6 || l == 7 ? l : 0);
+  }
+  windowed->GetPointData()->SetScalars(bytes);
+  organs->GetPointData()->SetScalars(pools);
+  std::vector<double> lungs;
+  for (const double setting : { -1.0, 0.0 })
+  {
+    vtkNew<amTorsoSegmentation> torso;
+    EXPECT_EQ(torso->GetLungOpening(), -1.0);
+    EXPECT_EQ(torso->GetBodyGapClosing(), -1.0);
+    torso->SetInputData(windowed);
+    torso->SetOrganData(organs);
+    torso->SetInputWindow(600, 300);
+    torso->SetLungOpening(setting);
+    torso->SetBodyGapClosing(setting);
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(torso);
+    torso->Update();
+    ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+    auto* seg = vtkImageData::SafeDownCast(torso->GetOutputDataObject(0));
+    lungs.push_back(std::min(Dice(seg, truth, 3), Dice(seg, truth, 4)));
+  }
+  EXPECT_GT(lungs[0], 0.95) << lungs[0] << " " << lungs[1];
+  EXPECT_LT(lungs[1], lungs[0] - 0.02);
+}
+
 TEST(TorsoSegmentation, AWallWithContrastIsFoundAndOneWithoutIsTheNominalThickness)
 {
   for (const double wall : { 55.0, 40.0 })
