@@ -7,7 +7,8 @@
  * Input: a label map in the thorax phantom's scheme (amTorsoSegmentation's output: 0 outside,
  * 3/4 lungs, 5 myocardium, 6 LV blood). Output: a point set (one vertex per point) whose point
  * data "Name" (strings) says what each is: RA, LA, LL, V1..V6 (in amTorsoPotential's
- * ElectrodePositions order), LVApexEndocardium, LVApexEpicardium, LVBase and Stimulus; field data
+ * ElectrodePositions order), LVApexEndocardium, LVApexEpicardium, LVBase, Stimulus, and Sternum
+ * where the bone shows it; field data
  * "LongAxis" (unit vector, base to apex) and "LongAxisLength" (mm). amTorsoPotential takes the
  * electrodes and amFitzHughNagumoSolver the stimulus from this output on their Landmarks inputs.
  *
@@ -17,8 +18,11 @@
  *   the epicardial apex the myocardium's beyond it within 15 mm of the axis, the base the centre of the pool's last 5
  * mm at the other end (the valve plane), the stimulus half-way between the apices (mid-wall);
  * - V4 is where the line from the apex straight forward meets the skin (the apex beat, 5th
- *   intercostal space, mid-clavicular line); V1 and V2 one intercostal space (25 mm) higher, 25 mm
- *   right and left of the mid-line on the front; V6 the skin's leftmost point at V4's level
+ *   intercostal space, mid-clavicular line); V1 and V2 one intercostal space (25 mm) higher, on
+ *   the front at the sternum's right and left borders: the bone (labels 9, 10) in front of the
+ *   heart that spans the skin's mid-line within 12.5 mm of that level (of the bone within 30 mm of
+ *   the mid-line, the run along x that holds it, 10-60 mm wide; its centre is the Sternum point);
+ *   where no bone spans the mid-line there, 25 mm right and left of it; V6 the skin's leftmost point at V4's level
  *   (mid-axillary), V5 half-way round from V4 to V6, V3 half-way round from V2 to V4; RA and LA
  *   below the clavicles (the lungs' top, 60 % of the way from the mid-line to the side, on the
  *   front), LL on the left lower front 50 mm below the lungs (Mason-Likar's torso placement).

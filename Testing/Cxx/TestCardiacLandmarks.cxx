@@ -149,3 +149,56 @@ TEST(CardiacLandmarks, ALabelMapWithoutAHeartIsRefusedNamingIt)
   landmarks->Update();
   EXPECT_TRUE(errors->ErrorContains("no left-ventricular blood pool")) << errors->AllErrors();
 }
+
+TEST(CardiacLandmarks, V1AndV2LieAtTheSternumsBordersWhereTheBoneShowsIt)
+{
+  // The phantom's exact labels (2 mm) with a sternum added: bone 24 mm wide centred 4 mm left of
+  // the mid-line, under the front of the chest from the collar bones' level to the heart's apex.
+  // V1 and V2 move from 25 mm either side of the skin's mid-line to its borders, and the sternum
+  // is a landmark of its own; the phantom alone (its ribs end short of the mid-line) has none.
+  vtkNew<amThoraxPhantomSource> phantom;
+  phantom->SetSpacing(2, 2, 2);
+  phantom->Update();
+  auto* labels = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1));
+  vtkNew<vtkImageData> withSternum;
+  withSternum->DeepCopy(labels);
+  vtkDataArray* scalars = withSternum->GetPointData()->GetScalars();
+  for (vtkIdType v = 0; v < withSternum->GetNumberOfPoints(); ++v)
+  {
+    double x[3];
+    withSternum->GetPoint(v, x);
+    if (std::fabs(x[0] - 4.0) <= 12.0 && x[1] >= -92.0 && x[1] <= -82.0 && x[2] >= -80.0 && x[2] <= 60.0)
+      scalars->SetComponent(v, 0, amThoraxPhantomModel::Ribs);
+  }
+  vtkNew<amTest::ErrorCatcher> errors;
+  const Points plain = Landmarks(phantom, errors);
+  EXPECT_EQ(plain.count("Sternum"), 0u);
+  vtkNew<amCardiacLandmarks> landmarks;
+  errors->Watch(landmarks);
+  landmarks->SetInputData(withSternum);
+  landmarks->Update();
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  Points p;
+  vtkPolyData* out = landmarks->GetOutput();
+  auto* names = vtkStringArray::SafeDownCast(out->GetPointData()->GetAbstractArray("Name"));
+  ASSERT_NE(names, nullptr);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> x;
+    out->GetPoint(i, x.data());
+    p[names->GetValue(i)] = x;
+  }
+  ASSERT_EQ(p.size(), 14u);
+  ASSERT_EQ(p.count("Sternum"), 1u);
+  EXPECT_NEAR(p.at("Sternum")[0], 4.0, 1.5);
+  EXPECT_NEAR(p.at("Sternum")[1], -87.0, 2.5);
+  EXPECT_NEAR(p.at("Sternum")[2], p.at("V1")[2], 12.5);
+  EXPECT_NEAR(p.at("V1")[0], 4.0 - 12.0, 3.5); // the right border, within a voxel (LPS: x grows to the left)
+  EXPECT_NEAR(p.at("V2")[0], 4.0 + 12.0, 3.5);
+  EXPECT_NEAR(plain.at("V1")[0], -25.0, 2.5);
+  EXPECT_NEAR(plain.at("V2")[0], 25.0, 2.5);
+  for (const char* lead : { "V1", "V2" })
+    EXPECT_TRUE(OnSkin(phantom, p.at(lead), 3.0)) << lead;
+  for (const char* other : { "V4", "V5", "V6", "RA", "LA", "LL", "Stimulus" }) // V3: half-way from V2 to V4
+    EXPECT_EQ(Distance(p.at(other), plain.at(other)), 0.0) << other;
+}

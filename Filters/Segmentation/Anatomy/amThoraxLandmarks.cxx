@@ -9,7 +9,8 @@ namespace
 {
 using Vec = std::array<double, 3>;
 
-constexpr std::uint8_t Outside = 0, RightLung = 3, LeftLung = 4, Myocardium = 5, LeftVentricle = 6;
+constexpr std::uint8_t Outside = 0, RightLung = 3, LeftLung = 4, Myocardium = 5, LeftVentricle = 6, Spine = 9,
+                       Ribs = 10;
 constexpr double IntercostalSpace = 25.0; // mm, one rib space
 constexpr double SternalBorder = 25.0;    // mm from the mid-line
 
@@ -206,6 +207,58 @@ void Apexes(const std::vector<Vec>& pool, const std::vector<Vec>& wall, const Ve
     }
   }
 }
+// The sternum at level z: the bone within half an intercostal space of z, in front of the heart
+// (y below heartY), that spans the mid-line: of the bone within 30 mm of it, the run of occupied
+// x (bins of a voxel) that holds the mid-line's bin, 10-60 mm wide. Its right and left borders
+// (world x) and its centre; false where no bone spans the mid-line there (the phantom's ribs end
+// short of it, and some scans do not reach that level).
+struct Sternum
+{
+  double Right = 0.0, Left = 0.0;
+  Vec Centre{};
+};
+
+bool SternumAt(const Voxels& voxels, double z, double midline, double heartY, double voxel, Sternum& sternum)
+{
+  constexpr double reach = 30.0;
+  const int bins = static_cast<int>(std::ceil(2.0 * reach / voxel)) + 1;
+  std::vector<std::vector<Vec>> column(bins);
+  for (std::size_t v = 0; v < voxels.L.size(); ++v)
+  {
+    if (voxels.L[v] != Spine && voxels.L[v] != Ribs)
+      continue;
+    const Vec p = voxels.At(v);
+    if (std::fabs(p[2] - z) > 0.5 * IntercostalSpace || p[1] >= heartY || std::fabs(p[0] - midline) > reach)
+      continue;
+    column[static_cast<int>(std::floor((p[0] - midline + reach) / voxel))].push_back(p);
+  }
+  const int middle = static_cast<int>(std::floor(reach / voxel));
+  if (column[middle].empty())
+    return false;
+  int lo = middle, hi = middle;
+  while (lo > 0 && !column[lo - 1].empty())
+    --lo;
+  while (hi + 1 < bins && !column[hi + 1].empty())
+    ++hi;
+  const double width = (hi - lo + 1) * voxel;
+  if (width < 10.0 || width > 60.0)
+    return false;
+  sternum.Right = std::numeric_limits<double>::max();
+  sternum.Left = -std::numeric_limits<double>::max();
+  std::size_t count = 0;
+  for (int b = lo; b <= hi; ++b)
+    for (const Vec& p : column[b])
+    {
+      sternum.Right = std::min(sternum.Right, p[0]);
+      sternum.Left = std::max(sternum.Left, p[0]);
+      for (int a = 0; a < 3; ++a)
+        sternum.Centre[a] += p[a];
+      ++count;
+    }
+  for (int a = 0; a < 3; ++a)
+    sternum.Centre[a] /= static_cast<double>(count);
+  return true;
+}
 }
 
 amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::vector<std::uint8_t>& labels)
@@ -307,9 +360,13 @@ amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::v
   const double slab = 0.5 * voxel;
   const Level fifth = SkinLevel(skin, v4[2], slab);
   const Level fourth = SkinLevel(skin, v4[2] + IntercostalSpace, slab);
+  // V1 and V2 beside the sternum where it is found, else SternalBorder either side of the skin's
+  // mid-line.
   const double midline4 = 0.5 * (fourth.Left + fourth.Right);
-  const Vec v1 = Front(fourth, midline4 - SternalBorder, voxel);
-  const Vec v2 = Front(fourth, midline4 + SternalBorder, voxel);
+  Sternum sternum;
+  const bool sternumFound = SternumAt(voxels, fourth.Centre[2], midline4, centre[1], voxel, sternum);
+  const Vec v1 = Front(fourth, sternumFound ? sternum.Right : midline4 - SternalBorder, voxel);
+  const Vec v2 = Front(fourth, sternumFound ? sternum.Left : midline4 + SternalBorder, voxel);
   Vec v6 = fifth.Skin.front();
   for (const auto& p : fifth.Skin)
     if (p[0] > v6[0])
@@ -328,6 +385,8 @@ amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::v
   r.Points = { { "RA", ra }, { "LA", la }, { "LL", ll }, { "V1", v1 }, { "V2", v2 }, { "V3", v3 }, { "V4", v4 },
     { "V5", v5 }, { "V6", v6 }, { "LVApexEndocardium", endo }, { "LVApexEpicardium", epi }, { "LVBase", base },
     { "Stimulus", stimulus } };
+  if (sternumFound)
+    r.Points.push_back({ "Sternum", sternum.Centre });
   return r;
 }
 

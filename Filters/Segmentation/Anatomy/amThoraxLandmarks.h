@@ -14,9 +14,13 @@
  *   myocardium's farthest voxel beyond it within 15 mm of the axis through it; base: the centre of
  *   the pool's voxels within 5 mm of its other end (the valve plane); stimulus: half-way between
  *   the two apices (mid-wall);
+ * - sternum: at V1's level, the bone (labels 9, 10) in front of the heart's centre that spans the
+ *   skin's mid-line (of the bone within 30 mm of it, the run along x that holds it, 10-60 mm wide),
+ *   within half an intercostal space above and below;
  * - electrodes on the skin (body voxels beside the outside): V4 where the line from the apex
  *   straight forward meets the skin (the apex beat, 5th intercostal space, mid-clavicular); V1 and V2
- *   an intercostal space (25 mm) higher, 25 mm right and left of the body's mid-line, on the front;
+ *   an intercostal space (25 mm) higher, at the sternum's right and left borders (where no sternum is
+ *   found, 25 mm right and left of the body's mid-line), on the front;
  *   V6 the skin's leftmost point at V4's level (mid-axillary), V5 half-way round from V4 to V6 (the
  *   angle about the body's centre at that level), V3 half-way round from V2 to V4; the limb
  *   electrodes on the torso as Mason and Likar place them: RA and LA below the clavicles (at the
@@ -52,7 +56,8 @@ public:
   struct Result
   {
     /// RA, LA, LL, V1..V6 (the order of amTorsoPotential's ElectrodePositions), then
-    /// LVApexEndocardium, LVApexEpicardium, LVBase, Stimulus.
+    /// LVApexEndocardium, LVApexEpicardium, LVBase, Stimulus, and Sternum where it is found (the
+    /// centre of its bone at V1's level).
     std::vector<Point> Points;
     std::array<double, 3> LongAxis{}; // unit, base to apex
     double LongAxisLength = 0.0;      // mm, base to epicardial apex
