@@ -186,9 +186,10 @@ def row_dice(f):
 
 def row_real_scans(f):
     return ("real scans nobody tuned for, library defaults",
-            "abdomen CT (3 mm) against TotalSegmentator: lungs %.3f, bone %.3f; cardiac CT crops: heart %.3f "
-            "(six clicks), aorta %.3f (nine) ([limits](docs/limits.md))" % (
+            "abdomen CT (3 mm) against TotalSegmentator: lungs %.3f, bone %.3f (vertebrae %.3f, ribs %.3f); "
+            "cardiac CT crops: heart %.3f (six clicks), aorta %.3f (nine) ([limits](docs/limits.md))" % (
                 f.v("real_scans.abdomen_lungs_dice"), f.v("real_scans.abdomen_bone_dice"),
+                f.v("real_scans.abdomen_spine_dice"), f.v("real_scans.abdomen_ribs_dice"),
                 f.v("real_scans.heart_dice"), f.v("real_scans.aorta_dice")),
             "TotalSegmentator's published figures: about 0.95 (heart chambers), 0.98 (aorta)")
 
