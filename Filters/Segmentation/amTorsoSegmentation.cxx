@@ -36,6 +36,7 @@ amTorsoSegmentation::amTorsoSegmentation()
   , BodyGapClosing(-1.0)
   , LungOpening(-1.0)
   , MinimumComponentVolume(50.0)
+  , FindAorta(true)
   , BloodPoolLabels{ amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood }
   , MaximumWallThickness(40.0)
   , WallThickness(10.0)
@@ -358,6 +359,48 @@ void AirBelowTheWindow(bool fatReadsAsAir, double gap, double opening, amTorso::
   p.LeftoverAirIsFat = fatReadsAsAir;
 }
 
+// The organs written over the tissues; organ[l]: label l is one of them.
+std::vector<bool> PasteOrgans(const std::vector<std::uint8_t>& organs, std::vector<std::uint8_t>& labels)
+{
+  std::vector<bool> organ(256, false);
+  for (std::size_t v = 0; v < organs.size(); ++v)
+    if (organs[v])
+    {
+      labels[v] = organs[v];
+      organ[organs[v]] = true;
+    }
+  return organ;
+}
+
+// The aorta where the organs hold none and the scan shows contrast blood (amTorso::AortaFromContrast):
+// the blood class outside every organ, bone and lung. Labels it Aorta in place; true when found.
+bool AortaWhereNoClick(vtkImageData* image, const amVoxelGrid& g, vtkDataArray* classTable,
+  const std::vector<std::uint8_t>& classes, int superiorAxis, std::vector<std::uint8_t>& labels)
+{
+  // The automatic classes say whether the scan shows contrast; the fixed ranges always hold a class.
+  if (classTable && classTable->GetComponent(amTorso::BloodClass, 4) == 0.0)
+    return false;
+  amVoxelMask contrast(labels.size());
+  for (std::size_t v = 0; v < labels.size(); ++v)
+    contrast[v] = classes[v] == amTorso::BloodClass &&
+      (labels[v] == amThoraxPhantomModel::SoftTissue || labels[v] == amVoxel::Pending);
+  double world[3][4];
+  const double* spacing = image->GetSpacing();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int a = 0; a < 3; ++a)
+      world[r][a] = image->GetDirectionMatrix()->GetElement(r, a) * spacing[a];
+    world[r][3] = image->GetOrigin()[r];
+  }
+  amTorso::AortaReport report;
+  const amVoxelMask aorta =
+    amTorso::AortaFromContrast(g, contrast, labels, world, superiorAxis, amTorso::AortaParameters(), report);
+  for (std::size_t v = 0; v < labels.size(); ++v)
+    if (aorta[v])
+      labels[v] = amThoraxPhantomModel::Aorta;
+  return report.Found;
+}
+
 void WorldXRow(vtkImageData* image, double worldX[4])
 {
   const double* spacing = image->GetSpacing();
@@ -527,13 +570,11 @@ int amTorsoSegmentation::RequestData(
     vtkWarningMacro(<< warning);
   this->UpdateProgress(0.4);
 
-  std::vector<bool> organ(256, false);
-  for (std::size_t v = 0; v < organs.size(); ++v)
-    if (organs[v])
-    {
-      labels[v] = organs[v];
-      organ[organs[v]] = true;
-    }
+  std::vector<bool> organ = PasteOrgans(organs, labels);
+
+  if (this->FindAorta && !organ[amThoraxPhantomModel::Aorta])
+    organ[amThoraxPhantomModel::Aorta] =
+      AortaWhereNoClick(input, grid, classTable, classes, tissueParameters.SuperiorAxis, labels);
 
   amTorso::WallParameters wall;
   wall.PoolLabels = this->BloodPoolLabels;
@@ -578,7 +619,8 @@ int amTorsoSegmentation::RequestData(
   p << "AutomaticClasses=" << this->AutomaticClasses << " MaximumNoise=" << this->MaximumNoise
     << " InputWindow=" << this->InputWindow[0] << "," << this->InputWindow[1]
     << " BodyGapClosing=" << this->BodyGapClosing << " LungOpening=" << this->LungOpening
-    << " MinimumComponentVolume=" << this->MinimumComponentVolume << " BloodPoolLabels=";
+    << " MinimumComponentVolume=" << this->MinimumComponentVolume << " FindAorta=" << this->FindAorta
+    << " BloodPoolLabels=";
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
   p << " MaximumWallThickness=" << this->MaximumWallThickness << " WallThickness=" << this->WallThickness
@@ -596,6 +638,7 @@ void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNoise: " << this->MaximumNoise << "\n";
   os << indent << "BodyGapClosing: " << this->BodyGapClosing << "\n";
   os << indent << "LungOpening: " << this->LungOpening << "\n";
+  os << indent << "FindAorta: " << this->FindAorta << "\n";
   os << indent << "MinimumComponentVolume: " << this->MinimumComponentVolume << "\n";
   os << indent << "BloodPoolLabels:";
   for (const int l : this->BloodPoolLabels)

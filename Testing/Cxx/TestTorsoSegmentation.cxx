@@ -2,6 +2,7 @@
 // synthetic heart whose wall has no contrast, the voxel operations, and bad input.
 #include "Torso/amTorsoLabels.h"
 #include "Torso/amVoxelGrid.h"
+#include "amFigures.h"
 #include "amSnakeSegmentation.h"
 #include "amTestUtilities.h"
 #include "amThoraxPhantomModel.h"
@@ -189,6 +190,54 @@ TEST(TorsoSegmentation, AScanWindowedAboveFatFindsItsLungsByDefault)
   }
   EXPECT_GT(lungs[0], 0.95) << lungs[0] << " " << lungs[1];
   EXPECT_LT(lungs[1], lungs[0] - 0.02);
+}
+
+TEST(TorsoSegmentation, TheAortaIsFoundWithoutItsClick)
+{
+  // The phantom (2 mm, 20 HU of noise) with clicks in its blood pools alone: the aorta is the
+  // contrast that runs down in front of the spine, with its arch and ascending part. With
+  // FindAorta off, or on a scan without contrast (the blood at soft tissue's 40 HU), none.
+  vtkNew<amThoraxPhantomSource> phantom;
+  phantom->SetSpacing(2, 2, 2);
+  phantom->SetSeed(1);
+  vtkNew<amSnakeSegmentation> snake;
+  snake->SetInputConnection(phantom->GetOutputPort(0));
+  snake->AddSeed(29.4, -24.1, -28.0, 6);
+  snake->AddSeed(-15.0, -25.0, -28.0, 7);
+  vtkNew<amTorsoSegmentation> torso;
+  torso->SetInputConnection(phantom->GetOutputPort(0));
+  torso->SetOrganConnection(snake->GetOutputPort());
+  EXPECT_TRUE(torso->GetFindAorta());
+  torso->Update();
+  auto* truth = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1));
+  auto* seg = vtkImageData::SafeDownCast(torso->GetOutputDataObject(0));
+  const double aorta = Dice(seg, truth, amThoraxPhantomModel::Aorta);
+  EXPECT_GE(aorta, 0.94);
+  for (int label : { 6, 7, 9, 10 }) // the pools and the bone as with the aorta's clicks
+    EXPECT_GE(Dice(seg, truth, label), 0.95) << "label " << label;
+  amTest::RecordFigure("segmentation.aorta_without_click_dice", aorta, "", 0.94);
+
+  torso->FindAortaOff();
+  torso->Update();
+  EXPECT_EQ(Dice(vtkImageData::SafeDownCast(torso->GetOutputDataObject(0)), truth, amThoraxPhantomModel::Aorta), 0.0);
+
+  vtkNew<amThoraxPhantomSource> plain;
+  plain->SetSpacing(2, 2, 2);
+  plain->SetSeed(1);
+  plain->SetBloodHounsfieldUnits(40.0);
+  plain->Update();
+  vtkNew<vtkImageData> pool; // the LV pool from the truth (a snake cannot find it without contrast)
+  pool->DeepCopy(plain->GetOutputDataObject(1));
+  vtkDataArray* poolLabels = pool->GetPointData()->GetScalars();
+  for (vtkIdType v = 0; v < poolLabels->GetNumberOfTuples(); ++v)
+    if (poolLabels->GetComponent(v, 0) != amThoraxPhantomModel::LeftVentricleBlood)
+      poolLabels->SetComponent(v, 0, 0);
+  vtkNew<amTorsoSegmentation> noContrast;
+  noContrast->SetInputConnection(plain->GetOutputPort(0));
+  noContrast->SetOrganData(pool);
+  noContrast->Update();
+  EXPECT_EQ(
+    Dice(vtkImageData::SafeDownCast(noContrast->GetOutputDataObject(0)), truth, amThoraxPhantomModel::Aorta), 0.0);
 }
 
 TEST(TorsoSegmentation, AWallWithContrastIsFoundAndOneWithoutIsTheNominalThickness)

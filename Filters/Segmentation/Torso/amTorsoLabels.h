@@ -131,6 +131,33 @@ struct ColumnParameters
 amVoxelMask VertebralColumn(
   const amVoxelGrid& g, const amVoxelMask& bone, const double worldX[4], int superiorAxis, const ColumnParameters& p);
 
+/// Where the aorta is found without a click (AortaFromContrast), in mm and mm^3.
+struct AortaParameters
+{
+  double Opening = 3.0;        // the contrast is opened by a ball of this radius first
+  double Reach = 45.0;         // its voxels beside the column lie this near the column's centre
+  double MinimumLength = 50.0; // ... over at least this length of the column
+  double MinimumVolume = 5000.0;
+};
+
+struct AortaReport
+{
+  bool Found = false;
+  double Length = 0.0; // mm of the column the chosen piece runs beside
+  double Volume = 0.0; // mm^3
+};
+
+/// The aorta where the organs hold none: of the contrast blood given (contrast: its voxels outside
+/// every organ), opened by the 6-neighbour cross (so a vein touching it, or the partial volume at a
+/// chamber's wall, does not join it), the piece with the most voxels in front of the vertebral
+/// column (labels Spine; world[1] is y, to the patient's back) within Reach of its centre, slice
+/// by slice across superiorAxis: the descending aorta runs down beside the vertebral bodies, the
+/// arch and the ascending aorta with it. None when that piece runs beside the column for less than
+/// MinimumLength or is smaller than MinimumVolume. world: rows of the voxel-to-world transform.
+amVoxelMask AortaFromContrast(const amVoxelGrid& g, const amVoxelMask& contrast,
+  const std::vector<std::uint8_t>& labels, const double world[3][4], int superiorAxis, const AortaParameters& p,
+  AortaReport& report);
+
 struct WallParameters
 {
   std::vector<int> PoolLabels{ Phantom::LeftVentricleBlood, Phantom::RightVentricleBlood };
