@@ -372,18 +372,43 @@ std::vector<bool> PasteOrgans(const std::vector<std::uint8_t>& organs, std::vect
   return organ;
 }
 
-// The aorta where the organs hold none and the scan shows contrast blood (amTorso::AortaFromContrast):
-// the blood class outside every organ, bone and lung. Labels it Aorta in place; true when found.
-bool AortaWhereNoClick(vtkImageData* image, const amVoxelGrid& g, vtkDataArray* classTable,
-  const std::vector<std::uint8_t>& classes, int superiorAxis, std::vector<std::uint8_t>& labels)
+// The contrast blood outside every organ, bone and lung: within half the pools' contrast of the
+// seeded blood pools' level (pools at least 50 HU brighter than soft tissue: a phase whose blood the
+// histogram does not part from soft tissue still has it; a vein still full of the denser bolus is
+// brighter), or without pools the blood class where the scan shows one. Empty where there is no
+// contrast.
+amVoxelMask ContrastOutsideOrgans(vtkDataArray* classTable, const std::vector<std::uint8_t>& classes, const float* hu,
+  const std::vector<int>& poolLabels, const std::vector<std::uint8_t>& labels)
 {
-  // The automatic classes say whether the scan shows contrast; the fixed ranges always hold a class.
-  if (classTable && classTable->GetComponent(amTorso::BloodClass, 4) == 0.0)
-    return false;
-  amVoxelMask contrast(labels.size());
-  for (std::size_t v = 0; v < labels.size(); ++v)
-    contrast[v] = classes[v] == amTorso::BloodClass &&
+  const std::size_t n = labels.size();
+  amVoxelMask contrast(n, 0);
+  std::vector<float> pool;
+  for (std::size_t v = 0; v < n; ++v)
+    if (std::find(poolLabels.begin(), poolLabels.end(), labels[v]) != poolLabels.end())
+      pool.push_back(hu[v]);
+  const double soft = classTable ? classTable->GetComponent(amTorso::SoftClass, 1) : 40.0;
+  double level = 1e30, reach = 0.0;
+  if (!pool.empty())
+  {
+    std::nth_element(pool.begin(), pool.begin() + pool.size() / 2, pool.end());
+    level = pool[pool.size() / 2];
+    if (level - soft < 50.0)
+      return contrast;
+    reach = 0.5 * (level - soft);
+  }
+  else if (classTable && classTable->GetComponent(amTorso::BloodClass, 4) == 0.0)
+    return contrast;
+  for (std::size_t v = 0; v < n; ++v)
+    contrast[v] = (pool.empty() ? classes[v] == amTorso::BloodClass : std::fabs(hu[v] - level) < reach) &&
       (labels[v] == amThoraxPhantomModel::SoftTissue || labels[v] == amVoxel::Pending);
+  return contrast;
+}
+
+// The aorta where the organs hold none and the scan shows contrast (amTorso::AortaFromContrast).
+// Labels it Aorta in place; true when found.
+bool AortaWhereNoClick(vtkImageData* image, const amVoxelGrid& g, const amVoxelMask& contrast, int superiorAxis,
+  std::vector<std::uint8_t>& labels)
+{
   double world[3][4];
   const double* spacing = image->GetSpacing();
   for (int r = 0; r < 3; ++r)
@@ -573,8 +598,9 @@ int amTorsoSegmentation::RequestData(
   std::vector<bool> organ = PasteOrgans(organs, labels);
 
   if (this->FindAorta && !organ[amThoraxPhantomModel::Aorta])
-    organ[amThoraxPhantomModel::Aorta] =
-      AortaWhereNoClick(input, grid, classTable, classes, tissueParameters.SuperiorAxis, labels);
+    organ[amThoraxPhantomModel::Aorta] = AortaWhereNoClick(input, grid,
+      ContrastOutsideOrgans(classTable, classes, hu->GetPointer(0), this->BloodPoolLabels, labels),
+      tissueParameters.SuperiorAxis, labels);
 
   amTorso::WallParameters wall;
   wall.PoolLabels = this->BloodPoolLabels;
