@@ -27,6 +27,18 @@
 
 namespace
 {
+// The main job's clicks on the phantom: the LV and RV blood pools, and the aorta's two.
+void AddMainJobClicks(amSnakeSegmentation* snake, bool aorta)
+{
+  snake->AddSeed(29.4, -24.1, -28.0, 6);
+  snake->AddSeed(-15.0, -25.0, -28.0, 7);
+  if (aorta)
+  {
+    snake->AddSeed(5.0, 40.0, 0.0, 8);
+    snake->AddSeed(5.0, -20.0, 30.0, 8);
+  }
+}
+
 double Dice(vtkImageData* seg, vtkImageData* truth, int label)
 {
   vtkDataArray* a = seg->GetPointData()->GetScalars();
@@ -118,10 +130,7 @@ TEST(TorsoSegmentation, EveryOrganOfTheNoisyPhantomFromThreeSeededOrgans)
   phantom->SetSeed(1);
   vtkNew<amSnakeSegmentation> snake;
   snake->SetInputConnection(phantom->GetOutputPort(0));
-  snake->AddSeed(29.4, -24.1, -28.0, 6);
-  snake->AddSeed(-15.0, -25.0, -28.0, 7);
-  snake->AddSeed(5.0, 40.0, 0.0, 8);
-  snake->AddSeed(5.0, -20.0, 30.0, 8);
+  AddMainJobClicks(snake, true);
   vtkNew<amTorsoSegmentation> torso;
   vtkNew<amTest::ErrorCatcher> errors;
   errors->Watch(torso);
@@ -202,8 +211,7 @@ TEST(TorsoSegmentation, TheAortaIsFoundWithoutItsClick)
   phantom->SetSeed(1);
   vtkNew<amSnakeSegmentation> snake;
   snake->SetInputConnection(phantom->GetOutputPort(0));
-  snake->AddSeed(29.4, -24.1, -28.0, 6);
-  snake->AddSeed(-15.0, -25.0, -28.0, 7);
+  AddMainJobClicks(snake, false);
   vtkNew<amTorsoSegmentation> torso;
   torso->SetInputConnection(phantom->GetOutputPort(0));
   torso->SetOrganConnection(snake->GetOutputPort());
