@@ -219,10 +219,11 @@ def row_dipole(f):
 
 def row_ecg(f):
     return ("the ECG as read (QRS, QT, T waves)",
-            "main job: QRS %.0f ms (the phantom's 12–20 mm walls; its activation takes %.0f ms), QT %.0f ms, T upright "
+            "main job: QRS %.0f ms (its activation takes %.0f ms), QT %.0f ms, R (mV) %s, T upright "
             "in %s; chest CT: QRS %.0f ms (activation %.0f ms), QT %.0f ms, T upright in %s "
             "([limits](docs/limits.md))" % (
-                f.v("main_job.qrs"), f.v("main_job.activation"), f.v("main_job.qt"), f.v("main_job.t_upright"),
+                f.v("main_job.qrs"), f.v("main_job.activation"), f.v("main_job.qt"), f.v("main_job.r_leads"),
+                f.v("main_job.t_upright"),
                 f.v("chest_ct.qrs"), f.v("chest_ct.activation"), f.v("chest_ct.qt"), f.v("chest_ct.t_upright")),
             "the paper's model: monophasic leads up to 34 mV")
 

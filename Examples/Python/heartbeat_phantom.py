@@ -29,6 +29,8 @@ os.makedirs(out, exist_ok=True)
 
 phantom = anatomesh.amThoraxPhantomSource()
 phantom.SetSpacing(spacing, spacing, spacing)
+# Ventricles with a heart's walls (LV 10 mm, RV 4 mm) and an apex that points down and left-anterior.
+phantom.SetHeartShape(anatomesh.amThoraxPhantomSource.VENTRICLES)
 mesher = anatomesh.amLabelMapTetrahedralize()
 mesher.SetInputConnection(phantom.GetOutputPort(1))
 mesher.SetFacetSize(4)

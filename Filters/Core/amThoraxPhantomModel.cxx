@@ -92,6 +92,24 @@ amThoraxPhantomModel::amThoraxPhantomModel(const Habitus& habitus)
   LocalToWorld(this->Heart, rvLocal, rvc);
   this->LeftVentricle = MakeEllipsoid(lvc, lvr, heartAxes);
   this->RightVentricle = MakeEllipsoid(rvc, rvr, heartAxes);
+  this->HeartShape = habitus.HeartShape == Ventricles ? Ventricles : Ellipsoidal;
+  if (this->HeartShape == Ventricles)
+  {
+    // The same centre and azimuth, the long axis turned 25 degrees apex-down about the horizontal
+    // axis that points to the RV (right-anterior); the heart's frame (Heart's Axes) turns with it.
+    const double tilt = 25.0 * Pi / 180.0, c = std::cos(tilt), s = std::sin(tilt);
+    double axes[3][3];
+    for (int j = 0; j < 3; ++j)
+    {
+      axes[0][j] = c * heartAxes[0][j] - s * heartAxes[2][j];
+      axes[1][j] = -heartAxes[1][j];
+    }
+    axes[2][0] = axes[0][1] * axes[1][2] - axes[0][2] * axes[1][1];
+    axes[2][1] = axes[0][2] * axes[1][0] - axes[0][0] * axes[1][2];
+    axes[2][2] = axes[0][0] * axes[1][1] - axes[0][1] * axes[1][0];
+    this->Heart = MakeEllipsoid(hc, hr, axes);
+    this->AnatomicalVentricles = amPhantomVentricles(hc, axes, k);
+  }
 
   this->ArchCenter[0] = 5.0;
   this->ArchCenter[1] = 10.0;
@@ -191,16 +209,22 @@ bool amThoraxPhantomModel::InsideLung(const double x[3], bool left) const
 
 bool amThoraxPhantomModel::InsideHeart(const double x[3]) const
 {
+  if (this->HeartShape == Ventricles)
+    return this->AnatomicalVentricles.InsideHeart(x);
   return this->Heart.Inside(x);
 }
 
 bool amThoraxPhantomModel::InsideLeftVentricle(const double x[3]) const
 {
+  if (this->HeartShape == Ventricles)
+    return this->AnatomicalVentricles.InsideLeftVentricle(x);
   return this->LeftVentricle.Inside(x);
 }
 
 bool amThoraxPhantomModel::InsideRightVentricle(const double x[3]) const
 {
+  if (this->HeartShape == Ventricles)
+    return this->AnatomicalVentricles.InsideRightVentricle(x);
   return this->RightVentricle.Inside(x);
 }
 
@@ -271,11 +295,11 @@ unsigned char amThoraxPhantomModel::LabelAt(const double x[3]) const
     return Spine;
   if (this->InsideAorta(x))
     return Aorta;
-  if (this->Heart.Inside(x))
+  if (this->InsideHeart(x))
   {
-    if (this->LeftVentricle.Inside(x))
+    if (this->InsideLeftVentricle(x))
       return LeftVentricleBlood;
-    if (this->RightVentricle.Inside(x))
+    if (this->InsideRightVentricle(x))
       return RightVentricleBlood;
     return Myocardium;
   }
@@ -317,10 +341,16 @@ double amThoraxPhantomModel::ExactVolume(int label) const
       return this->BodyVolume() - SuperquadricVolume(inner, this->BodyExponent);
     }
     case Myocardium:
+      if (this->HeartShape == Ventricles)
+        return -1.0; // the RV's crescent is not closed-form
       return this->Heart.Volume() - this->LeftVentricle.Volume() - this->RightVentricle.Volume();
     case LeftVentricleBlood:
+      if (this->HeartShape == Ventricles)
+        return this->AnatomicalVentricles.LeftVentricleVolume();
       return this->LeftVentricle.Volume();
     case RightVentricleBlood:
+      if (this->HeartShape == Ventricles)
+        return -1.0;
       return this->RightVentricle.Volume();
     case Aorta:
       return Pi * r2 *
@@ -372,14 +402,26 @@ void amThoraxPhantomModel::GetOrganCenter(int label, double center[3]) const
       // In the free wall of the left ventricle, half-way between the blood pool and the epicardium.
       const double local[3] = { 47.0, 8.0, -3.0 };
       LocalToWorld(this->Heart, local, tmp);
+      if (this->HeartShape == Ventricles)
+        this->AnatomicalVentricles.FreeWallCenter(tmp);
       c = tmp;
       break;
     }
     case LeftVentricleBlood:
       c = this->LeftVentricle.Center;
+      if (this->HeartShape == Ventricles)
+      {
+        this->AnatomicalVentricles.LeftVentricleCenter(tmp);
+        c = tmp;
+      }
       break;
     case RightVentricleBlood:
       c = this->RightVentricle.Center;
+      if (this->HeartShape == Ventricles)
+      {
+        this->AnatomicalVentricles.RightVentricleCenter(tmp);
+        c = tmp;
+      }
       break;
     case Aorta:
       tmp[0] = this->ArchCenter[0];

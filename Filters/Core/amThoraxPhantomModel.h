@@ -34,6 +34,8 @@
 
 #include "AnatomeshFiltersCoreModule.h" // export macro
 
+#include "amPhantomVentricles.h"
+
 #include <string>
 #include <vector>
 
@@ -56,16 +58,28 @@ public:
     NumberOfLabels = 11
   };
 
+  /// The heart's shape: Ellipsoidal (the default), one ellipsoid of muscle 12-20 mm thick round two
+  /// ellipsoidal blood pools, its long axis in the axial plane; Ventricles (amPhantomVentricles),
+  /// a truncated LV with a 10 mm wall and a crescent RV with a 4 mm free wall, the apex also
+  /// pointing 25 degrees down, as a heart's does.
+  enum HeartShapes
+  {
+    Ellipsoidal = 0,
+    Ventricles = 1
+  };
+
   /// The patient's build: the subcutaneous fat's thickness (mm, over an inner body of fixed size,
   /// so a larger patient has a larger body), the heart's size (a scale of every heart shape about
   /// its centre) and its long axis's angle in the axial plane (degrees from the patient's left, the
   /// default -30 turning it towards the left-anterior side; -45 more horizontal, -15 more vertical
-  /// in a frontal chest film's sense is not modelled: the tilt stays in the axial plane).
+  /// in a frontal chest film's sense is not modelled: the tilt stays in the axial plane) and its
+  /// shape (HeartShapes).
   struct Habitus
   {
     double FatThickness = 12.0;
     double HeartScale = 1.0;
     double HeartAngle = -30.0;
+    int HeartShape = Ellipsoidal;
   };
 
   amThoraxPhantomModel();
@@ -135,6 +149,9 @@ private:
   Ellipsoid Heart;
   Ellipsoid LeftVentricle;
   Ellipsoid RightVentricle;
+  // HeartShape Ventricles: the heart's frame is Heart's (its Axes tilted apex-down).
+  int HeartShape;
+  amPhantomVentricles AnatomicalVentricles;
   // Aorta: half torus of major radius ArchRadius in the y-z plane centred at ArchCenter, tubes
   // of radius AortaRadius going down from both ends (ascending ends at AscendingBottom,
   // descending at DescendingBottom).

@@ -40,6 +40,8 @@ amTorsoSegmentation::amTorsoSegmentation()
   , BloodPoolLabels{ amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood }
   , MaximumWallThickness(40.0)
   , WallThickness(10.0)
+  , RightVentricleWallThickness(4.0)
+  , MinimumWallThickness(2.0)
   , WallSmoothingSigma(2.0)
   , MinimumWallContrast(5.0)
 {
@@ -451,15 +453,31 @@ std::vector<std::string> LungWarnings(const amTorso::TissueReport& tissues, doub
   return warnings;
 }
 
+// The myocardium step's settings, from the filter's.
+amTorso::WallParameters WallSettings(amTorsoSegmentation* filter)
+{
+  amTorso::WallParameters wall;
+  wall.PoolLabels.clear();
+  for (int i = 0; i < filter->GetNumberOfBloodPoolLabels(); ++i)
+    wall.PoolLabels.push_back(filter->GetBloodPoolLabel(i));
+  wall.MaximumThickness = filter->GetMaximumWallThickness();
+  wall.Thickness = filter->GetWallThickness();
+  wall.RightThickness = filter->GetRightVentricleWallThickness();
+  wall.MinimumThickness = filter->GetMinimumWallThickness();
+  wall.Sigma = filter->GetWallSmoothingSigma();
+  wall.MinimumContrast = filter->GetMinimumWallContrast();
+  return wall;
+}
+
 // What the myocardium's step could not do, in words.
-std::vector<std::string> WallWarnings(const amTorso::WallReport& heart, double minimumContrast, double thickness)
+std::vector<std::string> WallWarnings(const amTorso::WallReport& heart, const amTorso::WallParameters& wall)
 {
   std::vector<std::string> warnings;
   std::ostringstream text;
   if (!heart.PoolVoxels)
     warnings.push_back(
       "No blood pool (labels of BloodPoolLabels in the organ map): the segmentation has no myocardium.");
-  else if (heart.PoolLevel < heart.WallLevel + minimumContrast)
+  else if (heart.PoolLevel < heart.WallLevel + wall.MinimumContrast)
   {
     text
       << "The blood pools (median " << heart.PoolLevel << " HU) are not brighter than the tissue around them ("
@@ -475,7 +493,10 @@ std::vector<std::string> WallWarnings(const amTorso::WallReport& heart, double m
     text.str("");
     text << "The myocardium cannot be told from the tissue around it by intensity (wall " << heart.WallLevel
          << " HU, surroundings " << heart.SurroundingLevel << " HU, noise " << heart.Noise
-         << " HU): it is the soft tissue within " << thickness << " mm of the blood pools.";
+         << " HU): it is the soft tissue within " << wall.Thickness << " mm of the blood pools";
+    if (wall.PoolLabels.size() > 1)
+      text << " (" << wall.RightThickness << " mm of the RV's)";
+    text << ".";
     warnings.push_back(text.str());
   }
   return warnings;
@@ -602,14 +623,9 @@ int amTorsoSegmentation::RequestData(
       ContrastOutsideOrgans(classTable, classes, hu->GetPointer(0), this->BloodPoolLabels, labels),
       tissueParameters.SuperiorAxis, labels);
 
-  amTorso::WallParameters wall;
-  wall.PoolLabels = this->BloodPoolLabels;
-  wall.MaximumThickness = this->MaximumWallThickness;
-  wall.Thickness = this->WallThickness;
-  wall.Sigma = this->WallSmoothingSigma;
-  wall.MinimumContrast = this->MinimumWallContrast;
+  const amTorso::WallParameters wall = WallSettings(this);
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);
-  for (const std::string& warning : WallWarnings(heart, this->MinimumWallContrast, this->WallThickness))
+  for (const std::string& warning : WallWarnings(heart, wall))
     vtkWarningMacro(<< warning);
   this->UpdateProgress(0.7);
 
@@ -650,7 +666,9 @@ int amTorsoSegmentation::RequestData(
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
   p << " MaximumWallThickness=" << this->MaximumWallThickness << " WallThickness=" << this->WallThickness
-    << " WallSmoothingSigma=" << this->WallSmoothingSigma << " MinimumWallContrast=" << this->MinimumWallContrast;
+    << " RightVentricleWallThickness=" << this->RightVentricleWallThickness
+    << " MinimumWallThickness=" << this->MinimumWallThickness << " WallSmoothingSigma=" << this->WallSmoothingSigma
+    << " MinimumWallContrast=" << this->MinimumWallContrast;
   amProvenance::Record(output, input, "TorsoSegmentation", p.str());
   this->UpdateProgress(1.0);
   return 1;
@@ -671,6 +689,8 @@ void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
     os << " " << l;
   os << "\n" << indent << "MaximumWallThickness: " << this->MaximumWallThickness << "\n";
   os << indent << "WallThickness: " << this->WallThickness << "\n";
+  os << indent << "RightVentricleWallThickness: " << this->RightVentricleWallThickness << "\n";
+  os << indent << "MinimumWallThickness: " << this->MinimumWallThickness << "\n";
   os << indent << "WallSmoothingSigma: " << this->WallSmoothingSigma << "\n";
   os << indent << "MinimumWallContrast: " << this->MinimumWallContrast << "\n";
 }

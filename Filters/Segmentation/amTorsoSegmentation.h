@@ -65,10 +65,12 @@
  *    the median of that average 3-6 mm from the blood pools (BloodPoolLabels of input 1); the
  *    surroundings' level the median 0-10 mm beyond MaximumWallThickness. The myocardium is the
  *    soft tissue connected to the pools, within MaximumWallThickness of them, whose average lies
- *    on the wall's side of the half-way level, with its cavities filled; lung, fat, bone and other
- *    organs stop it. Where the two levels differ by less than MinimumWallContrast (or twice
+ *    on the wall's side of the half-way level, and the soft tissue within MinimumWallThickness of
+ *    them (a ventricle's blood lies inside its wall), with its cavities filled; lung, fat, bone and
+ *    other organs stop it. Where the two levels differ by less than MinimumWallContrast (or twice
  *    the average's noise), intensity cannot tell the wall: a warning says so and the wall is the
- *    soft tissue within WallThickness of the pools. Field data "MyocardiumLevels": wall level,
+ *    soft tissue within WallThickness of the pools (RightVentricleWallThickness of the RV's, the
+ *    second of BloodPoolLabels). Field data "MyocardiumLevels": wall level,
  *    surroundings' level, threshold, noise (HU), 1 where intensity told the wall (else 0), the
  *    blood pools' level (HU; pools not brighter than the wall by MinimumWallContrast give a
  *    warning: a scan without contrast, or a seed outside the blood pool), and the Gaussian
@@ -171,11 +173,18 @@ public:
 
   ///@{
   /// The farthest the myocardium reaches from the blood pools, mm (default 40); the wall's
-  /// thickness where intensity cannot tell it, mm (default 10).
+  /// thickness where intensity cannot tell it, mm (default 10), and the RV's there (the second of
+  /// BloodPoolLabels; default 4: its free wall is a third of the LV's); the least wall, mm (default 2: the
+  /// soft tissue this near the pools is myocardium whatever its intensity, so a ventricle's blood
+  /// lies inside its wall even where a thin wall's average reads as the tissue around it; 0: none).
   vtkSetClampMacro(MaximumWallThickness, double, 1.0, 200.0);
   vtkGetMacro(MaximumWallThickness, double);
   vtkSetClampMacro(WallThickness, double, 0.5, 200.0);
   vtkGetMacro(WallThickness, double);
+  vtkSetClampMacro(RightVentricleWallThickness, double, 0.5, 200.0);
+  vtkGetMacro(RightVentricleWallThickness, double);
+  vtkSetClampMacro(MinimumWallThickness, double, 0.0, 200.0);
+  vtkGetMacro(MinimumWallThickness, double);
   ///@}
 
   ///@{
@@ -204,6 +213,8 @@ protected:
   std::vector<int> BloodPoolLabels;
   double MaximumWallThickness;
   double WallThickness;
+  double RightVentricleWallThickness;
+  double MinimumWallThickness;
   double WallSmoothingSigma;
   double MinimumWallContrast;
 

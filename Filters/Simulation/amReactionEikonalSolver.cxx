@@ -50,6 +50,7 @@ struct amReactionEikonalSolver::Run
 amReactionEikonalSolver::amReactionEikonalSolver()
   : ConductionVelocityFibre(0.6)
   , ConductionVelocityTransverse(0.25)
+  , FastEndocardiumHeight(0.8)
   , EarlySites(DURRER)
   , RightVentricleDelay(5.0)
   , ActionPotentialDurationEndocardium(340.0)
@@ -103,8 +104,9 @@ namespace
 /// The endocardium's triangles (the Tags input: VentricularTag, InputPointId) added to the eikonal
 /// as its fast layer, and its nodes on the LV and the RV side (a node on both counts as LV); the
 /// problem, or "".
-std::string AddEndocardium(vtkPolyData* tags, const amTetraSubset& subset, double velocity, amEikonal& eikonal,
-  std::vector<vtkIdType>& lv, std::vector<vtkIdType>& rv)
+std::string AddEndocardium(vtkPolyData* tags, const amTetraSubset& subset, double velocity,
+  const std::vector<double>& apicoBasal, double top, amEikonal& eikonal, std::vector<vtkIdType>& lv,
+  std::vector<vtkIdType>& rv)
 {
   vtkDataArray* tag = tags->GetCellData()->GetArray("VentricularTag");
   vtkDataArray* ids = tags->GetPointData()->GetArray("InputPointId");
@@ -138,7 +140,8 @@ std::string AddEndocardium(vtkPolyData* tags, const amTetraSubset& subset, doubl
     if (!inside)
       return "the Tags input does not belong to this mesh: triangle " + std::to_string(c) +
         " has a point that is not a heart node";
-    if (velocity > 0)
+    const bool fast = apicoBasal[tri[0]] <= top && apicoBasal[tri[1]] <= top && apicoBasal[tri[2]] <= top;
+    if (velocity > 0 && fast)
       eikonal.AddElement(tri, none, velocity, velocity);
   }
   for (vtkIdType i = 0; i < n; ++i)
@@ -260,21 +263,22 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
     eikonal.AddElement(
       { t[0], t[1], t[2], t[3] }, f, this->ConductionVelocityFibre, this->ConductionVelocityTransverse);
   }
-  std::vector<vtkIdType> lv, rv;
-  if (tags)
-  {
-    problem = AddEndocardium(tags, subset, this->EndocardialConductionVelocity, eikonal, lv, rv);
-    if (!problem.empty())
-    {
-      vtkErrorMacro(<< problem);
-      return false;
-    }
-  }
   std::vector<double> ab(n), d(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
     ab[i] = apicoBasal->GetComponent(subset.Global[i], 0);
     d[i] = depth->GetComponent(subset.Global[i], 0);
+  }
+  std::vector<vtkIdType> lv, rv;
+  if (tags)
+  {
+    problem = AddEndocardium(
+      tags, subset, this->EndocardialConductionVelocity, ab, this->FastEndocardiumHeight, eikonal, lv, rv);
+    if (!problem.empty())
+    {
+      vtkErrorMacro(<< problem);
+      return false;
+    }
   }
   std::vector<std::pair<vtkIdType, double>> sources;
   std::string sitesFrom;
@@ -351,10 +355,11 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
   run->Id = amSimulationRun::Next();
   std::ostringstream params;
   params << "CV=" << this->ConductionVelocityFibre << "/" << this->ConductionVelocityTransverse
-         << " endocardium=" << this->EndocardialConductionVelocity << " sites=" << sitesFrom
-         << " RVdelay=" << this->RightVentricleDelay << " APD=" << this->ActionPotentialDurationEndocardium << "/"
-         << this->ActionPotentialDurationEpicardium << " apicobasal=" << this->ApicoBasalDurationDifference
-         << " model=" << model.Name() << " dt=" << this->TimeStep << " EndTime=" << this->EndTime;
+         << " endocardium=" << this->EndocardialConductionVelocity << " up to " << this->FastEndocardiumHeight
+         << " sites=" << sitesFrom << " RVdelay=" << this->RightVentricleDelay
+         << " APD=" << this->ActionPotentialDurationEndocardium << "/" << this->ActionPotentialDurationEpicardium
+         << " apicobasal=" << this->ApicoBasalDurationDifference << " model=" << model.Name()
+         << " dt=" << this->TimeStep << " EndTime=" << this->EndTime;
   amProvenance::Record(run->Heart, input, "amReactionEikonalSolver", params.str());
   this->Cache = std::move(run);
   this->WallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -425,7 +430,7 @@ void amReactionEikonalSolver::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ConductionVelocity: " << this->ConductionVelocityFibre << " / " << this->ConductionVelocityTransverse
-     << " endocardium " << this->EndocardialConductionVelocity << "\n";
+     << " endocardium " << this->EndocardialConductionVelocity << " up to " << this->FastEndocardiumHeight << "\n";
   os << indent << "EarlySites: " << (this->EarlySites == DURRER ? "DURRER" : "STIMULUS") << "\n";
   os << indent << "ActionPotentialDuration: endo " << this->ActionPotentialDurationEndocardium << " epi "
      << this->ActionPotentialDurationEpicardium << " apico-basal " << this->ApicoBasalDurationDifference << "\n";

@@ -15,7 +15,9 @@
  *
  * Activation (amEikonal): sqrt(grad T . D grad T) = 1 with D = v_f^2 f f^T + v_t^2 (I - f f^T),
  * v_f = ConductionVelocityFibre (0.6 mm/ms = m/s), v_t = ConductionVelocityTransverse (0.25), and
- * the endocardial triangles at EndocardialConductionVelocity (2 mm/ms, isotropic in the surface).
+ * the endocardial triangles at EndocardialConductionVelocity (2 mm/ms, isotropic in the surface)
+ * from the apex up to FastEndocardiumHeight (0.8 of the way to the base: the Purkinje network
+ * does not reach the base, which Durrer found activated last).
  * Repolarisation: each node's action potential (amMitchellSchaeffer, amActionPotentialTable) lasts
  *   APD = APD_epi + (APD_endo - APD_epi)(1 - d) + ApicoBasalDurationDifference (h - 1/2)
  *         + ActivationDurationSlope (AT - AT_first),
@@ -80,6 +82,11 @@ public:
   vtkGetMacro(ConductionVelocityFibre, double);
   vtkSetClampMacro(ConductionVelocityTransverse, double, 1e-3, 100.0);
   vtkGetMacro(ConductionVelocityTransverse, double);
+  /// How far from the apex the fast endocardium reaches, on the apico-basal coordinate (0 apex, 1
+  /// base; default 0.8): the Purkinje network does not reach the base, whose
+  /// muscle the front reaches last (Durrer: the posterobasal LV, the basal septum, the RV's outflow).
+  vtkSetClampMacro(FastEndocardiumHeight, double, 0.0, 1.0);
+  vtkGetMacro(FastEndocardiumHeight, double);
   ///@}
 
   ///@{
@@ -128,7 +135,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double ConductionVelocityFibre, ConductionVelocityTransverse;
+  double ConductionVelocityFibre, ConductionVelocityTransverse, FastEndocardiumHeight;
   int EarlySites;
   double RightVentricleDelay;
   double ActionPotentialDurationEndocardium, ActionPotentialDurationEpicardium, ApicoBasalDurationDifference;

@@ -127,6 +127,7 @@ amThoraxPhantomSource::amThoraxPhantomSource()
   this->FatThickness = habitus.FatThickness;
   this->HeartScale = habitus.HeartScale;
   this->HeartAngle = habitus.HeartAngle;
+  this->HeartShape = habitus.HeartShape;
 }
 
 amThoraxPhantomModel amThoraxPhantomSource::Model() const
@@ -135,6 +136,7 @@ amThoraxPhantomModel amThoraxPhantomSource::Model() const
   habitus.FatThickness = this->FatThickness;
   habitus.HeartScale = this->HeartScale;
   habitus.HeartAngle = this->HeartAngle;
+  habitus.HeartShape = this->HeartShape;
   return amThoraxPhantomModel(habitus);
 }
 
@@ -354,6 +356,8 @@ int amThoraxPhantomSource::RequestData(vtkInformation*, vtkInformationVector**, 
     this->HeartAngle != usual.HeartAngle)
     params << " FatThickness=" << this->FatThickness << " HeartScale=" << this->HeartScale
            << " HeartAngle=" << this->HeartAngle;
+  if (this->HeartShape != usual.HeartShape)
+    params << " HeartShape=" << this->HeartShape;
   for (vtkImageData* img : { ct, labels })
   {
     img->GetFieldData()->AddArray(names);
@@ -424,6 +428,7 @@ void amThoraxPhantomSource::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FatThickness: " << this->FatThickness << " mm\n";
   os << indent << "HeartScale: " << this->HeartScale << "\n";
   os << indent << "HeartAngle: " << this->HeartAngle << " degrees\n";
+  os << indent << "HeartShape: " << (this->HeartShape == VENTRICLES ? "VENTRICLES" : "ELLIPSOIDAL") << "\n";
   os << indent << "NoiseStandardDeviation: " << this->NoiseStandardDeviation << " HU\n";
   os << indent << "BlurSigma: " << this->BlurSigma << " mm\n";
   os << indent << "PartialVolumeSamples: " << this->PartialVolumeSamples << "\n";

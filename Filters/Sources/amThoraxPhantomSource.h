@@ -109,6 +109,21 @@ public:
   vtkGetMacro(HeartAngle, double);
   ///@}
 
+  ///@{
+  /// The heart's shape (amThoraxPhantomModel::HeartShapes): ELLIPSOIDAL (default), one ellipsoid
+  /// of muscle 12-20 mm thick round two ellipsoidal blood pools, its long axis in the axial plane;
+  /// VENTRICLES, a truncated left ventricle with a 10 mm wall and a crescent right ventricle with a
+  /// 4 mm free wall, the apex also pointing 25 degrees down (amPhantomVentricles): the heart whose
+  /// activation a 12-lead ECG reads as a healthy heart's.
+  enum HeartShapeType
+  {
+    ELLIPSOIDAL = 0,
+    VENTRICLES = 1
+  };
+  vtkSetClampMacro(HeartShape, int, ELLIPSOIDAL, VENTRICLES);
+  vtkGetMacro(HeartShape, int);
+  ///@}
+
   /// A point of the default heart (e.g. a click in its blood pool) where this phantom's heart
   /// (HeartScale, HeartAngle) and PatientRotation put it in the scanner; a point away from the
   /// heart (the aorta's clicks) where PatientRotation puts it.
@@ -153,6 +168,7 @@ protected:
   double FatThickness;
   double HeartScale;
   double HeartAngle;
+  int HeartShape;
   double PatientRotation[3];
 
 private:

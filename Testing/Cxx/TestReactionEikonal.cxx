@@ -420,3 +420,72 @@ TEST(ReactionEikonalSolver, BadInput)
   noFibres->Update();
   EXPECT_TRUE(e4->ErrorContains("run Ventricular Fibres first")) << e4->AllErrors();
 }
+
+// The Purkinje network does not reach the base: with the fast endocardium up to 0.8 of the way
+// from apex to base, the heart below 0.6 activates as with a fast layer everywhere, the base
+// (above 0.9) later, and the last node activated lies in the base.
+TEST(ReactionEikonalSolver, TheFastEndocardiumStopsShortOfTheBase)
+{
+  amThoraxPhantomModel::Habitus build;
+  build.HeartShape = amThoraxPhantomModel::Ventricles;
+  static const amThoraxPhantomModel model(build);
+  double c[3];
+  model.GetOrganCenter(amThoraxPhantomModel::LeftVentricleBlood, c);
+  const int n[3] = { 40, 40, 40 };
+  const double origin[3] = { c[0] - 60, c[1] - 60, c[2] - 60 }, size[3] = { 120, 120, 120 };
+  auto mesh = amTest::BoxMesh(n, origin, size, [](const double* x) { return static_cast<int>(model.LabelAt(x)); });
+  vtkNew<amVentricularFibres> fibres;
+  fibres->SetInputData(mesh);
+  fibres->Update();
+  vtkDataArray* ab = fibres->GetOutput()->GetPointData()->GetArray("ApicoBasal");
+  ASSERT_NE(ab, nullptr);
+  std::vector<std::vector<double>> times;
+  std::vector<double> height;
+  for (const double top : { 1.0, 0.8 })
+  {
+    vtkNew<amReactionEikonalSolver> solver;
+    solver->SetInputConnection(fibres->GetOutputPort(0));
+    solver->SetTagsConnection(fibres->GetOutputPort(1));
+    solver->SetFastEndocardiumHeight(top);
+    solver->SetEndTime(10);
+    solver->Update();
+    vtkUnstructuredGrid* heart = solver->GetOutput();
+    vtkDataArray* at = heart->GetPointData()->GetArray("ActivationTime");
+    vtkDataArray* id = heart->GetPointData()->GetArray("InputPointId");
+    times.emplace_back();
+    height.clear();
+    for (vtkIdType i = 0; i < at->GetNumberOfTuples(); ++i)
+    {
+      times.back().push_back(at->GetComponent(i, 0));
+      height.push_back(ab->GetComponent(static_cast<vtkIdType>(id->GetComponent(i, 0)), 0));
+    }
+  }
+  ASSERT_EQ(times[0].size(), times[1].size());
+  double below = 0, base = 0, last = -1, lastHeight = 0;
+  int nBelow = 0, nBase = 0;
+  for (std::size_t i = 0; i < height.size(); ++i)
+  {
+    if (height[i] < 0.6)
+    {
+      below += times[1][i] - times[0][i];
+      ++nBelow;
+    }
+    if (height[i] > 0.9)
+    {
+      base += times[1][i] - times[0][i];
+      ++nBase;
+    }
+    if (times[1][i] > last)
+    {
+      last = times[1][i];
+      lastHeight = height[i];
+    }
+  }
+  ASSERT_GT(nBelow, 100);
+  ASSERT_GT(nBase, 50);
+  std::cout << "[ figures  ] fast endocardium up to 0.8: below 0.6 " << below / nBelow << " ms later, above 0.9 "
+            << base / nBase << " ms later; last node at height " << lastHeight << "\n";
+  EXPECT_LT(below / nBelow, 1.0);
+  EXPECT_GT(base / nBase, 5.0);
+  EXPECT_GT(lastHeight, 0.8);
+}

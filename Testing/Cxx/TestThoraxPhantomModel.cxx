@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 using M = amThoraxPhantomModel;
 
@@ -140,4 +142,88 @@ TEST(ThoraxPhantomModel, HabitusScalesTheHeartAndThickensTheFat)
   const amThoraxPhantomModel same{ amThoraxPhantomModel::Habitus() };
   for (int label = 1; label < amThoraxPhantomModel::NumberOfLabels; ++label)
     EXPECT_EQ(same.ExactVolume(label), usual.ExactVolume(label)) << label;
+}
+
+TEST(ThoraxPhantomModel, TheVentriclesHaveAHeartsWallsAndItsApexPointsDown)
+{
+  amThoraxPhantomModel::Habitus build;
+  build.HeartShape = M::Ventricles;
+  const M model(build);
+  for (int label : { M::Myocardium, M::LeftVentricleBlood, M::RightVentricleBlood })
+  {
+    double c[3];
+    model.GetOrganCenter(label, c);
+    EXPECT_EQ(model.LabelAt(c), label) << M::LabelName(label);
+  }
+  // Across the LV's lateral wall and the RV's free wall, along the frame's axis to the RV (at the
+  // cavities' centre level): 10 mm and 4 mm of muscle.
+  auto run = [&](double u, double v0, double step, int label) {
+    double t = 0;
+    for (;; t += 0.05)
+    {
+      const double frame[3] = { u, v0 + step * t, 0.0 };
+      double x[3];
+      model.HeartFrameToWorld(frame, x);
+      if (model.LabelAt(x) != label)
+        break;
+    }
+    return t;
+  };
+  EXPECT_NEAR(run(-10.0, -31.05, -1.0, M::Myocardium), 10.0, 0.1);
+  EXPECT_NEAR(run(-5.0, 45.05, 1.0, M::Myocardium), 4.0, 0.1);
+  // On a 1 mm lattice: the pools lie inside the muscle (no pool point beside anything else), the
+  // LV's volume is its closed form, the muscle an adult's ventricles' (150-220 cm3), and the LV's
+  // long axis (from the cavity's centroid to its farthest point, the apex) points left, forwards
+  // and down.
+  long lv = 0, muscle = 0, exposed = 0;
+  std::vector<std::array<double, 3>> cavity;
+  const double h = 1.0;
+  for (double z = -110.5; z < 20; z += h)
+    for (double y = -100.5; y < 40; y += h)
+      for (double x = -50.5; x < 100; x += h)
+      {
+        const double p[3] = { x, y, z };
+        const int l = model.LabelAt(p);
+        lv += l == M::LeftVentricleBlood;
+        muscle += l == M::Myocardium;
+        if (l == M::LeftVentricleBlood)
+          cavity.push_back({ x, y, z });
+        if (l != M::LeftVentricleBlood && l != M::RightVentricleBlood)
+          continue;
+        for (int a = 0; a < 3; ++a)
+          for (int s : { -1, 1 })
+          {
+            double q[3] = { x, y, z };
+            q[a] += s * h;
+            const int m = model.LabelAt(q);
+            exposed += m != M::Myocardium && m != M::LeftVentricleBlood && m != M::RightVentricleBlood;
+          }
+      }
+  EXPECT_EQ(exposed, 0);
+  EXPECT_NEAR(lv * h * h * h / model.ExactVolume(M::LeftVentricleBlood), 1.0, 0.01);
+  EXPECT_NEAR(model.ExactVolume(M::LeftVentricleBlood), 89.6e3, 0.1e3);
+  EXPECT_GT(muscle * h * h * h, 150e3);
+  EXPECT_LT(muscle * h * h * h, 220e3);
+  double c[3] = { 0, 0, 0 }, axis[3] = { 0, 0, 0 }, far = 0;
+  for (const auto& p : cavity)
+    for (int a = 0; a < 3; ++a)
+      c[a] += p[a] / cavity.size();
+  for (const auto& p : cavity)
+  {
+    const double d = std::hypot(p[0] - c[0], p[1] - c[1], p[2] - c[2]);
+    if (d > far)
+    {
+      far = d;
+      for (int a = 0; a < 3; ++a)
+        axis[a] = (p[a] - c[a]) / d;
+    }
+  }
+  EXPECT_GT(far, 40.0);
+  EXPECT_GT(axis[0], 0.6);
+  EXPECT_LT(axis[1], -0.3);
+  EXPECT_LT(axis[2], -0.3);
+  // The RV's crescent and the muscle are not closed-form; the default shape is unchanged.
+  EXPECT_LT(model.ExactVolume(M::RightVentricleBlood), 0.0);
+  EXPECT_LT(model.ExactVolume(M::Myocardium), 0.0);
+  EXPECT_GT(M().ExactVolume(M::Myocardium), 0.0);
 }

@@ -1,9 +1,8 @@
 """The main job as it ships (Examples/Pipelines/thorax.xml at its own 1 mm, through the ``anatomesh``
-command): every organ segmented with Dice >= 0.98, the heartbeat on the segmented mesh agrees with the
+command): every organ segmented with Dice >= 0.98 (the 4-10 mm heart wall >= 0.93), the heartbeat on the segmented mesh agrees with the
 same job run on the phantom's exact labels (the reference, made only here): activation times within
 1.5 ms RMS at common points, every lead correlating >= 0.99; its tetrahedra meet the README's figures; and
-the ECG read as a cardiologist reads it
-(docs/limits.md says which of the clinical targets the phantom's heart misses and why); FEniCSx loads its
+the ECG read as a cardiologist reads it meets the clinical targets (docs/limits.md says which it misses); FEniCSx loads its
 mesh from the .msh and the .xdmf with their tags and solves on it. The paper's Table 1 case at its own 1 mm
 (Examples/Pipelines/paper_table.xml) meets the bars the README gives it. Each figure the README quotes is
 recorded (figures_record) for scripts/figures.py."""
@@ -111,15 +110,22 @@ class MainJob(AgreesWithTruth, unittest.TestCase):
         for lead in ("I", "II", "V5", "V6"):
             self.assertEqual(rows[lead]["TPolarity"], "upright", lead)
         self.assertEqual(rows["aVR"]["TPolarity"], "inverted")
-        # R of a healthy size in lead I, rising from V1 to V4 (the phantom's horizontal, thick-walled
-        # heart: the QRS lasts about 133 ms and points up and left, so II and III show deep S waves).
-        self.assertTrue(0.5 <= float(rows["I"]["R_mV"]) <= 3.0, rows["I"])
-        self.assertLess(float(rows["V1"]["R_mV"]), float(rows["V4"]["R_mV"]))
-        self.assertTrue(80 <= qrs <= 140, qrs)
+        # A healthy QRS: 80-120 ms, R of a healthy size in the limb leads I and II (the axis points
+        # down and left: II's R stands above its S), and rising from V1 through V4 to V5.
+        R = {lead: float(r["R_mV"]) for lead, r in rows.items()}
+        for lead in ("I", "II"):
+            self.assertTrue(0.5 <= R[lead] <= 3.0, rows[lead])
+        self.assertGreater(R["II"], -float(rows["II"]["S_mV"]))
+        self.assertLess(R["V1"], R["V2"])
+        self.assertLess(R["V2"], R["V4"])
+        self.assertLess(R["V4"], R["V5"])
+        self.assertTrue(80 <= qrs <= 120, qrs)
         upright = [lead for lead, r in rows.items() if r["TPolarity"] == "upright"]
-        record(self, "main_job.qrs", qrs, "ms", [80, 140])
+        record(self, "main_job.qrs", qrs, "ms", [80, 120])
         record(self, "main_job.qt", qt, "ms", [320, 460])
         record(self, "main_job.t_upright", ", ".join(upright), "leads")
+        record(self, "main_job.r_leads", " ".join("%s %.2f" % (k, R[k]) for k in ("I", "II", "V1", "V2", "V3", "V4",
+                                                                                   "V5", "V6")), "mV")
         # The QRS as read spans the ventricles' activation (a QRS duration is the time the
         # depolarisation takes), within a few milliseconds.
         activation = vtk_to_numpy(self.segmented[0].GetPointData().GetArray("ActivationTime"))
@@ -134,11 +140,12 @@ class MainJob(AgreesWithTruth, unittest.TestCase):
         dice = {int(r["Label"]): float(r["Dice"]) for r in organs}
         for label, value in dice.items():
             print("organ %2s Dice %.4f" % (label, value))
-            # The README's figure is 0.983 (myocardium) to 0.999: a regression below 0.98 fails.
-            self.assertGreaterEqual(value, 0.98, label)
-        record(self, "main_job.dice_lowest", min(dice.values()), "", 0.98)
+            # The README's figures are 0.937 (the myocardium: a wall 4-10 mm thick whose outer side
+            # shows 10 HU of contrast under 20 HU of noise) and 0.984 (ribs) to 0.999.
+            self.assertGreaterEqual(value, 0.93 if label == 5 else 0.98, label)
+        record(self, "main_job.dice_lowest", min(dice.values()), "", 0.93)
         record(self, "main_job.dice_highest", max(dice.values()), "", 0.98)
-        record(self, "main_job.dice_myocardium", dice[5], "", 0.98)
+        record(self, "main_job.dice_myocardium", dice[5], "", 0.93)
         record(self, "main_job.dice_ribs", dice[10], "", 0.98)
 
     def test_the_tetrahedra_meet_the_readmes_figures(self):

@@ -28,6 +28,49 @@ double Median(std::vector<float> values)
   std::nth_element(values.begin(), mid, values.end());
   return *mid;
 }
+
+// The voxels the wall grows over (the pools and the soft tissue the wall may hold): within the
+// least wall of the pools; where the intensity tells the wall, within MaximumThickness on the
+// wall's side of the threshold; else within the LV's (and any other pool's) Thickness or the RV's
+// RightThickness (its free wall is a third as thick; the septum is the LV's).
+amVoxelMask GrowRegion(const amVoxelGrid& g, const Box& box, const amTorso::WallParameters& p,
+  const amTorso::WallReport& report, double contrast, const amVoxelMask& pools, const amVoxelMask& candidate,
+  const std::vector<float>& d, const std::vector<float>& level, const std::vector<std::uint8_t>& labels)
+{
+  const amVoxelGrid& b = box.Grid;
+  const std::size_t n = b.Size();
+  std::vector<float> dLeft, dRight;
+  if (!report.Contrast && p.PoolLabels.size() > 1)
+  {
+    amVoxelMask right(n, 0), left(n, 0);
+    for (std::size_t v = 0; v < n; ++v)
+      if (pools[v])
+        (labels[box.Global(g, v)] == p.PoolLabels[1] ? right : left)[v] = 1;
+    dLeft = amVoxel::DistanceWithin(b, left, p.Thickness);
+    dRight = amVoxel::DistanceWithin(b, right, p.RightThickness);
+  }
+  amVoxelMask grow(n, 0);
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    if (pools[v])
+      grow[v] = 1;
+    else if (candidate[v])
+    {
+      // A ventricle's blood lies inside its wall: the soft tissue next to the pools is wall even
+      // where a thin wall's average reads as its surroundings.
+      if (d[v] <= p.MinimumThickness)
+        grow[v] = 1;
+      else if (report.Contrast)
+        grow[v] =
+          d[v] <= p.MaximumThickness && (contrast > 0 ? level[v] >= report.Threshold : level[v] <= report.Threshold);
+      else if (!dLeft.empty())
+        grow[v] = dLeft[v] <= p.Thickness || dRight[v] <= p.RightThickness;
+      else
+        grow[v] = d[v] <= p.Thickness;
+    }
+  }
+  return grow;
+}
 }
 
 amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* hu,
@@ -143,20 +186,7 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* h
   }
   report.Threshold = 0.5 * (report.WallLevel + report.SurroundingLevel);
 
-  amVoxelMask grow(n, 0);
-  for (std::size_t v = 0; v < n; ++v)
-  {
-    if (pools[v])
-      grow[v] = 1;
-    else if (candidate[v])
-    {
-      if (report.Contrast)
-        grow[v] =
-          d[v] <= p.MaximumThickness && (contrast > 0 ? level[v] >= report.Threshold : level[v] <= report.Threshold);
-      else
-        grow[v] = d[v] <= p.Thickness;
-    }
-  }
+  const amVoxelMask grow = GrowRegion(g, box, p, report, contrast, pools, candidate, d, level, labels);
   std::vector<int> id;
   std::vector<std::size_t> sizes;
   const int count = amVoxel::Components(b, grow, id, sizes);
