@@ -207,7 +207,8 @@ def row_main_tets(f):
 
 def row_agreement(f):
     return ("heartbeat on the segmented mesh against the truth mesh (main job, 1 mm)",
-            "activation RMS %.2f ms, every lead correlates ≥ %.3f" % (
+            "activation RMS %.2f ms, every lead correlates ≥ %.3f (a lead under a quarter of the largest's amplitude "
+            "by its RMS difference, within 5 %%)" % (
                 f.v("main_job.activation_rms"), f.v("main_job.lowest_lead_correlation")), "—")
 
 

@@ -41,7 +41,7 @@ amTorsoSegmentation::amTorsoSegmentation()
   , MaximumWallThickness(40.0)
   , WallThickness(10.0)
   , RightVentricleWallThickness(4.0)
-  , MinimumWallThickness(2.0)
+  , MinimumWallThickness(3.0)
   , WallSmoothingSigma(2.0)
   , MinimumWallContrast(5.0)
 {

@@ -174,9 +174,10 @@ public:
   ///@{
   /// The farthest the myocardium reaches from the blood pools, mm (default 40); the wall's
   /// thickness where intensity cannot tell it, mm (default 10), and the RV's there (the second of
-  /// BloodPoolLabels; default 4: its free wall is a third of the LV's); the least wall, mm (default 2: the
-  /// soft tissue this near the pools is myocardium whatever its intensity, so a ventricle's blood
-  /// lies inside its wall even where a thin wall's average reads as the tissue around it; 0: none).
+  /// BloodPoolLabels; default 4: its free wall is a third of the LV's); the least wall, mm (default 3,
+  /// the thinnest a ventricle's wall is: the soft tissue this near the pools is myocardium whatever
+  /// its intensity, so a ventricle's blood lies inside its wall even where a thin wall's average reads
+  /// as the tissue around it; 0: none).
   vtkSetClampMacro(MaximumWallThickness, double, 1.0, 200.0);
   vtkGetMacro(MaximumWallThickness, double);
   vtkSetClampMacro(WallThickness, double, 0.5, 200.0);

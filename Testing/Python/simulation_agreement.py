@@ -1,6 +1,9 @@
 """The two checks of a simulation on a segmented mesh against the same simulation on the phantom's exact
 labels: activation times within ``activation_rms_bar`` (5 ms) RMS at the nodes both hearts share, every lead
-correlating >= ``correlation_bar`` (0.95); a case whose figures the README quotes sets bars near them.
+correlating >= ``correlation_bar`` (0.95); a case whose figures the README quotes sets bars near them. A lead
+whose peak on the truth is under ``null_lead_fraction`` of the largest lead's (0: none) is nearly
+perpendicular to the heart's vector, its waveform the small difference of large ones, so its correlation says
+little: it is held instead by its RMS difference, at most ``null_lead_rms_bar`` of the largest lead's peak.
 A test case mixes them in and sets ``segmented`` and ``truth`` to (heart with ActivationTime, {lead: values});
 both figures are recorded (figures_record) under ``figure_prefix``."""
 import numpy as np
@@ -14,6 +17,8 @@ from figures_record import record
 class AgreesWithTruth:
     activation_rms_bar = 5.0  # ms
     correlation_bar = 0.95
+    null_lead_fraction = 0.0
+    null_lead_rms_bar = 0.05
     figure_prefix = None
 
     def test_activation_times_agree(self):
@@ -41,11 +46,17 @@ class AgreesWithTruth:
         self.assertEqual(list(seg), list(truth))
         np.testing.assert_array_equal(seg["Time"], truth["Time"])
         lowest = 1.0
+        largest = max(np.abs(truth[name]).max() for name in list(truth)[1:])
         for name in list(seg)[1:]:
             r = np.corrcoef(seg[name], truth[name])[0, 1]
+            peak = np.abs(truth[name]).max()
+            rms = np.sqrt(np.mean((seg[name] - truth[name]) ** 2)) / largest
+            print("lead %-4s correlation %.4f, RMS difference %.3f of the largest peak, peak %.2f vs %.2f mV" % (
+                name, r, rms, np.abs(seg[name]).max(), peak))
+            if peak < self.null_lead_fraction * largest:
+                self.assertLessEqual(rms, self.null_lead_rms_bar, name)
+                continue
             lowest = min(lowest, r)
-            print("lead %-4s correlation %.4f, peak %.1f vs %.1f mV" % (name, r, np.abs(seg[name]).max(),
-                                                                     np.abs(truth[name]).max()))
             self.assertGreaterEqual(r, self.correlation_bar, name)
         if self.figure_prefix:
             record(self, self.figure_prefix + ".lowest_lead_correlation", float(lowest), "",

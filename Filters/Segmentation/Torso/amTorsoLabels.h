@@ -164,7 +164,7 @@ struct WallParameters
   double MaximumThickness = 40.0; // mm from the pools
   double Thickness = 10.0;        // mm, where intensity cannot tell the wall
   double RightThickness = 4.0;    // mm, the same for the RV (the second pool label)
-  double MinimumThickness = 2.0;  // mm: the soft tissue this near the pools is wall, whatever it reads
+  double MinimumThickness = 3.0;  // mm: the soft tissue this near the pools is wall, whatever it reads
   double Sigma = 2.0;             // mm
   double MinimumContrast = 5.0;   // HU
 };
