@@ -2,6 +2,7 @@
 
 #include "amConcurrentTasks.h"
 #include "amInputCheck.h"
+#include "amIntensityWindow.h"
 #include "amProvenance.h"
 #include "amSnakeTracker.h"
 #include "amThreading.h"
@@ -224,8 +225,9 @@ std::size_t Paste(const std::vector<unsigned char>& inside, const int lo[3], con
   return voxels;
 }
 
-// The tracker's parameters: the filter's properties of the same names.
-amSnakeTracker::Parameters TrackerParameters(amSnakeSegmentation* f)
+// The tracker's parameters: the filter's properties of the same names; on an image that carries
+// the window it was stored through (amIntensityWindow), its intensities in HU become the image's.
+amSnakeTracker::Parameters TrackerParameters(amSnakeSegmentation* f, vtkImageData* image)
 {
   amSnakeTracker::Parameters tp;
   tp.Mode = f->GetMode();
@@ -254,6 +256,15 @@ amSnakeTracker::Parameters TrackerParameters(amSnakeSegmentation* f)
   tp.MaximumGrowth = f->GetMaximumGrowth();
   tp.AreaCost = f->GetAreaCost();
   tp.MinimumSectionContrast = f->GetMinimumSectionContrast();
+  double window[2];
+  if (amIntensityWindow::Of(image, window))
+  {
+    tp.MinimumIntensityWindow = amIntensityWindow::Width(window, tp.MinimumIntensityWindow);
+    tp.EdgeContrast = amIntensityWindow::Width(window, tp.EdgeContrast);
+    tp.LowerThreshold = amIntensityWindow::Level(window, tp.LowerThreshold);
+    tp.UpperThreshold = amIntensityWindow::Level(window, tp.UpperThreshold);
+    tp.OutsideThreshold = amIntensityWindow::Level(window, tp.OutsideThreshold);
+  }
   return tp;
 }
 }
@@ -408,7 +419,7 @@ int amSnakeSegmentation::RequestData(
   volumes->SetName("SegmentedVolumes");
   volumes->SetNumberOfComponents(2);
   const double voxelVolume = spacing[0] * spacing[1] * spacing[2];
-  const amSnakeTracker::Parameters tp = TrackerParameters(this);
+  const amSnakeTracker::Parameters tp = TrackerParameters(this, input);
 
   // Each organ's contour is independent of the others (its own region of interest, its own
   // intensity interval), so the organs run at once, one per core; the pasting below keeps the

@@ -124,7 +124,10 @@ public:
 
   ///@{
   /// Automatic interval: mean +/- max(IntensityTolerance x sd, MinimumIntensityWindow)
-  /// (defaults 3 and 100, input units: HU for CT).
+  /// (defaults 3 and 100, input units: HU for CT). On an image that carries the window it was
+  /// stored through (field data "IntensityWindow", amImageReader's IntensityWindow), this filter's
+  /// intensities (MinimumIntensityWindow, LowerThreshold, UpperThreshold, OutsideThreshold,
+  /// EdgeContrast) are HU, converted to the image's 0..255.
   vtkSetMacro(AutomaticThresholds, bool);
   vtkGetMacro(AutomaticThresholds, bool);
   vtkBooleanMacro(AutomaticThresholds, bool);

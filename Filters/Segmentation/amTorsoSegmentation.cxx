@@ -3,6 +3,7 @@
 #include "Torso/amTorsoLabels.h"
 #include "amInputCheck.h"
 #include "amIntensityClassifier.h"
+#include "amIntensityWindow.h"
 #include "amProvenance.h"
 #include "amThoraxPhantomModel.h"
 #include "amThreading.h"
@@ -547,10 +548,14 @@ int amTorsoSegmentation::RequestData(
     return 0;
   }
   const vtkIdType n = scalars->GetNumberOfTuples();
-  const bool windowed = this->InputWindow[0] > 0.0;
-  const double lowest = this->InputWindow[1] - 0.5 * this->InputWindow[0];
+  // InputWindow, or the window the image carries (amImageReader's IntensityWindow).
+  double window[2] = { this->InputWindow[0], this->InputWindow[1] };
+  if (!(window[0] > 0.0))
+    amIntensityWindow::Of(input, window);
+  const bool windowed = window[0] > 0.0;
+  const double lowest = window[1] - 0.5 * window[0];
   vtkNew<vtkFloatArray> hu;
-  if (!HounsfieldUnits(scalars, this->InputWindow, this->AutomaticClasses != 0, hu, why))
+  if (!HounsfieldUnits(scalars, window, this->AutomaticClasses != 0, hu, why))
   {
     vtkErrorMacro(<< why);
     return 0;
@@ -610,7 +615,7 @@ int amTorsoSegmentation::RequestData(
   AirBelowTheWindow(windowed && lowest > -100.0, this->BodyGapClosing, this->LungOpening, tissueParameters);
   amVoxelMask vessels;
   ContrastBone(grid, classTable, hu->GetPointer(0), organs, this->BloodPoolLabels,
-    windowed ? this->InputWindow[1] + 0.5 * this->InputWindow[0] : 1e30, vessels, tissueParameters);
+    windowed ? window[1] + 0.5 * window[0] : 1e30, vessels, tissueParameters);
   const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
   for (const std::string& warning : LungWarnings(tissues, this->MinimumComponentVolume))
     vtkWarningMacro(<< warning);
@@ -659,10 +664,9 @@ int amTorsoSegmentation::RequestData(
 
   std::ostringstream p;
   p << "AutomaticClasses=" << this->AutomaticClasses << " MaximumNoise=" << this->MaximumNoise
-    << " InputWindow=" << this->InputWindow[0] << "," << this->InputWindow[1]
-    << " BodyGapClosing=" << this->BodyGapClosing << " LungOpening=" << this->LungOpening
-    << " MinimumComponentVolume=" << this->MinimumComponentVolume << " FindAorta=" << this->FindAorta
-    << " BloodPoolLabels=";
+    << " InputWindow=" << window[0] << "," << window[1] << " BodyGapClosing=" << this->BodyGapClosing
+    << " LungOpening=" << this->LungOpening << " MinimumComponentVolume=" << this->MinimumComponentVolume
+    << " FindAorta=" << this->FindAorta << " BloodPoolLabels=";
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
   p << " MaximumWallThickness=" << this->MaximumWallThickness << " WallThickness=" << this->WallThickness

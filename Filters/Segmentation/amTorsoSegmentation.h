@@ -3,11 +3,12 @@
  * @brief   Segments the whole simulation domain of a chest CT into one label map: body, fat,
  *          lungs, bone, myocardium, and the organs segmented from seeds.
  *
- * Input 0 is the CT in Hounsfield units, or windowed to 0..255 (InputWindow: the width and level
- * in HU that made it; 0 below the window is read as air, -1000 HU, 255 above it as bone, +1000 HU,
- * as the classes need). Input 1 (optional) is a label map on the
- * same grid of organs segmented from seeds, e.g. amSnakeSegmentation's blood pools and aorta; its
- * labels are kept as they are and take precedence over every tissue below.
+ * Input 0 is the CT in Hounsfield units, or windowed to 0..255 (InputWindow, or the window the
+ * image carries from amImageReader's IntensityWindow: the width and level in HU that made it; 0
+ * below the window is read as air, -1000 HU, 255 above it as bone, +1000 HU, as the classes need).
+ * Input 1 (optional) is a label map on the same grid of organs segmented from seeds, e.g.
+ * amSnakeSegmentation's blood pools and aorta; its labels are kept as they are and take precedence
+ * over every tissue below.
  *
  * The output uses the thorax phantom's label scheme (names in field data "LabelNames"):
  * 0 outside the body, 1 soft tissue, 2 fat, 3 right lung, 4 left lung, 5 myocardium, 6 LV blood,
@@ -125,7 +126,8 @@ public:
 
   ///@{
   /// The window (width, level; HU) that mapped the input to 0..255, e.g. 400 40 for a mediastinal
-  /// window (default 0 0: the input is in HU).
+  /// window (default 0 0: the window the input carries in its field data "IntensityWindow",
+  /// amImageReader's IntensityWindow, or none: the input is in HU).
   vtkSetVector2Macro(InputWindow, double);
   vtkGetVector2Macro(InputWindow, double);
   ///@}

@@ -318,8 +318,10 @@ bool amReactionEikonalSolver::Simulate(vtkUnstructuredGrid* input, vtkPolyData* 
   if (sources.empty())
   {
     vtkErrorMacro(<< "no early site: "
-                  << (this->EarlySites == DURRER ? "no septal endocardium mid-way from apex to base"
-                                                 : "the stimulus sphere holds no heart node"));
+                  << (this->EarlySites != DURRER ? "the stimulus sphere holds no heart node"
+                         : rv.empty() ? "Durrer's septal sites face the RV, and the Tags hold no RV endocardium (no RV "
+                                        "blood pool in the mesh: set EarlySites to Stimulus for a heart without one)"
+                                      : "no septal endocardium mid-way from apex to base"));
     return false;
   }
   this->UpdateProgress(0.1);

@@ -5,11 +5,13 @@
 #include "amDicomSeries.h"
 #include "amITKBridge.h"
 #include "amInputCheck.h"
+#include "amIntensityWindow.h"
 #include "amMetaImageCheck.h"
 #include "amNiftiCheck.h"
 #include "amNrrdCheck.h"
 #include "amProvenance.h"
 
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -116,6 +118,7 @@ amImageReader::amImageReader()
   , SeriesUID(nullptr)
   , ResampleIrregularSeries(false)
   , OutputSliceSpacing(0.0)
+  , IntensityWindow{ 0.0, 0.0 }
 {
   this->SetNumberOfInputPorts(0);
   this->SetNumberOfOutputPorts(1);
@@ -332,7 +335,7 @@ bool amImageReader::Load()
   const std::string path(this->FileName);
   std::ostringstream key;
   key << path << "|" << (this->SeriesUID ? this->SeriesUID : "") << "|" << this->ResampleIrregularSeries << "|"
-      << this->OutputSliceSpacing;
+      << this->OutputSliceSpacing << "|" << this->IntensityWindow[0] << "," << this->IntensityWindow[1];
   if (this->Cache && this->CacheKey == key.str() && this->CacheTime >= this->GetMTime())
     return true;
   this->Cache = nullptr;
@@ -350,15 +353,44 @@ bool amImageReader::Load()
     this->Cache = nullptr;
     return false;
   }
+  if (!this->CheckWindow(path))
+  {
+    this->Cache = nullptr;
+    return false;
+  }
   const double* dm = this->Cache->GetDirectionMatrix()->GetData();
   AddString(this->Cache, "SourceOrientation", amITK::OrientationCode(dm));
   std::ostringstream params;
   params << "FileName=" << path;
   if (this->ResampleIrregularSeries)
     params << " ResampleIrregularSeries=1 OutputSliceSpacing=" << this->OutputSliceSpacing;
+  if (this->IntensityWindow[0] > 0.0)
+    params << " IntensityWindow=" << this->IntensityWindow[0] << "," << this->IntensityWindow[1];
   amProvenance::Record(this->Cache, nullptr, "amImageReader", params.str());
   this->CacheKey = key.str();
   this->CacheTime = this->GetMTime();
+  return true;
+}
+
+bool amImageReader::CheckWindow(const std::string& path)
+{
+  if (this->IntensityWindow[0] == 0.0 && this->IntensityWindow[1] == 0.0)
+    return true;
+  if (!(this->IntensityWindow[0] > 0.0) || !std::isfinite(this->IntensityWindow[1]))
+  {
+    vtkErrorMacro(<< "IntensityWindow " << this->IntensityWindow[0] << " " << this->IntensityWindow[1]
+                  << " is not a window: its width (HU) must be positive, its level finite.");
+    return false;
+  }
+  double range[2];
+  this->Cache->GetPointData()->GetScalars()->GetRange(range, 0);
+  if (range[0] < 0.0 || range[1] > 255.0)
+  {
+    vtkErrorMacro(<< "IntensityWindow says " << path << " holds 0..255 made through a window, but its values span "
+                  << range[0] << " .. " << range[1] << ".");
+    return false;
+  }
+  amIntensityWindow::Record(this->Cache, this->IntensityWindow);
   return true;
 }
 
@@ -394,4 +426,5 @@ void amImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SeriesUID: " << (this->SeriesUID ? this->SeriesUID : "(none)") << "\n";
   os << indent << "ResampleIrregularSeries: " << this->ResampleIrregularSeries << "\n";
   os << indent << "OutputSliceSpacing: " << this->OutputSliceSpacing << "\n";
+  os << indent << "IntensityWindow: " << this->IntensityWindow[0] << " " << this->IntensityWindow[1] << "\n";
 }

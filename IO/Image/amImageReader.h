@@ -69,6 +69,16 @@ public:
   vtkGetMacro(OutputSliceSpacing, double);
   ///@}
 
+  ///@{
+  /// The window (width, level; HU) a file that holds 0..255 was made through, when the file does
+  /// not say (a CT exported for viewing). Default 0 0: the file holds HU (or MR intensities) as
+  /// they are. Set, the reader checks the values lie in 0..255 and records the window in the
+  /// output's field data "IntensityWindow" (amIntensityWindow), from which the filters whose
+  /// settings are in HU (Snake Segmentation, Torso Segmentation) convert them.
+  vtkSetVector2Macro(IntensityWindow, double);
+  vtkGetVector2Macro(IntensityWindow, double);
+  ///@}
+
   /// Whether this reader can read the path (by extension, or a folder); a cheap test.
   static bool CanReadFile(const char* path);
 
@@ -83,11 +93,15 @@ protected:
   char* SeriesUID;
   bool ResampleIrregularSeries;
   double OutputSliceSpacing;
+  double IntensityWindow[2];
 
 private:
   bool Load();
   bool LoadFile(const std::string& path);
   bool LoadDicomSeries(const std::string& folder, const std::string& onlyFile);
+  /// Checks the values against IntensityWindow, when it is set, and records it; false (with an
+  /// error) when they leave 0..255 or the window is not one.
+  bool CheckWindow(const std::string& path);
 
   vtkSmartPointer<vtkImageData> Cache;
   vtkMTimeType CacheTime = 0;

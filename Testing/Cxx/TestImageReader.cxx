@@ -1,6 +1,7 @@
 // amImageReader on every real volume of ../shared/data (header facts from each SOURCE.md), on the
 // DICOM edge cases, and on broken input.
 #include "amImageReader.h"
+#include "amIntensityWindow.h"
 #include "amTestUtilities.h"
 
 #include "vtkDataArray.h"
@@ -329,4 +330,38 @@ TEST(ImageReader, TruncatedFileIsAnErrorNotGarbage)
   vtkNew<amTest::ErrorCatcher> errors;
   Read(reader, dir + "HeadMRVolume.mhd", errors);
   EXPECT_TRUE(errors->ErrorContains("HeadMRVolume.mhd")) << errors->AllErrors();
+}
+
+TEST(ImageReader, TheWindowOfAnEightBitScanIsCarriedOnTheImage)
+{
+  AM_REQUIRE_SHARED(path, "lidc_chest_ct_vtkjs/LIDC2.mha");
+  vtkNew<amImageReader> reader;
+  vtkNew<amTest::ErrorCatcher> errors;
+  vtkImageData* img = Read(reader, path, errors);
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  double window[2] = { -1, -1 };
+  EXPECT_FALSE(amIntensityWindow::Of(img, window)); // not stated: none recorded
+  reader->SetIntensityWindow(600, 300);
+  img = Read(reader, path, errors);
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  ASSERT_TRUE(amIntensityWindow::Of(img, window));
+  EXPECT_EQ(window[0], 600.0);
+  EXPECT_EQ(window[1], 300.0);
+  EXPECT_NE(FieldString(img, "Provenance").find("IntensityWindow=600,300"), std::string::npos);
+  // 100 HU of that window are 42.5 of its units; 0 HU, its floor, reads 0.
+  EXPECT_DOUBLE_EQ(amIntensityWindow::Width(window, 100.0), 42.5);
+  EXPECT_DOUBLE_EQ(amIntensityWindow::Level(window, 0.0), 0.0);
+  // Not a window, and a window stated for a scan in HU: clear errors, no output.
+  reader->SetIntensityWindow(-5, 40);
+  Read(reader, path, errors);
+  EXPECT_TRUE(errors->ErrorContains("is not a window")) << errors->AllErrors();
+  errors->Errors.clear();
+  const std::string hu = amTest::SharedData("totalseg_cardiac_ct/aorta_report/ct_cropped.nii.gz");
+  if (hu.empty())
+    return;
+  reader->SetIntensityWindow(400, 40);
+  Read(reader, hu, errors);
+  EXPECT_TRUE(errors->ErrorContains("holds 0..255 made through a window, but its values span -1078 .. 3343"))
+    << errors->AllErrors();
+  EXPECT_TRUE(errors->ErrorContains(hu)) << errors->AllErrors();
 }

@@ -3,6 +3,7 @@
 #include "Torso/amTorsoLabels.h"
 #include "Torso/amVoxelGrid.h"
 #include "amFigures.h"
+#include "amIntensityWindow.h"
 #include "amSnakeSegmentation.h"
 #include "amTestUtilities.h"
 #include "amThoraxPhantomModel.h"
@@ -276,6 +277,69 @@ TEST(TorsoSegmentation, AScanWindowedAboveFatFindsItsLungsByDefault)
   }
   EXPECT_GT(lungs[0], 0.95) << lungs[0] << " " << lungs[1];
   EXPECT_LT(lungs[1], lungs[0] - 0.02);
+}
+
+// The phantom's CT (3 mm) stored as a scan exported for viewing: 8 bits through a 400/40 window
+// (fat reads 38, soft tissue 128, blood 217); the window recorded on the image, as amImageReader's
+// IntensityWindow records it, serves both segmentations with their settings in HU: the torso
+// segmentation needs no InputWindow, and the snake's least interval of 100 HU is 63.75 of the
+// image's units (its intervals' upper bounds, mean + 100 HU, stand 36.25 units below those of the
+// same image without the window, where 100 is read as units).
+TEST(TorsoSegmentation, TheWindowTheImageCarriesServesBothSegmentations)
+{
+  vtkNew<amThoraxPhantomSource> phantom;
+  phantom->SetSpacing(3, 3, 3);
+  phantom->Update();
+  auto* ct = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(0));
+  auto* truth = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1));
+  const double window[2] = { 400.0, 40.0 };
+  std::vector<std::vector<double>> upper;
+  for (const bool carried : { true, false })
+  {
+    vtkNew<vtkImageData> windowed;
+    windowed->CopyStructure(ct);
+    vtkNew<vtkUnsignedCharArray> bytes;
+    bytes->SetNumberOfTuples(ct->GetNumberOfPoints());
+    for (vtkIdType v = 0; v < ct->GetNumberOfPoints(); ++v)
+    {
+      const double u = amIntensityWindow::Level(window, ct->GetPointData()->GetScalars()->GetComponent(v, 0));
+      bytes->SetValue(v, static_cast<unsigned char>(std::lround(std::clamp(u, 0.0, 255.0))));
+    }
+    windowed->GetPointData()->SetScalars(bytes);
+    if (carried)
+      amIntensityWindow::Record(windowed, window);
+    vtkNew<amSnakeSegmentation> snake;
+    snake->SetInputData(windowed);
+    AddMainJobClicks(snake, true);
+    vtkNew<amTorsoSegmentation> torso;
+    torso->SetInputData(windowed);
+    torso->SetOrganConnection(snake->GetOutputPort());
+    if (!carried)
+      torso->SetInputWindow(window[0], window[1]);
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(torso);
+    torso->Update();
+    ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+    auto* seg = vtkImageData::SafeDownCast(torso->GetOutputDataObject(0));
+    vtkDataArray* intervals = snake->GetOutput()->GetFieldData()->GetArray("Thresholds");
+    ASSERT_NE(intervals, nullptr);
+    upper.emplace_back();
+    for (vtkIdType t = 0; t < intervals->GetNumberOfTuples(); ++t)
+      upper.back().push_back(intervals->GetComponent(t, 2));
+    std::cout << "[ figures  ] 400/40 window " << (carried ? "carried by the image" : "not carried, read as units")
+              << ": LV " << Dice(seg, truth, 6) << ", RV " << Dice(seg, truth, 7) << ", myocardium "
+              << Dice(seg, truth, 5) << ", lungs " << Dice(seg, truth, 3) << " " << Dice(seg, truth, 4) << "\n";
+    if (carried)
+    {
+      for (const int label : { 3, 4, 6, 7, 8 })
+        EXPECT_GE(Dice(seg, truth, label), 0.9) << label;
+      EXPECT_GE(Dice(seg, truth, 5), 0.85);
+    }
+  }
+  ASSERT_EQ(upper[0].size(), 3u); // LV, RV, aorta
+  ASSERT_EQ(upper[1].size(), 3u);
+  for (std::size_t t = 0; t < 3; ++t)
+    EXPECT_NEAR(upper[1][t] - upper[0][t], 100.0 - 63.75, 1e-6) << t;
 }
 
 TEST(TorsoSegmentation, TheAortaIsFoundWithoutItsClick)

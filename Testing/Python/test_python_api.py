@@ -143,6 +143,51 @@ class PhantomFromPython(unittest.TestCase):
         self.assertEqual(back.GetDimensions(), (160, 120, 105))
         np.testing.assert_array_equal(labels_of(back), labels_of(self.src.GetOutputDataObject(1)))
 
+    def test_the_ventricles_heart_from_python(self):
+        heart = anatomesh.amThoraxPhantomSource()
+        heart.SetSpacing(2, 2, 2)
+        heart.SetHeartShape(anatomesh.amThoraxPhantomSource.VENTRICLES)
+        for label in (5, 6, 7):
+            centre = [0.0, 0.0, 0.0]
+            heart.GetOrganCenter(label, centre)
+            self.assertEqual(heart.GetLabelAtPoint(*centre), label)
+        self.assertAlmostEqual(heart.GetExactVolume(6) / 1000.0, 89.6, delta=0.1)  # mL: the LV's cavity
+        self.assertLess(heart.GetExactVolume(5), 0)  # the muscle round the RV's crescent: not closed-form
+
+    def test_a_windowed_scan_carries_its_window(self):
+        # The phantom's CT stored as a scan exported for viewing: 8 bits through a 600/300 window.
+        from vtkmodules.util.numpy_support import numpy_to_vtk
+        from vtkmodules.vtkCommonDataModel import vtkImageData
+        ct = self.src.GetOutputDataObject(0)
+        units = np.clip(np.round(vtk_to_numpy(ct.GetPointData().GetScalars()) * 255.0 / 600.0), 0, 255)
+        image = vtkImageData()
+        image.CopyStructure(ct)
+        image.GetPointData().SetScalars(numpy_to_vtk(units.astype(np.uint8), deep=1))
+        path = os.path.join(TMP, "py_windowed.nii.gz")
+        writer = anatomesh.amImageWriter()
+        writer.SetInputData(image)
+        writer.SetFileName(path)
+        self.assertEqual(writer.Write(), 1)
+        reader = anatomesh.amImageReader()
+        reader.SetFileName(path)
+        reader.SetIntensityWindow(600, 300)
+        reader.Update()
+        window = reader.GetOutput().GetFieldData().GetArray("IntensityWindow")
+        self.assertEqual(window.GetTuple2(0), (600.0, 300.0))
+        # A window stated for a scan in HU is refused, naming the file.
+        errors = []
+        hu = anatomesh.amImageReader()
+        hu.AddObserver("ErrorEvent", lambda obj, event: errors.append(obj.GetClassName()))
+        writer.SetInputData(ct)
+        path = os.path.join(TMP, "py_hu.nii.gz")
+        writer.SetFileName(path)
+        self.assertEqual(writer.Write(), 1)
+        hu.SetFileName(path)
+        hu.SetIntensityWindow(600, 300)
+        hu.Update()
+        self.assertTrue(errors)
+        self.assertEqual(hu.GetOutput().GetNumberOfPoints(), 0)
+
     def test_time_series_on_worker_threads(self):
         """A time series queued on amConcurrentXMLWriter: every frame readable, with its own values."""
         from vtkmodules.vtkIOXML import vtkXMLImageDataReader

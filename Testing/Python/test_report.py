@@ -42,7 +42,7 @@ class Report(unittest.TestCase):
         env = dict(os.environ)
         env.pop("DISPLAY", None)  # as on a server or in CI: the report starts its own Xvfb
         cls.result = run("run", os.path.join(SOURCE, "Examples", "Pipelines", "thorax.xml"), "--output", cls.out,
-                         "--set", "spacing=6", "--set", "tolerance=1.5", "--set", "size=10", "--report", env=env)
+                         "--set", "spacing=4", "--set", "tolerance=1.5", "--set", "size=10", "--report", env=env)
 
     def test_run_writes_the_report_with_every_picture(self):
         code, stdout, stderr = self.result
