@@ -401,9 +401,10 @@ void amThoraxPhantomModel::GetOrganCenter(int label, double center[3]) const
     {
       // In the free wall of the left ventricle, half-way between the blood pool and the epicardium.
       const double local[3] = { 47.0, 8.0, -3.0 };
-      LocalToWorld(this->Heart, local, tmp);
       if (this->HeartShape == Ventricles)
         this->AnatomicalVentricles.FreeWallCenter(tmp);
+      else
+        LocalToWorld(this->Heart, local, tmp);
       c = tmp;
       break;
     }
