@@ -28,7 +28,7 @@ phantom.SetSpacing(spacing, spacing, spacing)
 snake = anatomesh.amSnakeSegmentation()
 snake.SetInputConnection(phantom.GetOutputPort(0))  # the CT, in HU
 snake.SetMode(mode)
-organs = [6, 7, 8, 3, 4]  # LV blood, RV blood, aorta, right lung, left lung (precedence order)
+organs = [6, 7, 8, 3, 4]  # LV blood, RV blood, aorta, right lung, left lung (the order breaks ties)
 # The clicks, as ParaView's Seed Points handles give them: a position and a label per seed.
 seeds = anatomesh.amSeedPointsSource()
 seeds.SetNumberOfSeeds(len(organs) + 1)

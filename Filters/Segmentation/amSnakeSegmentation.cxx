@@ -4,6 +4,7 @@
 #include "amInputCheck.h"
 #include "amIntensityWindow.h"
 #include "amProvenance.h"
+#include "amSeedCompetition.h"
 #include "amSnakeTracker.h"
 #include "amThreading.h"
 
@@ -204,27 +205,6 @@ std::vector<int> LabelsInOrder(const std::vector<Seed>& seeds)
   return order;
 }
 
-// Pastes a contour (inside: its region of interest at lo, of the given size) into the label map
-// where no earlier label is; returns the voxels it took.
-std::size_t Paste(const std::vector<unsigned char>& inside, const int lo[3], const int rd[3], const int dims[3],
-  int label, unsigned char* out)
-{
-  std::size_t voxels = 0;
-  for (int k = 0; k < rd[2]; ++k)
-    for (int j = 0; j < rd[1]; ++j)
-      for (int i = 0; i < rd[0]; ++i)
-        if (inside[(static_cast<size_t>(k) * rd[1] + j) * rd[0] + i])
-        {
-          const vtkIdType id = (static_cast<vtkIdType>(k + lo[2]) * dims[1] + (j + lo[1])) * dims[0] + (i + lo[0]);
-          if (out[id] == 0)
-          {
-            out[id] = static_cast<unsigned char>(label);
-            ++voxels;
-          }
-        }
-  return voxels;
-}
-
 // The tracker's parameters: the filter's properties of the same names; on an image that carries
 // the window it was stored through (amIntensityWindow), its intensities in HU become the image's.
 amSnakeTracker::Parameters TrackerParameters(amSnakeSegmentation* f, vtkImageData* image)
@@ -290,6 +270,7 @@ amSnakeSegmentation::amSnakeSegmentation()
   , MaximumAreaChange(2.0)
   , MinimumSliceArea(4.0)
   , AllowAirSeeds(false)
+  , SeedsCompete(true)
   , RefineToHalfContrast(true)
   , CoarseToFine(true)
   , AdaptiveSliceStatistics(false)
@@ -356,6 +337,8 @@ std::string amSnakeSegmentation::ProvenanceParameters(std::size_t seedCount) con
          << " ContourModel=" << (this->ContourModel == Polar ? "Polar" : "LevelSet");
   if (this->Mode == ThreeD)
     params << " CoarseToFine=" << this->CoarseToFine;
+  if (!this->SeedsCompete)
+    params << " SeedsCompete=0";
   if (this->ContourModel == Polar)
     params << " OutsideThreshold=" << this->OutsideThreshold << " EdgeContrast=" << this->EdgeContrast
            << " MaximumRadius=" << this->MaximumRadius << " MaximumGrowth=" << this->MaximumGrowth
@@ -461,6 +444,7 @@ int amSnakeSegmentation::RequestData(
     },
     [this](double f) { this->UpdateProgress(f); }, [this]() { return this->GetAbortExecute() != 0; });
 
+  std::vector<amSeedCompetition::Organ> regions(order.size());
   for (size_t li = 0; li < order.size(); ++li)
   {
     const int label = order[li];
@@ -482,17 +466,27 @@ int amSnakeSegmentation::RequestData(
         vtkErrorMacro("Level-set evolution failed for label " << label << ": " << tracker.Error);
       return 0;
     }
-    const double tlo = tracker.Lower(), thi = tracker.Upper();
-    thresholds->InsertNextTuple3(label, tlo, thi);
-
-    // Paste into the label map: earlier labels keep their voxels.
-    const std::size_t voxels = Paste(tracker.Inside(), organ.Lo, organ.Size, dims, label, out);
-    volumes->InsertNextTuple2(label, voxels * voxelVolume);
-    if (voxels == 0)
-      vtkWarningMacro("Label " << label << ": the contour vanished (no voxel in [" << tlo << ", " << thi
-                               << "] around its seeds, or every voxel already taken by an earlier label).");
-    organ.Tracker.reset();
+    thresholds->InsertNextTuple3(label, tracker.Lower(), tracker.Upper());
+    amSeedCompetition::Organ& region = regions[li];
+    region.Label = label;
+    std::copy(organ.Lo, organ.Lo + 3, region.Lo);
+    std::copy(organ.Size, organ.Size + 3, region.Size);
+    region.Inside = &tracker.Inside();
+    for (const std::array<double, 3>& s : organSeeds[li])
+      region.Seeds.push_back({ static_cast<int>(std::lround(s[0])), static_cast<int>(std::lround(s[1])),
+        static_cast<int>(std::lround(s[2])) });
   }
+  // The label map: shared voxels to the nearest seeds (or by precedence).
+  const std::vector<std::size_t> voxels = amSeedCompetition::Paste(regions, dims, spacing, this->SeedsCompete, out);
+  for (size_t li = 0; li < order.size(); ++li)
+  {
+    volumes->InsertNextTuple2(order[li], voxels[li] * voxelVolume);
+    if (voxels[li] == 0)
+      vtkWarningMacro("Label " << order[li] << ": the contour vanished (no voxel in [" << organs[li].Tracker->Lower()
+                               << ", " << organs[li].Tracker->Upper()
+                               << "] around its seeds, or every voxel taken by another label).");
+  }
+  organs.clear();
   this->UpdateProgress(1.0);
 
   output->CopyStructure(input);

@@ -7,8 +7,7 @@
  * set whose point-data array "Label" (SeedLabelArrayName) gives each point's label (SeedLabel when
  * absent), so ParaView's point widgets and Python lists both work.
  *
- * For each label, in the order its seeds first appear (that order is the precedence: where two
- * organs would overlap, the earlier one keeps the voxel, so organs never overlap):
+ * For each label (the order its seeds first appear in is its precedence):
  * 1. the image is cropped to the seeds' bounding box grown by MaximumDistance (mm) and smoothed by
  *    a Gaussian of SmoothingSigma (mm);
  * 2. the intensity of the organ is sampled in balls of SeedRadius (mm) around its seeds; the
@@ -29,6 +28,12 @@
  *    twice SmoothingSigma) gives the
  *    surroundings' level; the threshold facing it moves half-way (the partial-volume boundary)
  *    and the contour evolves again from where it stopped.
+ * Organs never overlap. Where their regions do (two chambers of the same contrast joined by a
+ * valve's opening, or by a streak of contrast across a septum), with SeedsCompete (default on)
+ * each shared voxel goes to the organ whose seeds reach it first along a path inside its own
+ * region, the earlier organ on a tie (amSeedCompetition): each chamber keeps its cavity and the
+ * boundary lies between the seeds; so a click in the left atrium parts it from the LV's click.
+ * With SeedsCompete off, the earlier organ keeps every voxel it claims.
  * Mode ThreeD (default) evolves one 3-D surface. Mode SliceBySlice is the paper's propagation:
  * each seed's slice (along SliceAxis) is segmented in 2-D, then each next slice starts from the
  * previous contour (eroded by one pixel) and keeps only what overlaps it; propagation stops in a
@@ -254,6 +259,14 @@ public:
   ///@}
 
   ///@{
+  /// Where organs' regions overlap, each shared voxel goes to the organ whose seeds reach it first
+  /// through its own region (default on); off, to the organ whose seeds come first.
+  vtkSetMacro(SeedsCompete, bool);
+  vtkGetMacro(SeedsCompete, bool);
+  vtkBooleanMacro(SeedsCompete, bool);
+  ///@}
+
+  ///@{
   /// Accept seeds whose neighbourhood is below -950 (air on CT) (default off).
   vtkSetMacro(AllowAirSeeds, bool);
   vtkGetMacro(AllowAirSeeds, bool);
@@ -289,6 +302,7 @@ protected:
   double MaximumAreaChange;
   double MinimumSliceArea;
   bool AllowAirSeeds;
+  bool SeedsCompete;
   bool RefineToHalfContrast;
   bool CoarseToFine;
   bool AdaptiveSliceStatistics;

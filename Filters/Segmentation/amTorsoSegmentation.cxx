@@ -217,7 +217,9 @@ void AddFieldData(vtkImageData* output, const std::vector<double>& volume, const
   vtkNew<vtkStringArray> names;
   names->SetName("LabelNames");
   for (int l = 0; l <= top; ++l)
-    names->InsertNextValue(l < amThoraxPhantomModel::NumberOfLabels ? amThoraxPhantomModel::LabelName(l) : "Organ");
+    names->InsertNextValue(l < amThoraxPhantomModel::NumberOfLabels ? amThoraxPhantomModel::LabelName(l)
+        : l == amTorso::Atria                                       ? "Atria"
+                                                                    : "Organ");
   output->GetFieldData()->AddArray(names);
   vtkNew<vtkDoubleArray> volumes;
   volumes->SetName("LabelVolumes");

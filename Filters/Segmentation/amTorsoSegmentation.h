@@ -12,7 +12,10 @@
  *
  * The output uses the thorax phantom's label scheme (names in field data "LabelNames"):
  * 0 outside the body, 1 soft tissue, 2 fat, 3 right lung, 4 left lung, 5 myocardium, 6 LV blood,
- * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone). Steps:
+ * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone), and 11 the atria's blood where input 1
+ * holds it (a click in the left atrium, label 11: SnakeSegmentation parts it from the LV's; no wall
+ * is built round it, and the simulation takes it as blood that the ventricles' base opens into).
+ * Steps:
  * 0. a scan noisier than MaximumNoise is smoothed to four fifths of it (the least Gaussian); its
  *    bone is read from the unsmoothed intensities (five noise deviations above the class below, and
  *    the voxels beside it more than half bone), as the smoothing takes thin bones below the bone class;

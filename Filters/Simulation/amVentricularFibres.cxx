@@ -98,7 +98,7 @@ amVentricularFibres::amVentricularFibres()
   , HeartRegions{ 5 }
   , LVBloodRegions{ 6 }
   , RVBloodRegions{ 7 }
-  , BaseRegions{ 8 }
+  , BaseRegions{ 8, 11 }
   , HelixEndocardium(60.0)
   , HelixEpicardium(-60.0)
   , TransverseEndocardium(0.0)

@@ -6,8 +6,8 @@
  * The heart is the cells whose RegionArrayName ("Region") is in HeartRegions (default 5, the
  * myocardium). Its boundary triangles are tagged from the region across them
  * (amVentricularTags): LVBloodRegions (default 6) give the LV endocardium (tag 1),
- * RVBloodRegions (default 7) the RV endocardium (2), BaseRegions (default 8, the aorta; add the
- * atria and the pulmonary artery where the label map has them) the base (4), anything else the
+ * RVBloodRegions (default 7) the RV endocardium (2), BaseRegions (default 8 and 11, the aorta and
+ * the atria; add the pulmonary artery where the label map has it) the base (4), anything else the
  * epicardium (3). Fibres and sheets then follow Laplace-Dirichlet rules (amRuleBasedFibres, after
  * Bayer et al. 2012): the helix angle goes linearly with the transmural depth from
  * HelixEndocardium (+60 degrees) to HelixEpicardium (-60 degrees), the sheets' transverse angle from

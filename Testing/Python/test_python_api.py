@@ -154,6 +154,35 @@ class PhantomFromPython(unittest.TestCase):
         self.assertAlmostEqual(heart.GetExactVolume(6) / 1000.0, 89.6, delta=0.1)  # mL: the LV's cavity
         self.assertLess(heart.GetExactVolume(5), 0)  # the muscle round the RV's crescent: not closed-form
 
+    def test_clicked_chambers_share_their_contrast_by_the_nearest_click(self):
+        # A ventricle and its atrium (two balls of one contrast joined by an opening), a click in
+        # each: each keeps its own chamber; by precedence alone the first takes both.
+        from vtkmodules.util.numpy_support import numpy_to_vtk
+        from vtkmodules.vtkCommonDataModel import vtkImageData
+        z, y, x = np.mgrid[-20:21, -20:21, -35:36].astype(float)
+        ventricle = (x + 14) ** 2 + y ** 2 + z ** 2 <= 144
+        atrium = (x - 14) ** 2 + y ** 2 + z ** 2 <= 144
+        opening = (np.abs(x) < 14) & (y ** 2 + z ** 2 <= 36)
+        hu = np.where(ventricle | atrium | opening, 300.0, 40.0).astype(np.float32)
+        image = vtkImageData()
+        image.SetDimensions(71, 41, 41)
+        image.SetOrigin(-35, -20, -20)
+        image.GetPointData().SetScalars(numpy_to_vtk(hu.ravel(), deep=1))
+        found = {}
+        for compete in (True, False):
+            snake = anatomesh.amSnakeSegmentation()
+            self.assertTrue(snake.GetSeedsCompete())  # the default
+            snake.SetSeedsCompete(compete)
+            snake.SetInputData(image)
+            snake.AddSeed(-14, 0, 0, 6)
+            snake.AddSeed(14, 0, 0, 11)
+            snake.Update()
+            found[compete] = vtk_to_numpy(snake.GetOutput().GetPointData().GetScalars()).reshape(hu.shape)
+        dice = lambda a, b: 2.0 * (a & b).sum() / (a.sum() + b.sum())
+        self.assertGreater(dice(found[True] == 6, ventricle), 0.95)
+        self.assertGreater(dice(found[True] == 11, atrium), 0.95)
+        self.assertLess(dice(found[False] == 11, atrium), 0.01)
+
     def test_a_windowed_scan_carries_its_window(self):
         # The phantom's CT stored as a scan exported for viewing: 8 bits through a 600/300 window.
         from vtkmodules.util.numpy_support import numpy_to_vtk

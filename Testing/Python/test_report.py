@@ -70,9 +70,11 @@ class Report(unittest.TestCase):
         _, _, rgb = pixels(os.path.join(self.out, "report", "mesh.png"))
         colours = {tuple(int(round(255 * c)) for c in rgb_) for rgb_ in scenes.PALETTE[:10]}
         self.assertGreaterEqual(len(colours & {tuple(p) for p in np.unique(rgb, axis=0).tolist()}), 10)
-        # Tables: the paper's Table 1 beside ours, region names, volumes, interface distances.
+        # Tables: the paper's Table 1 beside ours, region names, volumes (each organ beside an adult's),
+        # interface distances.
         for text in ("Quality per region (the paper&#x27;s Table 1)", "paper (whole mesh)", "47.9", "5 Myocardium",
-                     "Region volumes", "Largest distance to the input per interface", "whole mesh",
+                     "Region volumes", "adult range (cm3)", "1000-4000", "Largest distance to the input per interface",
+                     "whole mesh",
                      "Pipeline variables"):
             self.assertIn(text, page)
         self.assertEqual([f for f in os.listdir(os.path.join(self.out, "report")) if ".tmp" in f], [])

@@ -17,8 +17,10 @@
 
 namespace amTorso
 {
-/// The output labels are the phantom's (amThoraxPhantomModel::Label).
+/// The output labels are the phantom's (amThoraxPhantomModel::Label), and the atria's blood where
+/// the organ map holds it (the phantom has no atria).
 using Phantom = amThoraxPhantomModel;
+constexpr int Atria = 11;
 
 /// The classes of amIntensityClassifier's CT defaults.
 enum Class : std::uint8_t

@@ -17,7 +17,7 @@ import re
 import sys
 import time
 
-from . import marker
+from . import adult_volumes, marker
 from .options import variables_of
 
 
@@ -55,22 +55,7 @@ class _Progress:
         self.stream.flush()
 
 
-# Adult reference volumes (cm3) of the organs of the thorax label scheme, for the summary: lungs at
-# inspiration (each 1-4 L), the ventricles' wall (LV and RV together, 100-350 g at 1.05 g/cm3),
-# end-diastolic blood pools (LV 65-240 mL, more where the segmentation holds the left atrium;
-# RV 60-260 mL), the thoracic aorta.
-ADULT_VOLUMES = {"RightLung": (1000, 4000), "LeftLung": (900, 3600), "Myocardium": (100, 350),
-                 "LeftVentricleBlood": (65, 240), "RightVentricleBlood": (60, 260), "Aorta": (20, 200)}
 CLASS_NAMES = ["air", "lung", "fat", "soft tissue", "contrast blood", "bone"]
-
-
-def _volume_remark(name, cm3):
-    """The organ's adult range, and whether the volume lies outside it."""
-    if name not in ADULT_VOLUMES:
-        return ""
-    low, high = ADULT_VOLUMES[name]
-    where = " (below)" if cm3 < low else " (above)" if cm3 > high else ""
-    return "   adult %d-%d cm3%s" % (low, high, where)
 
 
 # A healthy adult's ECG (the ranges a cardiologist reads against).
@@ -119,7 +104,7 @@ def _describe(data):
                     continue
                 name = names.GetValue(int(label)) if names is not None and label < names.GetNumberOfValues() else ""
                 cm3 = counts[label] * voxel / 1000.0
-                lines.append("        label %3d %-22s %12.1f cm3%s" % (label, name, cm3, _volume_remark(name, cm3)))
+                lines.append("        label %3d %-22s %12.1f cm3%s" % (label, name, cm3, adult_volumes.remark(name, cm3)))
             classes = data.GetFieldData().GetArray("TissueClasses")
             if classes is not None and classes.GetNumberOfComponents() == 6:
                 found = ["%s %.0f+-%.0f HU" % (CLASS_NAMES[c], classes.GetComponent(c, 1), classes.GetComponent(c, 2))

@@ -2,6 +2,7 @@
 distances, Dice, the run's variables."""
 import html
 
+from .. import adult_volumes
 from .collect import base
 
 # The CEMRACS 2004 paper's whole-mesh row (Table 1): vertices, tetrahedra, mean and worst quality.
@@ -49,14 +50,19 @@ def quality(head, rows, names=None):
 
 
 def region_volumes(array, names=None):
-    """RegionVolumes field data: label, voxel mm3, mesh mm3, relative difference."""
+    """RegionVolumes field data: label, voxel mm3, mesh mm3, relative difference; each organ beside its
+    adult range."""
     rows = []
     for i in range(array.GetNumberOfTuples()):
         label, voxels, mesh, diff = array.GetTuple4(i)
-        rows.append([("%d %s" % (label, _name(names, int(label)))).strip(), "%.4g" % (voxels / 1000.0),
-                     "%.4g" % (mesh / 1000.0), "%+.2f %%" % (100.0 * diff)])
-    return _table(["region", "voxels (cm3)", "mesh (cm3)", "difference"], rows,
-                  "Region volumes: the mesh against its label map")
+        name = _name(names, int(label))
+        adult = adult_volumes.RANGES.get(name)
+        where = adult_volumes.verdict(name, mesh / 1000.0)
+        rows.append([("%d %s" % (label, name)).strip(), "%.4g" % (voxels / 1000.0), "%.4g" % (mesh / 1000.0),
+                     "%+.2f %%" % (100.0 * diff),
+                     "%d-%d%s" % (adult[0], adult[1], " (%s)" % where if where else "") if adult else ""])
+    return _table(["region", "voxels (cm3)", "mesh (cm3)", "difference", "adult range (cm3)"], rows,
+                  "Region volumes: the mesh against its label map, each organ beside an adult's")
 
 
 def interfaces(array, tolerance=None, names=None, limit=15):

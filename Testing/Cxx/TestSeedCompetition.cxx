@@ -1,0 +1,141 @@
+// Organs whose regions overlap share their voxels by the nearest seeds: two chambers of one
+// contrast joined by an opening (a ventricle and its atrium), each clicked.
+#include "amSeedCompetition.h"
+#include "amSnakeSegmentation.h"
+#include "amTestUtilities.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace
+{
+// Two balls of contrast (300 HU, radius 12 mm, centres at x = -14 and +14 mm) joined by an
+// opening 12 mm across, in soft tissue (40 HU), with 10 HU of noise; 1 mm voxels.
+constexpr double Radius = 12.0, Centre = 14.0, Opening = 6.0;
+
+bool InBall(double x, double y, double z, double cx)
+{
+  return (x - cx) * (x - cx) + y * y + z * z <= Radius * Radius;
+}
+
+vtkSmartPointer<vtkImageData> TwoChambers()
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(71, 41, 41);
+  image->SetOrigin(-35, -20, -20);
+  image->SetSpacing(1, 1, 1);
+  vtkNew<vtkFloatArray> hu;
+  hu->SetName("CT");
+  hu->SetNumberOfTuples(image->GetNumberOfPoints());
+  std::mt19937 random(7);
+  std::normal_distribution<float> noise(0.0f, 10.0f);
+  for (vtkIdType id = 0; id < image->GetNumberOfPoints(); ++id)
+  {
+    double p[3];
+    image->GetPoint(id, p);
+    const bool opening = std::abs(p[0]) < Centre && p[1] * p[1] + p[2] * p[2] <= Opening * Opening;
+    const bool blood = InBall(p[0], p[1], p[2], -Centre) || InBall(p[0], p[1], p[2], Centre) || opening;
+    hu->SetValue(id, (blood ? 300.0f : 40.0f) + noise(random));
+  }
+  image->GetPointData()->SetScalars(hu);
+  return image;
+}
+
+// Dice of a label against one ball.
+double BallDice(vtkImageData* labels, int label, double cx)
+{
+  long both = 0, seg = 0, ball = 0;
+  for (vtkIdType id = 0; id < labels->GetNumberOfPoints(); ++id)
+  {
+    double p[3];
+    labels->GetPoint(id, p);
+    const bool a = labels->GetPointData()->GetScalars()->GetComponent(id, 0) == label;
+    const bool b = InBall(p[0], p[1], p[2], cx);
+    both += a && b;
+    seg += a;
+    ball += b;
+  }
+  return 2.0 * both / static_cast<double>(seg + ball);
+}
+}
+
+TEST(SeedCompetition, EachClickedChamberKeepsItsCavity)
+{
+  const auto image = TwoChambers();
+  for (const bool compete : { true, false })
+  {
+    vtkNew<amSnakeSegmentation> snake;
+    snake->SetInputData(image);
+    snake->AddSeed(-Centre, 0, 0, 6); // the ventricle
+    snake->AddSeed(Centre, 0, 0, 11); // the atrium
+    snake->SetSeedsCompete(compete);
+    vtkNew<amTest::ErrorCatcher> errors;
+    errors->Watch(snake);
+    snake->Update();
+    ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+    vtkImageData* labels = snake->GetOutput();
+    if (compete)
+    {
+      // Each snake alone fills both chambers; competing, each keeps its own, parted in the opening.
+      EXPECT_GE(BallDice(labels, 6, -Centre), 0.95);
+      EXPECT_GE(BallDice(labels, 11, Centre), 0.95);
+      double lo[2] = { 1e9, 1e9 }, hi[2] = { -1e9, -1e9 };
+      for (vtkIdType id = 0; id < labels->GetNumberOfPoints(); ++id)
+      {
+        const int l = static_cast<int>(labels->GetPointData()->GetScalars()->GetComponent(id, 0));
+        if (l == 6 || l == 11)
+        {
+          const double x = labels->GetPoint(id)[0];
+          lo[l == 11] = std::min(lo[l == 11], x);
+          hi[l == 11] = std::max(hi[l == 11], x);
+        }
+      }
+      EXPECT_LE(hi[0], 2.0); // the ventricle ends in the opening's middle
+      EXPECT_GE(lo[1], -2.0);
+      EXPECT_TRUE(errors->Warnings.empty());
+    }
+    else
+    {
+      // By precedence the first label takes both chambers, the atrium's click included: the
+      // atrium keeps a few voxels of its rim.
+      EXPECT_LT(BallDice(labels, 6, -Centre), 0.7);
+      EXPECT_LT(BallDice(labels, 11, Centre), 0.01);
+    }
+  }
+}
+
+TEST(SeedCompetition, SharedVoxelsGoToTheNearestSeedAndTiesToTheEarlierOrgan)
+{
+  // A row of 9 voxels that both organs claim whole, seeds at either end (spacing 2 mm along x):
+  // the first four are the first organ's, the last four the second's, the middle one (equally
+  // far) the earlier organ's; a voxel only one organ claims is that organ's.
+  const int dims[3] = { 10, 1, 1 };
+  const double spacing[3] = { 2, 1, 1 };
+  std::vector<unsigned char> all(9, 1), wider(10, 1);
+  std::vector<amSeedCompetition::Organ> organs(2);
+  organs[0].Label = 3;
+  organs[0].Size[0] = 9;
+  organs[0].Size[1] = organs[0].Size[2] = 1;
+  organs[0].Inside = &all;
+  organs[0].Seeds = { { 0, 0, 0 } };
+  organs[1].Label = 5;
+  organs[1].Size[0] = 10;
+  organs[1].Size[1] = organs[1].Size[2] = 1;
+  organs[1].Inside = &wider;
+  organs[1].Seeds = { { 8, 0, 0 } };
+  std::vector<unsigned char> out(10, 0);
+  const auto voxels = amSeedCompetition::Paste(organs, dims, spacing, true, out.data());
+  EXPECT_EQ(std::vector<unsigned char>(out), (std::vector<unsigned char>{ 3, 3, 3, 3, 3, 5, 5, 5, 5, 5 }));
+  EXPECT_EQ(voxels[0], 5u);
+  EXPECT_EQ(voxels[1], 5u);
+  std::fill(out.begin(), out.end(), 0);
+  amSeedCompetition::Paste(organs, dims, spacing, false, out.data());
+  EXPECT_EQ(std::vector<unsigned char>(out), (std::vector<unsigned char>{ 3, 3, 3, 3, 3, 3, 3, 3, 3, 5 }));
+}
