@@ -8,6 +8,8 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
@@ -138,4 +140,27 @@ TEST(SeedCompetition, SharedVoxelsGoToTheNearestSeedAndTiesToTheEarlierOrgan)
   std::fill(out.begin(), out.end(), 0);
   amSeedCompetition::Paste(organs, dims, spacing, false, out.data());
   EXPECT_EQ(std::vector<unsigned char>(out), (std::vector<unsigned char>{ 3, 3, 3, 3, 3, 3, 3, 3, 3, 5 }));
+}
+
+TEST(SeedCompetition, TheSameLabelsWhateverTheThreadCount)
+{
+  // The organs' snakes run at once, one per thread; the shared voxels are dealt after, in one
+  // order: one thread or two give the same bytes.
+  const auto image = TwoChambers();
+  std::vector<std::vector<unsigned char>> runs;
+  for (const int threads : { 1, 2 })
+  {
+    vtkSMPTools::Initialize(threads);
+    vtkNew<amSnakeSegmentation> snake;
+    snake->SetInputData(image);
+    snake->AddSeed(-Centre, 0, 0, 6);
+    snake->AddSeed(Centre, 0, 0, 11);
+    snake->AddSeed(Centre + 3, 2, 0, 7); // a third organ sharing the atrium's contrast
+    snake->Update();
+    auto* labels = vtkUnsignedCharArray::SafeDownCast(snake->GetOutput()->GetPointData()->GetScalars());
+    ASSERT_NE(labels, nullptr);
+    runs.emplace_back(labels->GetPointer(0), labels->GetPointer(0) + labels->GetNumberOfValues());
+  }
+  vtkSMPTools::Initialize(2);
+  EXPECT_TRUE(runs[0] == runs[1]);
 }
