@@ -156,7 +156,8 @@ class ChestCTToECG(unittest.TestCase):
         self.assertTrue(150 < volume[9] < 500, volume)
         self.assertTrue(150 < volume[10] < 1000, volume)
         # The aorta has no click: it is found as the contrast running down in front of the spine, with
-        # its arch and ascending part (where the LV's snake has not taken the root), 20-250 cm3.
+        # its arch and the top of its ascending part (the left atrium's snake takes the root and the
+        # rest: docs/limits.md), 20-250 cm3.
         self.assertTrue(20 < volume.get(8, 0.0) < 250, volume)
         record(self, "chest_ct.aorta_volume", volume[8], "cm3", [20, 250])
         record(self, "chest_ct.spine_volume", volume[9], "cm3", [150, 500])
