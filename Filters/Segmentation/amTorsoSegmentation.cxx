@@ -409,9 +409,11 @@ amVoxelMask ContrastOutsideOrgans(vtkDataArray* classTable, const std::vector<st
   return contrast;
 }
 
-// The aorta where the organs hold none and the scan shows contrast (amTorso::AortaFromContrast).
+// The aorta where the scan shows contrast (amTorso::AortaFromContrast), of the contrast outside the
+// organs: where clicks give the aorta, their snake may stop short of its descending part (its
+// region ends MaximumDistance from the clicks), and the tube in front of the spine completes it.
 // Labels it Aorta in place; true when found.
-bool AortaWhereNoClick(vtkImageData* image, const amVoxelGrid& g, const amVoxelMask& contrast, int superiorAxis,
+bool AortaInFrontOfTheSpine(vtkImageData* image, const amVoxelGrid& g, const amVoxelMask& contrast, int superiorAxis,
   std::vector<std::uint8_t>& labels)
 {
   double world[3][4];
@@ -625,10 +627,11 @@ int amTorsoSegmentation::RequestData(
 
   std::vector<bool> organ = PasteOrgans(organs, labels);
 
-  if (this->FindAorta && !organ[amThoraxPhantomModel::Aorta])
-    organ[amThoraxPhantomModel::Aorta] = AortaWhereNoClick(input, grid,
+  if (this->FindAorta &&
+    AortaInFrontOfTheSpine(input, grid,
       ContrastOutsideOrgans(classTable, classes, hu->GetPointer(0), this->BloodPoolLabels, labels),
-      tissueParameters.SuperiorAxis, labels);
+      tissueParameters.SuperiorAxis, labels))
+    organ[amThoraxPhantomModel::Aorta] = true;
 
   const amTorso::WallParameters wall = WallSettings(this);
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);

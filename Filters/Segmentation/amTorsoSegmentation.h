@@ -57,8 +57,9 @@
  *    vertebral body, and the pieces beyond that end within 20 mm (transverse processes); the ribs
  *    joined to the vertebrae at their joints, and every other bone component, are ribs (or other
  *    bone);
- * 5. the organs of input 1 are written over these; where they hold no aorta (label 8) and the scan
- *    shows contrast blood, FindAorta labels it from the contrast in front of the spine;
+ * 5. the organs of input 1 are written over these; where the scan shows contrast blood, FindAorta
+ *    labels the aorta from the contrast in front of the spine (where input 1 holds an aorta, the
+ *    part its clicks' snake did not reach);
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
  *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a
  *    Gaussian of WallSmoothingSigma mm (at least 1.5 voxels) over soft tissue alone (its voxels
@@ -159,11 +160,12 @@ public:
   ///@}
 
   ///@{
-  /// Where input 1 holds no aorta (label 8) and the scan shows contrast blood, find it: of the
-  /// contrast blood outside every organ, bone and lung, opened by the 6-neighbour cross, the piece
-  /// with the most voxels in front of the vertebral column within 45 mm of its centre, slice by
-  /// slice (the descending aorta beside the vertebral bodies, with its arch and ascending part),
-  /// if it runs there for at least 50 mm and holds at least 5 cm3 (default on).
+  /// Where the scan shows contrast blood, find the aorta (label 8): of the contrast blood outside
+  /// every organ, bone and lung, opened by the 6-neighbour cross, the piece with the most voxels in
+  /// front of the vertebral column within 45 mm of its centre, slice by slice (the descending aorta
+  /// beside the vertebral bodies, with its arch and ascending part), if it runs there for at least
+  /// 50 mm and holds at least 5 cm3 (default on). Where input 1 holds an aorta, this adds what its
+  /// clicks' snake did not reach (a snake ends MaximumDistance from its clicks).
   vtkSetMacro(FindAorta, bool);
   vtkGetMacro(FindAorta, bool);
   vtkBooleanMacro(FindAorta, bool);
