@@ -50,10 +50,12 @@ std::vector<std::size_t> amSeedCompetition::Paste(
     const int k = static_cast<int>(q / (static_cast<std::size_t>(size[0]) * size[1])) + lo[2];
     return (static_cast<std::size_t>(k) * dims[1] + j) * dims[0] + i;
   };
-  // Who claims each voxel of the box: the earliest claimant, and whether another one does too.
-  constexpr std::int32_t none = -1;
-  std::vector<std::int32_t> first(n, none);
-  std::vector<char> shared(n, 0);
+  // Who claims each voxel of the box: the earliest claimant, and whether another one does too (an
+  // organ's index fits a byte: labels are 1..255, one organ each).
+  constexpr std::uint8_t none = 255;
+  std::vector<std::uint8_t> owner(n, none);
+  std::vector<bool> shared(n, false);
+  bool anyShared = false;
   for (std::size_t li = 0; li < organs.size(); ++li)
   {
     const Organ& o = organs[li];
@@ -65,25 +67,23 @@ std::vector<std::size_t> amSeedCompetition::Paste(
             const std::size_t q =
               (static_cast<std::size_t>(c + o.Lo[2] - lo[2]) * size[1] + (b + o.Lo[1] - lo[1])) * size[0] +
               (a + o.Lo[0] - lo[0]);
-            if (first[q] == none)
-              first[q] = static_cast<std::int32_t>(li);
+            if (owner[q] == none)
+              owner[q] = static_cast<std::uint8_t>(li);
             else
-              shared[q] = 1;
+              anyShared = shared[q] = true;
           }
   }
-  std::vector<std::int32_t> owner = first;
-  const bool anyShared = std::find(shared.begin(), shared.end(), 1) != shared.end();
   if (compete && anyShared)
   {
     // The fronts: (path length, organ, voxel), the least first; the organ and the voxel order
     // ties, so the result depends on neither the thread count nor the visiting order.
-    using Front = std::tuple<double, std::int32_t, std::size_t>;
+    using Front = std::tuple<double, std::uint8_t, std::size_t>;
     std::priority_queue<Front, std::vector<Front>, std::greater<Front>> fronts;
-    std::vector<std::int32_t> reached(n, none);
+    std::vector<std::uint8_t> reached(n, none);
     for (std::size_t li = 0; li < organs.size(); ++li)
       for (const auto& s : organs[li].Seeds)
         if (Claims(organs[li], s[0], s[1], s[2]))
-          fronts.emplace(0.0, static_cast<std::int32_t>(li),
+          fronts.emplace(0.0, static_cast<std::uint8_t>(li),
             (static_cast<std::size_t>(s[2] - lo[2]) * size[1] + (s[1] - lo[1])) * size[0] + (s[0] - lo[0]));
     const std::size_t stride[3] = { 1, static_cast<std::size_t>(size[0]), static_cast<std::size_t>(size[0]) * size[1] };
     while (!fronts.empty())
