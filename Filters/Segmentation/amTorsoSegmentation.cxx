@@ -412,10 +412,12 @@ amVoxelMask ContrastOutsideOrgans(vtkDataArray* classTable, const std::vector<st
 // The aorta where the scan shows contrast (amTorso::AortaFromContrast), of the contrast outside the
 // organs: where clicks give the aorta, their snake may stop short of its descending part (its
 // region ends MaximumDistance from the clicks), and the tube in front of the spine completes it.
-// Labels it Aorta in place; true when found.
-bool AortaInFrontOfTheSpine(vtkImageData* image, const amVoxelGrid& g, const amVoxelMask& contrast, int superiorAxis,
-  std::vector<std::uint8_t>& labels)
+// Then its ascending part where the atria's label took it (amTorso::AortaOutOfAtria). Labels it
+// Aorta in place; true when found.
+bool CompleteAorta(vtkImageData* image, const amVoxelGrid& g, const amVoxelMask& contrast,
+  const amTorso::TissueParameters& tissues, std::vector<std::uint8_t>& labels)
 {
+  const int superiorAxis = tissues.SuperiorAxis;
   double world[3][4];
   const double* spacing = image->GetSpacing();
   for (int r = 0; r < 3; ++r)
@@ -430,6 +432,7 @@ bool AortaInFrontOfTheSpine(vtkImageData* image, const amVoxelGrid& g, const amV
   for (std::size_t v = 0; v < labels.size(); ++v)
     if (aorta[v])
       labels[v] = amThoraxPhantomModel::Aorta;
+  amTorso::AortaOutOfAtria(g, superiorAxis, tissues.SuperiorSign, amTorso::AscendingAortaParameters(), labels);
   return report.Found;
 }
 
@@ -628,9 +631,9 @@ int amTorsoSegmentation::RequestData(
   std::vector<bool> organ = PasteOrgans(organs, labels);
 
   if (this->FindAorta &&
-    AortaInFrontOfTheSpine(input, grid,
-      ContrastOutsideOrgans(classTable, classes, hu->GetPointer(0), this->BloodPoolLabels, labels),
-      tissueParameters.SuperiorAxis, labels))
+    CompleteAorta(input, grid,
+      ContrastOutsideOrgans(classTable, classes, hu->GetPointer(0), this->BloodPoolLabels, labels), tissueParameters,
+      labels))
     organ[amThoraxPhantomModel::Aorta] = true;
 
   const amTorso::WallParameters wall = WallSettings(this);

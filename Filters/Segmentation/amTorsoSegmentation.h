@@ -59,7 +59,8 @@
  *    bone);
  * 5. the organs of input 1 are written over these; where the scan shows contrast blood, FindAorta
  *    labels the aorta from the contrast in front of the spine (where input 1 holds an aorta, the
- *    part its clicks' snake did not reach);
+ *    part its clicks' snake did not reach), and follows its ascending part down through the atria's
+ *    label (their snake takes it where the aortic root touches the left atrium);
  * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
  *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a
  *    Gaussian of WallSmoothingSigma mm (at least 1.5 voxels) over soft tissue alone (its voxels
@@ -165,7 +166,11 @@ public:
   /// front of the vertebral column within 45 mm of its centre, slice by slice (the descending aorta
   /// beside the vertebral bodies, with its arch and ascending part), if it runs there for at least
   /// 50 mm and holds at least 5 cm3 (default on). Where input 1 holds an aorta, this adds what its
-  /// clicks' snake did not reach (a snake ends MaximumDistance from its clicks).
+  /// clicks' snake did not reach (a snake ends MaximumDistance from its clicks). Then each section
+  /// of the aorta at least 20 mm wide is followed down, slice by slice, through the atria's label
+  /// (11): the atria's voxels under it, within 1.2 times the tube's radius of the section above,
+  /// become aorta while each section keeps 0.5 to 1.3 times the first one's area (the atria's snake
+  /// takes the ascending aorta where the root touches the left atrium).
   vtkSetMacro(FindAorta, bool);
   vtkGetMacro(FindAorta, bool);
   vtkBooleanMacro(FindAorta, bool);

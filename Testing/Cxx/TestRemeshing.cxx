@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -35,6 +37,19 @@ amSurfaceMesh FlatGrid(int n, double h, int label = -1)
       if (label >= 0)
         m.Labels.insert(m.Labels.end(), 2, { label, 0 });
     }
+  m.BuildTopology();
+  return m;
+}
+
+/// A grid of 0.5 mm squares, 12 mm across, over a smooth bump 2 mm high (label 1).
+amSurfaceMesh BumpyPatch()
+{
+  amSurfaceMesh m = FlatGrid(24, 0.5, 1);
+  for (auto& p : m.Points)
+  {
+    const double dx = p[0] - 6, dy = p[1] - 6;
+    p[2] = 2.0 * std::exp(-(dx * dx + dy * dy) / 8.0);
+  }
   m.BuildTopology();
   return m;
 }
@@ -632,14 +647,7 @@ TEST(RemeshCompact, DropsTheDeadAndKeepsTheOrder)
 TEST(Remesher, RunMeetsTheBoundOnABumpyPatch)
 {
   // A grid of 0.5 mm squares over a smooth bump 2 mm high: remeshed to 2 mm edges within 0.05 mm.
-  const int n = 24;
-  amSurfaceMesh m = FlatGrid(n, 0.5, 1);
-  for (auto& p : m.Points)
-  {
-    const double dx = p[0] - 6, dy = p[1] - 6;
-    p[2] = 2.0 * std::exp(-(dx * dx + dy * dy) / 8.0);
-  }
-  m.BuildTopology();
+  const amSurfaceMesh m = BumpyPatch();
   auto r = std::make_unique<Remesher>();
   r->Setup(m, std::vector<Mat3>(m.Points.size(), Mat3::Identity() / 4.0), 0.05);
   std::vector<double> progress;
@@ -655,4 +663,46 @@ TEST(Remesher, RunMeetsTheBoundOnABumpyPatch)
   ASSERT_FALSE(progress.empty());
   EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
   EXPECT_LE(progress.back(), 1.0);
+}
+
+TEST(Remesher, HeldVerticesKeepTheInputTriangles)
+{
+  // The bumpy patch with the vertices of its left half held: every input triangle of three held
+  // vertices is in the result as it was (the same corners, in the same places); the right half
+  // is remeshed as without them.
+  const amSurfaceMesh m = BumpyPatch();
+  auto r = std::make_unique<Remesher>();
+  r->Setup(m, std::vector<Mat3>(m.Points.size(), Mat3::Identity() / 4.0), 0.05);
+  for (size_t v = 0; v < m.Points.size(); ++v)
+    r->Mesh.Held[v] = m.Points[v][0] < 5.9;
+  const Remesher::Result result = r->Run(3, {});
+  EXPECT_LE(result.Hausdorff, 0.05);
+  using Corner = std::array<double, 3>;
+  std::set<std::array<Corner, 3>> out;
+  long long right = 0;
+  for (const Triangle& t : r->Mesh.T)
+    if (t.Alive)
+    {
+      std::array<Corner, 3> c;
+      for (int k = 0; k < 3; ++k)
+        c[k] = { r->Mesh.P[t.V[k]][0], r->Mesh.P[t.V[k]][1], r->Mesh.P[t.V[k]][2] };
+      std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+      out.insert(c);
+      right += c[0][0] > 6.1;
+    }
+  long long held = 0, kept = 0;
+  for (const auto& tri : m.Triangles)
+  {
+    if (!(m.Points[tri[0]][0] < 5.9 && m.Points[tri[1]][0] < 5.9 && m.Points[tri[2]][0] < 5.9))
+      continue;
+    ++held;
+    std::array<Corner, 3> c = { m.Points[tri[0]], m.Points[tri[1]], m.Points[tri[2]] };
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    kept += out.count(c);
+  }
+  EXPECT_GT(held, 400);
+  EXPECT_EQ(kept, held);
+  // The right half (x > 6.1 mm: 11 of the 24 columns, 528 input triangles) coarsened.
+  EXPECT_LT(right, 200);
+  ExpectOrientedManifold(r->Mesh);
 }

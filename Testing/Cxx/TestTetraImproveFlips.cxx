@@ -138,3 +138,50 @@ TEST(TetraImproveFlips, EdgeRemovalUndoesAThinRingAndKeepsAFixedEdge)
   EXPECT_NEAR(volume, volumeBefore, 1e-12);
   EXPECT_FALSE(s.M.Connected(s.D, s.E));
 }
+
+TEST(TetraImproveFlips, EdgeRemovalRefusesAChordTheMeshHasAlready)
+{
+  // Four thin elements about the long edge d-e with the square a b c f around it: removing the
+  // edge would triangulate the square by a diagonal. Where both diagonals are edges of the mesh
+  // already (elements outside the ring hold them), the new elements would fold over theirs: the
+  // edge stays.
+  for (const bool diagonalsTaken : { false, true })
+  {
+    std::vector<double> p;
+    amTetraImprove::Mesh m(p);
+    const double x[][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 }, { 0, 0, 2 }, { 0, 0, -2 },
+      { 5, 5, 5 }, { 6, 5, 5 }, { 5, 6, 5 } };
+    for (const auto& q : x)
+      m.AddPoint(q);
+    const int d = 4, e = 5;
+    auto add = [&](Tet t) {
+      if (amTetraGeometry::SignedVolume(m.X(t[0]), m.X(t[1]), m.X(t[2]), m.X(t[3])) < 0)
+        std::swap(t[2], t[3]);
+      m.Add(t, 1);
+    };
+    for (int k = 0; k < 4; ++k)
+      add({ d, e, k, (k + 1) % 4 });
+    if (diagonalsTaken)
+    {
+      add({ 0, 2, 6, 7 });
+      add({ 1, 3, 6, 8 });
+    }
+    std::vector<int> tets, ring;
+    EXPECT_EQ(amTetraImprove::RemoveEdge(m, d, e, 7, tets, ring), !diagonalsTaken);
+    EXPECT_EQ(m.Connected(d, e), diagonalsTaken);
+    EXPECT_EQ(amTetraImprove::FoldedFaces(m), 0);
+  }
+}
+
+TEST(TetraImproveFlips, FoldedFacesFindsThreeOnAFaceAndTwoOnOneSide)
+{
+  Bipyramid s(1.0, 1.0);
+  s.M.Add({ s.D, s.A, s.C, s.B }, 1);
+  s.M.Add({ s.E, s.A, s.B, s.C }, 1);
+  EXPECT_EQ(amTetraImprove::FoldedFaces(s.M), 0);
+  // A second apex above the triangle: two elements on its upper side.
+  const double up[3] = { 0.2, 0.2, 0.5 };
+  const int w = s.M.AddPoint(up);
+  s.M.Add({ w, s.A, s.C, s.B }, 1);
+  EXPECT_EQ(amTetraImprove::FoldedFaces(s.M), 1);
+}

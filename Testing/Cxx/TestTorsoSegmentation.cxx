@@ -982,3 +982,64 @@ TEST(TorsoTissues, RibsJoinedToTheSpineAreParted)
   // Without a head-feet axis, the bone is one column.
   EXPECT_EQ(amTorso::VertebralColumn(g, bone, worldX, -1, p), bone);
 }
+
+TEST(TorsoSegmentation, TheAscendingAortaIsTakenBackFromTheAtria)
+{
+  // A tube 24 mm wide running down (1 mm voxels, the head towards k or -k): the aorta's label
+  // above, the atria's for 15 mm (the atria's snake took it), the LV's below (the root opens into
+  // it); an atrium touching the tube's side; a descending aorta 12 mm wide; and a second tube
+  // ending on a wide atrium under it. The first tube's atrial part becomes aorta, the atria keep
+  // theirs (less the tube's margin), the LV its own.
+  for (const int sign : { 1, -1 })
+  {
+    amVoxelGrid g;
+    g.N[0] = 110;
+    g.N[1] = 70;
+    g.N[2] = 40;
+    std::vector<std::uint8_t> labels(g.Size(), 0), truth(g.Size(), 0);
+    for (int k = 0; k < g.N[2]; ++k)
+      for (int j = 0; j < g.N[1]; ++j)
+        for (int i = 0; i < g.N[0]; ++i)
+        {
+          const int up = sign > 0 ? k : g.N[2] - 1 - k; // height above the bottom slice
+          std::uint8_t l = 0, t = 0;
+          if (std::hypot(i - 42, j - 30, up - 15) < 12)
+            l = t = amTorso::Atria;
+          if (std::hypot(i - 75, j - 30) < 30 && up < 20)
+            l = t = amTorso::Atria; // the wide atrium under the second tube
+          if (std::hypot(i - 20, j - 30) < 12)
+          {
+            l = up >= 25 ? amThoraxPhantomModel::Aorta
+              : up >= 10 ? amTorso::Atria
+                         : amThoraxPhantomModel::LeftVentricleBlood;
+            t = up >= 10 ? amThoraxPhantomModel::Aorta : amThoraxPhantomModel::LeftVentricleBlood;
+          }
+          if (std::hypot(i - 75, j - 30) < 12 && up >= 20)
+            l = t = amThoraxPhantomModel::Aorta;
+          if (std::hypot(i - 20, j - 62) < 6)
+            l = t = amThoraxPhantomModel::Aorta;
+          labels[g.Index(i, j, k)] = l;
+          truth[g.Index(i, j, k)] = t;
+        }
+    std::size_t tubeAtria = 0;
+    for (std::size_t v = 0; v < g.Size(); ++v)
+      tubeAtria += truth[v] == amThoraxPhantomModel::Aorta && labels[v] == amTorso::Atria;
+    const std::size_t moved = amTorso::AortaOutOfAtria(g, 2, sign, amTorso::AscendingAortaParameters(), labels);
+    std::size_t tube = 0, tubeTaken = 0, atria = 0, atriaKept = 0, lv = 0, lvKept = 0;
+    for (std::size_t v = 0; v < g.Size(); ++v)
+    {
+      const bool inTube = truth[v] == amThoraxPhantomModel::Aorta;
+      tube += inTube;
+      tubeTaken += inTube && labels[v] == amThoraxPhantomModel::Aorta;
+      atria += truth[v] == amTorso::Atria;
+      atriaKept += truth[v] == amTorso::Atria && labels[v] == amTorso::Atria;
+      lv += truth[v] == amThoraxPhantomModel::LeftVentricleBlood;
+      lvKept += labels[v] == amThoraxPhantomModel::LeftVentricleBlood;
+    }
+    EXPECT_EQ(tubeTaken, tube) << "sign " << sign;
+    EXPECT_GT(atriaKept, 0.97 * atria) << "sign " << sign;
+    EXPECT_EQ(lvKept, lv) << "sign " << sign;
+    EXPECT_GT(tubeAtria, 15u * 400u);
+    EXPECT_EQ(moved, tubeAtria + (atria - atriaKept)) << "sign " << sign;
+  }
+}

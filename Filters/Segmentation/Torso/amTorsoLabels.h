@@ -160,6 +160,23 @@ amVoxelMask AortaFromContrast(const amVoxelGrid& g, const amVoxelMask& contrast,
   const std::vector<std::uint8_t>& labels, const double world[3][4], int superiorAxis, const AortaParameters& p,
   AortaReport& report);
 
+/// How AortaOutOfAtria follows the ascending aorta down through the atria's label.
+struct AscendingAortaParameters
+{
+  double MinimumDiameter = 20.0; // mm: a track starts from an aorta section at least this wide
+  double Margin = 1.2;           // the next section lies within this times the tube's radius
+  double SmallestArea = 0.5;     // each section's area, as a fraction of the first: at least
+  double LargestArea = 1.3;      // ... and at most
+};
+
+/// Where the atria's snake took the ascending aorta (its contrast is theirs, and the root touches
+/// the left atrium): each of the aorta's sections (in slices across superiorAxis; superiorSign
+/// +1 when the slice index grows towards the head) at least MinimumDiameter wide is followed
+/// down, the atria's voxels of the next slice under it and within the tube's disk taking the
+/// aorta's label while the section stays the tube's size. Returns the voxels relabelled.
+std::size_t AortaOutOfAtria(const amVoxelGrid& g, int superiorAxis, int superiorSign, const AscendingAortaParameters& p,
+  std::vector<std::uint8_t>& labels);
+
 struct WallParameters
 {
   std::vector<int> PoolLabels{ Phantom::LeftVentricleBlood, Phantom::RightVentricleBlood };

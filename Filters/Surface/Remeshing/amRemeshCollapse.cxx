@@ -14,7 +14,7 @@ bool Remesher::Collapse(int a, int b, const Vec3* to)
 {
   if (to && (this->Mesh.Kind[a] != amSurfaceMesh::Surface || this->Mesh.Kind[b] != amSurfaceMesh::Surface))
     return false;
-  if (!this->Mesh.VAlive[a] || !this->Mesh.VAlive[b])
+  if (!this->Mesh.VAlive[a] || !this->Mesh.VAlive[b] || this->Mesh.Held[a] || (to && this->Mesh.Held[b]))
     return false;
   // Closing a strip: a junction vertex into another across the strip (or along a short curve
   // between two corners), b then taking a's interfaces too and becoming a corner.

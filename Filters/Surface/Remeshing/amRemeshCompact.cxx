@@ -53,6 +53,7 @@ void Remesher::Compact()
   KeepMapped(S.M, vertexOf);
   KeepMapped(S.Kind, vertexOf);
   KeepMapped(S.VAlive, vertexOf);
+  KeepMapped(S.Held, vertexOf);
   KeepMapped(S.VT, vertexOf);
   KeepMapped(S.Cluster, vertexOf);
   KeepMapped(S.Anchor, vertexOf);

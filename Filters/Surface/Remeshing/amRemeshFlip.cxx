@@ -9,6 +9,8 @@ namespace amRemesh
 {
 bool Remesher::Flip(int a, int b)
 {
+  if (this->Mesh.Held[a] && this->Mesh.Held[b])
+    return false;
   std::vector<int> edge;
   this->Mesh.EdgeTriangles(a, b, edge);
   if (this->Mesh.IsFeature(edge))

@@ -25,8 +25,7 @@ vtkSmartPointer<vtkStaticPointLocator> InputLocator(const std::vector<std::array
   return locator;
 }
 
-long long MarkNearFarTriangles(
-  const Remesher& remeshed, vtkStaticPointLocator* input, double widen, std::vector<unsigned char>& keep)
+long long MarkNearFarTriangles(const Remesher& remeshed, vtkStaticPointLocator* input, std::vector<unsigned char>& keep)
 {
   const Surface& s = remeshed.Mesh;
   const std::vector<double>& local = remeshed.Hausdorff.TriangleDistances();
@@ -40,7 +39,7 @@ long long MarkNearFarTriangles(
     double longest = 0;
     for (int k = 0; k < 3; ++k)
       longest = std::max(longest, (s.P[s.T[t].V[k]] - s.P[s.T[t].V[(k + 1) % 3]]).norm());
-    const double reach = widen * (longest + eps);
+    const double reach = longest + eps;
     for (int k = 0; k < 3; ++k)
     {
       input->FindPointsWithinRadius(reach, s.P[s.T[t].V[k]].data(), found);
@@ -55,23 +54,18 @@ long long MarkNearFarTriangles(
   return marked;
 }
 
-std::vector<Mat3> KeptMetric(const std::vector<Mat3>& metric, const std::vector<unsigned char>& keep, double tolerance)
-{
-  std::vector<Mat3> kept = metric;
-  const double size = 1e-3 * tolerance;
-  for (size_t v = 0; v < kept.size(); ++v)
-    if (keep[v])
-      kept[v] = Mat3::Identity() / (size * size);
-  return kept;
-}
-
 std::shared_ptr<Remesher> RemeshKeepingTheBound(amSurfaceMesh& surface, const std::vector<Mat3>& metric,
   const KeepInputRun& options, Remesher::Result& result, long long& kept)
 {
-  auto setup = [&options](const amSurfaceMesh& input, std::vector<Mat3> sizes) {
+  auto setup = [&options, &metric](const amSurfaceMesh& input, const std::vector<unsigned char>* held) {
     auto remesher = std::make_shared<Remesher>();
-    remesher->Setup(input, std::move(sizes), options.Tolerance);
+    remesher->Setup(input, metric, options.Tolerance);
     remesher->KeepVolumes = options.KeepVolumes;
+    if (held)
+    {
+      remesher->Mesh.Held.assign(held->begin(), held->end());
+      remesher->RoundVolumeOffsets = true;
+    }
     return remesher;
   };
   auto run = [&options](Remesher& remesher, double start, double span) {
@@ -80,30 +74,34 @@ std::shared_ptr<Remesher> RemeshKeepingTheBound(amSurfaceMesh& surface, const st
         options.Progress(start + span * fraction);
     });
   };
-  std::shared_ptr<Remesher> remesher = setup(surface, metric);
+  std::shared_ptr<Remesher> remesher = setup(surface, nullptr);
   surface = amSurfaceMesh();
   result = run(*remesher, 0.05, 0.45);
   kept = 0;
   if (!(result.Hausdorff > options.Tolerance) || !options.Rebuild || !options.Rebuild(surface))
     return remesher;
-  // A run is taken only when it keeps the bound: one that comes closer without keeping it changes
-  // more of the surface for no guarantee.
+  // Each run holds the input vertices near the far triangles of every run before it: held, the
+  // input's triangles there stay as they are (distance 0). A held region changes the volumes the
+  // rest of the run corrects (rounded in these runs, so that they move the rest alike), and the
+  // next run can end beyond the bound somewhere else: the runs go on (at most RerunsAtMost) until
+  // one keeps the bound, else the closest is taken.
   std::vector<unsigned char> keep(surface.Points.size(), 0);
   const vtkSmartPointer<vtkStaticPointLocator> input = InputLocator(surface.Points);
   std::shared_ptr<Remesher> last = remesher;
-  for (int widen = 1; widen <= 4; ++widen)
+  for (int rerun = 0; rerun < RerunsAtMost; ++rerun)
   {
-    if (MarkNearFarTriangles(*last, input, widen, keep) == 0)
+    if (MarkNearFarTriangles(*last, input, keep) == 0)
       break;
-    last = setup(surface, KeptMetric(metric, keep, options.Tolerance));
-    const Remesher::Result again = run(*last, 0.5 + 0.1 * (widen - 1), 0.1);
-    if (again.Hausdorff <= options.Tolerance)
+    last = setup(surface, &keep);
+    const Remesher::Result again = run(*last, 0.5 + 0.45 * rerun / RerunsAtMost, 0.45 / RerunsAtMost);
+    if (again.Hausdorff < result.Hausdorff)
     {
       remesher = last;
       result = again;
       kept = std::count(keep.begin(), keep.end(), 1);
-      break;
     }
+    if (again.Hausdorff <= options.Tolerance)
+      break;
   }
   surface = amSurfaceMesh();
   return remesher;

@@ -1,9 +1,9 @@
 /**
  * @file    amRemeshKeepInput.h
  * @brief   Where the remeshing cannot keep its Hausdorff bound, the input's own triangles are kept:
- *          the input vertices near the triangles that end beyond the tolerance are given a size far
- *          below any edge (the collapses, flips and moves that would change them are then refused)
- *          and the remeshing runs again.
+ *          the input vertices near the triangles that end beyond the tolerance are held (Surface::Held:
+ *          no operation moves or removes them, or changes a triangle of three of them) and the
+ *          remeshing runs again.
  */
 #ifndef amRemeshKeepInput_h
 #define amRemeshKeepInput_h
@@ -24,10 +24,10 @@ vtkSmartPointer<vtkStaticPointLocator> InputLocator(const std::vector<std::array
 
 /// The input vertices (found by input, InputLocator's) within reach of a triangle of the remeshed
 /// surface whose distance to the input exceeds the tolerance: within that triangle's longest edge
-/// and the tolerance, times widen, of any of its corners. Marks them in keep (sized as the input's
+/// and the tolerance of any of its corners. Marks them in keep (sized as the input's
 /// points) and returns how many it marked anew.
 long long MarkNearFarTriangles(
-  const Remesher& remeshed, vtkStaticPointLocator* input, double widen, std::vector<unsigned char>& keep);
+  const Remesher& remeshed, vtkStaticPointLocator* input, std::vector<unsigned char>& keep);
 
 /// How RemeshKeepingTheBound runs the remesher.
 struct KeepInputRun
@@ -39,16 +39,17 @@ struct KeepInputRun
   std::function<bool(amSurfaceMesh&)> Rebuild; // the input surface again, when a run is needed
 };
 
+/// How many times RemeshKeepingTheBound runs the remesher again at most.
+constexpr int RerunsAtMost = 8;
+
 /// Remeshes surface (emptied before the first run, to free its memory) with the metric; where the
-/// result ends beyond the tolerance, runs again with the input vertices near the far triangles
-/// held (MarkNearFarTriangles, KeptMetric; those of every run so far, wider by one far triangle
-/// each time, up to four times) and takes the first run that keeps the bound, else the first
-/// result. Returns the remesher of the result taken, with its result and the vertices held.
+/// result ends beyond the tolerance, runs again with the input vertices near the far triangles of
+/// every run so far held (MarkNearFarTriangles), at most RerunsAtMost times, and takes the first
+/// run that keeps the bound, else the closest. Returns the remesher of the result taken, with its
+/// result and the number of vertices held.
 std::shared_ptr<Remesher> RemeshKeepingTheBound(amSurfaceMesh& surface, const std::vector<Mat3>& metric,
   const KeepInputRun& options, Remesher::Result& result, long long& kept);
 
-/// The metric with the kept vertices' sizes far below any edge (a thousandth of the tolerance).
-std::vector<Mat3> KeptMetric(const std::vector<Mat3>& metric, const std::vector<unsigned char>& keep, double tolerance);
 }
 
 #endif

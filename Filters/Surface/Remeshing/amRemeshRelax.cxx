@@ -60,7 +60,8 @@ int Remesher::Relax(int v)
 bool Remesher::Move(int v, const Vec3& x, bool relax)
 {
   // Not a move where v already is (it would count as done and change nothing).
-  if (this->Mesh.Kind[v] != amSurfaceMesh::Surface || this->Mesh.VT[v].empty() || x == this->Mesh.P[v])
+  if (this->Mesh.Kind[v] != amSurfaceMesh::Surface || this->Mesh.Held[v] || this->Mesh.VT[v].empty() ||
+    x == this->Mesh.P[v])
     return false;
   double before = M_PI, after = M_PI;
   std::vector<std::array<int, 3>> ids;

@@ -12,6 +12,8 @@ bool Remesher::SplitEdge(int t, int k, Vec3 x)
   if (!this->Mesh.T[t].Alive)
     return false;
   const int a = this->Mesh.T[t].V[k], b = this->Mesh.T[t].V[(k + 1) % 3];
+  if (this->Mesh.Held[a] && this->Mesh.Held[b])
+    return false;
   std::vector<int> edge;
   this->Mesh.EdgeTriangles(a, b, edge);
   const bool feature = this->Mesh.IsFeature(edge);
@@ -82,6 +84,8 @@ bool Remesher::Insert(int t, Vec3 x)
   const Triangle like = this->Mesh.T[t];
   const int v = static_cast<int>(this->Mesh.P.size());
   const int* w = like.V;
+  if (this->Mesh.Held[w[0]] && this->Mesh.Held[w[1]] && this->Mesh.Held[w[2]])
+    return false;
   {
     const Vec3 n = (this->Mesh.P[w[1]] - this->Mesh.P[w[0]]).cross(this->Mesh.P[w[2]] - this->Mesh.P[w[0]]);
     int k = -1;

@@ -59,6 +59,7 @@ int Surface::AddVertex(const Vec3& x, const Mat3& m, unsigned char kind, int anc
   this->Anchor.push_back(anchor);
   this->Merged.emplace_back();
   this->VAlive.push_back(1);
+  this->Held.push_back(0);
   this->VT.emplace_back();
   this->Cluster.emplace_back();
   return v;

@@ -79,10 +79,14 @@ struct ClusterEntry
 class ANATOMESHFILTERSSURFACE_EXPORT Surface
 {
 public:
-  std::vector<Vec3> P;                            // vertex positions
-  std::vector<Mat3> M;                            // vertex metric tensors
-  std::vector<unsigned char> Kind;                // amSurfaceMesh::VertexKind
-  std::vector<char> VAlive;                       // 0: collapsed away
+  std::vector<Vec3> P;             // vertex positions
+  std::vector<Mat3> M;             // vertex metric tensors
+  std::vector<unsigned char> Kind; // amSurfaceMesh::VertexKind
+  std::vector<char> VAlive;        // 0: collapsed away
+  /// Per vertex: 1 for an input vertex held where it is. No operation moves or removes it, or
+  /// splits or flips an edge between two held vertices, so a triangle of three held vertices
+  /// stays the input's own.
+  std::vector<char> Held;
   std::vector<Triangle> T;                        // triangle slots (dead ones stay)
   std::vector<std::vector<int>> VT;               // per vertex: its live triangles
   std::vector<std::vector<ClusterEntry>> Cluster; // per vertex: the input points it stands for

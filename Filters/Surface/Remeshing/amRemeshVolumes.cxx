@@ -106,9 +106,12 @@ int Remesher::PreserveVolumes(const std::map<int, double>& target, int rounds)
     for (int k = 0; k < sheets; ++k)
       if (sides[k][0] >= 0)
         system[k] = { sides[k][0], sides[k][1], sensitivity[k], area[k] };
-    const std::vector<double> offset = amVolumeOffsets::Solve(system, error, this->In.Eps);
+    std::vector<double> offset = amVolumeOffsets::Solve(system, error, this->In.Eps);
     if (offset.empty())
       break;
+    if (this->RoundVolumeOffsets)
+      for (double& o : offset)
+        o = std::round(o / (0.02 * this->In.Eps)) * (0.02 * this->In.Eps);
     bool any = false;
     for (double o : offset)
       any = any || std::fabs(o) > 1e-4 * this->In.Eps;

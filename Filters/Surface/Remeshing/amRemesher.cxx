@@ -26,6 +26,7 @@ void Remesher::Setup(const amSurfaceMesh& mesh, std::vector<Mat3> metric, double
   S.M = std::move(metric);
   S.Kind = mesh.Kind;
   S.VAlive.assign(static_cast<size_t>(np), 1);
+  S.Held.assign(static_cast<size_t>(np), 0);
   // One sheet per interface: per pair of labels (unordered), numbered in the order they first
   // appear.
   std::map<std::pair<int, int>, int> sheetIds;

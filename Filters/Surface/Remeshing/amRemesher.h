@@ -138,6 +138,11 @@ public:
   /// thin rib take several per cent of its volume).
   std::map<int, double> InputVolumes;
   bool KeepVolumes = false;
+  /// Each interface's volume offset rounded to a fiftieth of the tolerance (amRemeshKeepInput's
+  /// runs that hold input vertices): those runs correct nearly the same volumes, and rounded, the
+  /// rest of the surface moves alike in each of them, instead of every vertex of a large interface
+  /// a little differently and the bound missed somewhere new each time.
+  bool RoundVolumeOffsets = false;
   /// The volume of each region of the surface as it is.
   std::map<int, double> RegionVolumes() const;
   /// Moves interface vertices along their normals towards each region's target volume, within

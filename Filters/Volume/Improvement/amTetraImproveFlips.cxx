@@ -45,6 +45,10 @@ bool PlanEdgeRemoval(
       const int j = i + len;
       best[i][j] = -std::numeric_limits<double>::infinity();
       via[i][j] = -1;
+      // A chord that is an edge of the mesh already (through a tetrahedron outside the ring)
+      // would give the new tetrahedra a face the mesh has: they would fold over that one.
+      if (j - i < n - 1 && m.Connected(ring[i], ring[j]))
+        continue;
       for (int k = i + 1; k < j; ++k)
       {
         double q = std::min(best[i][k], best[k][j]);

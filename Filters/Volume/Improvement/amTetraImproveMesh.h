@@ -268,6 +268,9 @@ bool IsSliver(const Mesh& m, int t, const Options& options);
 double SliverClear(const Options& options);
 /// The live tetrahedra that fail the sliver bar of the options.
 long CountSlivers(const Mesh& m, const Options& options);
+/// The faces where the mesh folds over itself (amTetraImproveFolds): more than two live
+/// tetrahedra on one face, or two with their fourth corners on the same side of it.
+long FoldedFaces(const Mesh& m);
 /// The sliver phase of amTetraMeshOptimizer (Options::MaximumSurfaceDeviation > 0): rounds of
 /// surface vertex slides, region changes and surface edge splits around the slivers left, each
 /// followed by improve(round) (the flips and moves) and fixEdges() (FixedEdges from FixedFaces);
