@@ -29,11 +29,12 @@
  * that the insertions left are flipped or collapsed away under the same guards, kept only if the
  * bound and the angles end no worse. Where the bound is still missed, the input's own triangles are
  * kept there: the remeshing runs again with the input vertices near the far triangles (within a
- * far triangle's longest edge and the tolerance of its corners) given a size far below any edge, so
- * that every operation that would change them is refused; up to four times, adding each run's far
- * triangles over a neighbourhood wider by their own size each time, until a run keeps the bound
- * (taken; InputVerticesKept counts the vertices held) — else the first result stands and the
- * warning says so.
+ * far triangle's longest edge and the tolerance of its corners) held, so that no operation moves
+ * or removes them or changes a triangle of three of them (those stay the input's own); each run
+ * holds the far triangles' vertices of every run before it and rounds each interface's volume
+ * offset to a fiftieth of the tolerance (so that the runs move the rest of the surface alike), up
+ * to eight times, until a run keeps the bound (taken; InputVerticesKept counts the vertices held)
+ * — else the closest run is taken and the warning says so.
  *
  * The achieved distance is in field data "Hausdorff" (and "HausdorffUpperBound", with the
  * sampling gap); per triangle in cell data "HausdorffDistance" (the largest distance measured on
