@@ -2,6 +2,7 @@
 // slice by slice while each stays the size of the tube above it.
 #include "amTorsoLabels.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -76,12 +77,26 @@ std::size_t amTorso::AortaOutOfAtria(const amVoxelGrid& g, int superiorAxis, int
   const int w = slice.Width(), h = slice.Height(), slices = g.N[superiorAxis];
   const double su = g.Spacing[slice.U], sv = g.Spacing[slice.V], pixel = su * sv;
   const int down = superiorSign > 0 ? -1 : 1;
+  // A track starts only above a slice that holds atria: most slices (all of them without atria)
+  // are passed over at once.
+  std::vector<char> atria(static_cast<std::size_t>(slices), 0);
+  for (std::size_t v = 0; v < labels.size(); ++v)
+    if (labels[v] == Atria)
+    {
+      int c[3];
+      g.Ijk(v, c);
+      atria[c[superiorAxis]] = 1;
+    }
+  if (std::find(atria.begin(), atria.end(), 1) == atria.end())
+    return 0;
   // The aorta's cross-sections as the organ map gives them: a track starts only from these.
   const std::vector<std::uint8_t> given = labels;
   std::size_t moved = 0;
   std::vector<char> in(static_cast<std::size_t>(w) * h);
   for (int s = 0; s < slices; ++s)
   {
+    if (s + down < 0 || s + down >= slices || !atria[s + down])
+      continue;
     for (int v = 0; v < h; ++v)
       for (int u = 0; u < w; ++u)
         in[v * w + u] = given[slice.Id(s, u, v)] == Phantom::Aorta;
