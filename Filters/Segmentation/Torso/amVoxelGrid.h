@@ -77,6 +77,14 @@ int Components(const amVoxelGrid& g, const amVoxelMask& mask, std::vector<int>& 
 /// border of the grid (a cavity), and returns how many it set.
 std::size_t FillHoles(const amVoxelGrid& g, amVoxelMask& mask);
 
+/// The voxel ids of slice s across axis, pixel by pixel: axis (axis + 1) % 3 runs fastest (the
+/// slice's width, g.N[(axis + 1) % 3]), then (axis + 2) % 3. Into voxel (resized).
+void SliceVoxels(const amVoxelGrid& g, int axis, int s, std::vector<std::size_t>& voxel);
+
+/// The 4-connected pieces of the pixels of a slice (width pixels a row) where 'in' is set:
+/// id[p] = piece (0..n-1, in the order of their first pixel), -1 elsewhere. Returns n.
+int SlicePieces(const std::vector<char>& in, int width, std::vector<int>& id);
+
 /// The holes of the mask within its slices across axis: the 4-connected pieces of a slice outside
 /// the mask that do not reach the slice's border, of at most maximumVoxels (what a ring of the mask
 /// encloses in a slice, such as a bone's marrow inside its cortex).
