@@ -309,6 +309,11 @@ def main(argv=None):
     bat.add_argument("--outputs-anywhere", action="store_true",
                      help="let the manifest's output column name folders outside --output (absolute paths, ..)")
     bat.add_argument("--report", action="store_true", help="each case writes its report.html")
+    st = sub.add_parser("state", help="check and load a ParaView state (.pvsm) that holds Anatomesh filters")
+    st.add_argument("state", help="ParaView state file (.pvsm)")
+    st.add_argument("--plugin", metavar="SO", help="the plugin's library (default: ANATOMESH_PLUGIN, else by name "
+                    "from ParaView's plugin list)")
+    st.add_argument("--open", action="store_true", help="then open it in the ParaView GUI with the plugin")
     flt = sub.add_parser("filters", help="list the filter catalogue")
     flt.add_argument("--verbose", "-v", action="store_true", help="show properties")
     args = parser.parse_args(argv)
@@ -326,6 +331,9 @@ def main(argv=None):
             return batch.main(args)
         if args.command == "filters":
             return _filters(args)
+        if args.command == "state":
+            from . import paraview_state
+            return paraview_state.main(args)
         if args.command == "report":
             return _report(args)
     except OSError as e:
