@@ -1,6 +1,7 @@
 #include "amSeedCompetition.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <queue>
 #include <tuple>
@@ -33,10 +34,22 @@ void BoxOfAll(const std::vector<Organ>& organs, int lo[3], int size[3])
     size[a] = hi - lo[a];
   }
 }
+
+// What a step into the voxel costs the organ's front per mm: 1 in the middle of its interval,
+// 1 + BoundaryCost at its edges (and beyond).
+double StepWeight(const Organ& o, const float* intensity, std::size_t q)
+{
+  if (!intensity || o.Upper <= o.Lower)
+    return 1.0;
+  const double half = 0.5 * (o.Upper - o.Lower);
+  const double m = std::min(1.0, std::abs(intensity[q] - 0.5 * (o.Upper + o.Lower)) / half);
+  const double m2 = m * m;
+  return 1.0 + amSeedCompetition::BoundaryCost * m2 * m2;
+}
 }
 
-std::vector<std::size_t> amSeedCompetition::Paste(
-  const std::vector<Organ>& organs, const int dims[3], const double spacing[3], bool compete, unsigned char* out)
+std::vector<std::size_t> amSeedCompetition::Paste(const std::vector<Organ>& organs, const int dims[3],
+  const double spacing[3], bool compete, unsigned char* out, const float* intensity)
 {
   std::vector<std::size_t> voxels(organs.size(), 0);
   if (organs.empty())
@@ -104,12 +117,13 @@ std::vector<std::size_t> amSeedCompetition::Paste(
             continue;
           const std::size_t w = step < 0 ? q - stride[a] : q + stride[a];
           if (reached[w] == none && Claims(organs[li], next[0] + lo[0], next[1] + lo[1], next[2] + lo[2]))
-            fronts.emplace(d + spacing[a], li, w);
+            fronts.emplace(d + spacing[a] * StepWeight(organs[li], intensity, w), li, w);
         }
     }
+    // An organ is what its front reaches: a voxel of its region cut off from its seeds by the
+    // other fronts (a speck of partial volume behind a septum the other organ took) is nobody's.
     for (std::size_t q = 0; q < n; ++q)
-      if (shared[q] && reached[q] != none)
-        owner[q] = reached[q];
+      owner[q] = reached[q];
   }
   for (std::size_t q = 0; q < n; ++q)
     if (owner[q] != none)

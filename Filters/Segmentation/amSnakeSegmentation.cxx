@@ -183,6 +183,23 @@ std::vector<float> SmoothedBoxOfAll(const std::vector<Organ>& organs, vtkDataArr
   return amSnakeTracker::Smooth(size, spacing, sigma, Region(scalars, dims, lo, size));
 }
 
+// The organ's region as the seeds' competition takes it: its box, its voxels, its interval and its
+// seeds (voxel indices).
+amSeedCompetition::Organ CompetingRegion(int label, const Organ& organ, const std::vector<std::array<double, 3>>& seeds)
+{
+  amSeedCompetition::Organ region;
+  region.Label = label;
+  std::copy(organ.Lo, organ.Lo + 3, region.Lo);
+  std::copy(organ.Size, organ.Size + 3, region.Size);
+  region.Inside = &organ.Tracker->Inside();
+  region.Lower = organ.Tracker->Lower();
+  region.Upper = organ.Tracker->Upper();
+  for (const std::array<double, 3>& s : seeds)
+    region.Seeds.push_back({ static_cast<int>(std::lround(s[0])), static_cast<int>(std::lround(s[1])),
+      static_cast<int>(std::lround(s[2])) });
+  return region;
+}
+
 // The organs, largest region first, so that the last one to start is a small one.
 std::vector<size_t> LargestFirst(const std::vector<Organ>& organs)
 {
@@ -467,17 +484,12 @@ int amSnakeSegmentation::RequestData(
       return 0;
     }
     thresholds->InsertNextTuple3(label, tracker.Lower(), tracker.Upper());
-    amSeedCompetition::Organ& region = regions[li];
-    region.Label = label;
-    std::copy(organ.Lo, organ.Lo + 3, region.Lo);
-    std::copy(organ.Size, organ.Size + 3, region.Size);
-    region.Inside = &tracker.Inside();
-    for (const std::array<double, 3>& s : organSeeds[li])
-      region.Seeds.push_back({ static_cast<int>(std::lround(s[0])), static_cast<int>(std::lround(s[1])),
-        static_cast<int>(std::lround(s[2])) });
+    regions[li] = CompetingRegion(label, organ, organSeeds[li]);
   }
-  // The label map: shared voxels to the nearest seeds (or by precedence).
-  const std::vector<std::size_t> voxels = amSeedCompetition::Paste(regions, dims, spacing, this->SeedsCompete, out);
+  // The label map: shared voxels to the seeds nearest along paths that a wall between the organs
+  // lengthens (or by precedence). A polar contour has no interval of its own: path length alone.
+  const std::vector<std::size_t> voxels = amSeedCompetition::Paste(
+    regions, dims, spacing, this->SeedsCompete, out, this->ContourModel == LevelSet ? smoothed.data() : nullptr);
   for (size_t li = 0; li < order.size(); ++li)
   {
     volumes->InsertNextTuple2(order[li], voxels[li] * voxelVolume);

@@ -30,10 +30,15 @@
  *    and the contour evolves again from where it stopped.
  * Organs never overlap. Where their regions do (two chambers of the same contrast joined by a
  * valve's opening, or by a streak of contrast across a septum), with SeedsCompete (default on)
- * each shared voxel goes to the organ whose seeds reach it first along a path inside its own
- * region, the earlier organ on a tie (amSeedCompetition): each chamber keeps its cavity and the
- * boundary lies between the seeds; so a click in the left atrium parts it from the LV's click.
- * With SeedsCompete off, the earlier organ keeps every voxel it claims.
+ * each voxel goes to the organ whose seeds reach it first along a path inside its own region,
+ * the earlier organ on a tie (amSeedCompetition), and a voxel no front reaches (cut off from its
+ * seeds by the other organs) to none. A path is as long as its steps, each step lengthened by the
+ * smoothed intensity where it nears the edge of its organ's interval (the level-set contours; by
+ * up to 51 times at the edge), so a wall the regions both run over (a septum thinned by partial
+ * volume) parts two pools where it is, and an opening without a wall (a valve's) between the
+ * seeds: a click in the left atrium parts it from the LV's click, and the ventricles part at the
+ * septum wherever their clicks lie. With SeedsCompete off, the earlier organ keeps every voxel it
+ * claims.
  * Mode ThreeD (default) evolves one 3-D surface. Mode SliceBySlice is the paper's propagation:
  * each seed's slice (along SliceAxis) is segmented in 2-D, then each next slice starts from the
  * previous contour (eroded by one pixel) and keeps only what overlaps it; propagation stops in a
@@ -260,7 +265,8 @@ public:
 
   ///@{
   /// Where organs' regions overlap, each shared voxel goes to the organ whose seeds reach it first
-  /// through its own region (default on); off, to the organ whose seeds come first.
+  /// through its own region, a wall between them slowing each front (default on); off, to the
+  /// organ whose seeds come first.
   vtkSetMacro(SeedsCompete, bool);
   vtkGetMacro(SeedsCompete, bool);
   vtkBooleanMacro(SeedsCompete, bool);

@@ -164,3 +164,96 @@ TEST(SeedCompetition, TheSameLabelsWhateverTheThreadCount)
   vtkSMPTools::Initialize(2);
   EXPECT_TRUE(runs[0] == runs[1]);
 }
+
+TEST(SeedCompetition, AWallBetweenThePoolsSlowsTheFrontsThatCrossIt)
+{
+  // A row of 12 voxels (1 mm): the first organ claims all, the second the first 11; seeds at 0 and
+  // 10; voxel 7 is a wall both intervals take at their edge. By path length alone the first organ
+  // would reach 0-5; the wall costs each front 50 mm more, so the first keeps 0-6 and the wall
+  // goes to the second, which reaches it sooner. Voxel 11, behind the second organ's seed, is the
+  // first organ's alone but its front cannot reach it: nobody's.
+  const int dims[3] = { 12, 1, 1 };
+  const double spacing[3] = { 1, 1, 1 };
+  std::vector<unsigned char> all(12, 1), shorter(11, 1);
+  std::vector<float> intensity(12, 100.0f);
+  intensity[7] = 40.0f;
+  std::vector<amSeedCompetition::Organ> organs(2);
+  for (auto& o : organs)
+  {
+    o.Size[1] = o.Size[2] = 1;
+    o.Lower = 40.0;
+    o.Upper = 160.0;
+  }
+  organs[0].Label = 3;
+  organs[0].Size[0] = 12;
+  organs[0].Inside = &all;
+  organs[0].Seeds = { { 0, 0, 0 } };
+  organs[1].Label = 5;
+  organs[1].Size[0] = 11;
+  organs[1].Inside = &shorter;
+  organs[1].Seeds = { { 10, 0, 0 } };
+  std::vector<unsigned char> out(12, 0);
+  amSeedCompetition::Paste(organs, dims, spacing, true, out.data(), intensity.data());
+  EXPECT_EQ(out, (std::vector<unsigned char>{ 3, 3, 3, 3, 3, 3, 3, 5, 5, 5, 5, 0 }));
+  std::fill(out.begin(), out.end(), 0);
+  amSeedCompetition::Paste(organs, dims, spacing, true, out.data());
+  EXPECT_EQ(out, (std::vector<unsigned char>{ 3, 3, 3, 3, 3, 3, 5, 5, 5, 5, 5, 0 }));
+  // Intervals that do not reach the wall's intensity leave it at the pace of path length.
+  for (auto& o : organs)
+    o.Upper = o.Lower = 0.0;
+  std::fill(out.begin(), out.end(), 0);
+  amSeedCompetition::Paste(organs, dims, spacing, true, out.data(), intensity.data());
+  EXPECT_EQ(out, (std::vector<unsigned char>{ 3, 3, 3, 3, 3, 3, 5, 5, 5, 5, 5, 0 }));
+}
+
+TEST(SeedCompetition, TwoVentriclesPartAtTheSeptumNotBetweenTheirClicks)
+{
+  // Two cavities of contrast (300 HU) side by side, parted at x = 0 by a septum 3 mm thick whose
+  // partial volume reads 180 HU, inside both snakes' intervals (about 170-400 HU), so each snake
+  // runs into the other cavity. The RV's click lies 5 mm from the septum, the LV's 14 mm: half-way
+  // between them the RV would take 4 mm of the LV's cavity. The fronts cross the septum slowly:
+  // each cavity keeps its side.
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(71, 41, 41);
+  image->SetOrigin(-35, -20, -20);
+  image->SetSpacing(1, 1, 1);
+  vtkNew<vtkFloatArray> hu;
+  hu->SetName("CT");
+  hu->SetNumberOfTuples(image->GetNumberOfPoints());
+  std::mt19937 random(11);
+  std::normal_distribution<float> noise(0.0f, 10.0f);
+  const auto cavity = [](const double p[3]) {
+    return std::abs(p[0]) <= 25.0 && p[1] * p[1] + p[2] * p[2] <= 12.0 * 12.0;
+  };
+  for (vtkIdType id = 0; id < image->GetNumberOfPoints(); ++id)
+  {
+    double p[3];
+    image->GetPoint(id, p);
+    const float value = !cavity(p) ? 40.0f : std::abs(p[0]) <= 1.0 ? 180.0f : 300.0f;
+    hu->SetValue(id, value + noise(random));
+  }
+  image->GetPointData()->SetScalars(hu);
+  vtkNew<amSnakeSegmentation> snake;
+  snake->SetInputData(image);
+  snake->AddSeed(-14, 0, 0, 6);
+  snake->AddSeed(5, 0, 0, 7);
+  vtkNew<amTest::ErrorCatcher> errors;
+  errors->Watch(snake);
+  snake->Update();
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  vtkImageData* labels = snake->GetOutput();
+  long lvBeyond = 0, rvBeyond = 0, lv = 0, rv = 0;
+  for (vtkIdType id = 0; id < labels->GetNumberOfPoints(); ++id)
+  {
+    const int l = static_cast<int>(labels->GetPointData()->GetScalars()->GetComponent(id, 0));
+    const double x = labels->GetPoint(id)[0];
+    lv += l == 6;
+    rv += l == 7;
+    lvBeyond += l == 6 && x > 1.0;
+    rvBeyond += l == 7 && x < -1.0;
+  }
+  EXPECT_GT(lv, 8000); // each cavity about 11,000 voxels, 23 mm long
+  EXPECT_GT(rv, 8000);
+  EXPECT_EQ(lvBeyond, 0);
+  EXPECT_EQ(rvBeyond, 0);
+}

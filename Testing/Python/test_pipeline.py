@@ -52,7 +52,7 @@ class ThoraxJob(unittest.TestCase):
             rows = f.read().splitlines()
         self.assertEqual(len(rows), 502)  # header + 0, 1, ..., 500 ms
         self.assertTrue(rows[0].startswith("Time_ms,I_mV,II_mV,III_mV"), rows[0])  # units in the header
-        self.assertRegex(stdout, r"ECG: QRS \d+ ms \(normal 80-120[^)]*\), QT \d+ ms")
+        self.assertRegex(stdout, r"ECG: QRS \d+ ms \(normal 70-110[^)]*\), QT \d+ ms")
         self.assertIn("phantom", stderr)  # progress lines
         # The timing table: every filter with its own seconds, the output files and the rest, adding
         # up to the run's time; the same figures in the run marker.

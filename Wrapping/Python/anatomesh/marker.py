@@ -145,6 +145,8 @@ def figures(data):
                 for r in range(obj.GetNumberOfRows()):
                     lead = columns["Lead"].GetValue(r)
                     ecg["R %s mV" % lead] = round(float(columns["R_mV"].GetValue(r)), 3)
+                    if "S_mV" in columns:
+                        ecg["S %s mV" % lead] = round(float(columns["S_mV"].GetValue(r)), 3)
                     ecg["T %s" % lead] = columns["TPolarity"].GetValue(r)
                 out[name] = ecg
             elif "Dice" in columns and "Label" in columns:
