@@ -636,7 +636,13 @@ int amTorsoSegmentation::RequestData(
       labels))
     organ[amThoraxPhantomModel::Aorta] = true;
 
-  const amTorso::WallParameters wall = WallSettings(this);
+  amTorso::WallParameters wall = WallSettings(this);
+  if (wall.PoolLabels.size() > 1)
+  {
+    // The ventricles end at the heart's base where the atria or the aorta show it.
+    wall.Base = amTorso::FindValvePlane(grid, labels, wall.PoolLabels[0]);
+    amTorso::EndVentriclesAtValves(grid, wall.Base, wall.PoolLabels[1], wall.BaseMargin, labels);
+  }
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);
   for (const std::string& warning : WallWarnings(heart, wall))
     vtkWarningMacro(<< warning);

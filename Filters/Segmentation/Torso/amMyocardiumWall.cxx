@@ -29,6 +29,15 @@ double Median(std::vector<float> values)
   return *mid;
 }
 
+// A ventricle's blood lies inside its wall: where the scan shows the pool against fat or lung (a
+// wall of 3-4 mm lost in partial volume, as the RV's free wall often is), the fat or lung next to it
+// is the wall.
+bool EnclosesPool(std::uint8_t label)
+{
+  using P = amTorso::Phantom;
+  return label == P::Fat || label == P::RightLung || label == P::LeftLung;
+}
+
 // The voxels the wall grows over (the pools and the soft tissue the wall may hold): within the
 // least wall of the pools; where the intensity tells the wall, within MaximumThickness on the
 // wall's side of the threshold; else within the LV's (and any other pool's) Thickness or the RV's
@@ -52,7 +61,12 @@ amVoxelMask GrowRegion(const amVoxelGrid& g, const Box& box, const amTorso::Wall
   amVoxelMask grow(n, 0);
   for (std::size_t v = 0; v < n; ++v)
   {
+    const double height = p.Base.Found ? p.Base.Height(g, box.Global(g, v)) : 0.0;
     if (pools[v])
+      grow[v] = 1;
+    else if (height < -p.BaseMargin)
+      continue; // above the base: the atria's and the great vessels' walls are not the ventricles'
+    else if (p.Base.Found && d[v] <= p.MinimumThickness && EnclosesPool(labels[box.Global(g, v)]))
       grow[v] = 1;
     else if (candidate[v])
     {

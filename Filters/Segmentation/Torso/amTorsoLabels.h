@@ -177,6 +177,24 @@ struct AscendingAortaParameters
 std::size_t AortaOutOfAtria(const amVoxelGrid& g, int superiorAxis, int superiorSign, const AscendingAortaParameters& p,
   std::vector<std::uint8_t>& labels);
 
+/// The heart's base: a plane through the LV's pool where it meets the atria or the aorta, its
+/// normal (unit) along the LV's long axis towards the apex (the pool's voxel farthest from it).
+/// Positions are index times spacing. Found is false where the LV's pool meets neither.
+struct ValvePlane
+{
+  bool Found = false;
+  double Point[3] = { 0.0, 0.0, 0.0 };
+  double Normal[3] = { 0.0, 0.0, 1.0 };
+  /// mm towards the apex (negative above the base).
+  double Height(const amVoxelGrid& g, std::size_t v) const;
+};
+ValvePlane FindValvePlane(const amVoxelGrid& g, const std::vector<std::uint8_t>& labels, int lv);
+
+/// The RV's pool more than margin mm above the base (its label past the tricuspid valve, where the
+/// snake ran into the right atrium) goes to the atria. Returns the voxels relabelled.
+std::size_t EndVentriclesAtValves(
+  const amVoxelGrid& g, const ValvePlane& plane, int rv, double margin, std::vector<std::uint8_t>& labels);
+
 struct WallParameters
 {
   std::vector<int> PoolLabels{ Phantom::LeftVentricleBlood, Phantom::RightVentricleBlood };
@@ -186,6 +204,10 @@ struct WallParameters
   double MinimumThickness = 3.0;  // mm: the soft tissue this near the pools is wall, whatever it reads
   double Sigma = 2.0;             // mm
   double MinimumContrast = 5.0;   // HU
+  /// The heart's base: no wall grows more than BaseMargin above it, and below it the fat and lung
+  /// within MinimumThickness of a pool are wall (a ventricle's blood lies inside its wall).
+  ValvePlane Base;
+  double BaseMargin = 10.0; // mm
 };
 
 struct WallReport
