@@ -1043,3 +1043,96 @@ TEST(TorsoSegmentation, TheAscendingAortaIsTakenBackFromTheAtria)
     EXPECT_EQ(moved, tubeAtria + (atria - atriaKept)) << "sign " << sign;
   }
 }
+
+TEST(TorsoSegmentation, TheRightVentricleEndsAtTheHeartsBase)
+{
+  // 1 mm voxels. The LV's pool a half-ellipsoid from its base at x = 20 (radius 10 mm) to its apex at
+  // x = 60; the atria a ball against its base; the RV's pool a box beside it from x = 0 to 54, its
+  // part more than 10 mm above the base (x < 10) the right atrium its snake ran into.
+  amVoxelGrid g;
+  g.N[0] = 70;
+  g.N[1] = 60;
+  g.N[2] = 60;
+  using P = amThoraxPhantomModel;
+  const auto make = [&](bool withAtria) {
+    std::vector<std::uint8_t> labels(g.Size(), 0);
+    for (int k = 0; k < g.N[2]; ++k)
+      for (int j = 0; j < g.N[1]; ++j)
+        for (int i = 0; i < g.N[0]; ++i)
+        {
+          std::uint8_t& l = labels[g.Index(i, j, k)];
+          const double t = (i - 20) / 40.0, r2 = (j - 30) * (j - 30) + (k - 30) * (k - 30);
+          if (i >= 20 && t <= 1.0 && r2 <= 100.0 * (1.0 - t * t) + 1e-9)
+            l = P::LeftVentricleBlood;
+          else if (withAtria && std::hypot(i - 10, j - 30, k - 30) < 10.0)
+            l = amTorso::Atria;
+          if (i < 55 && j >= 42 && j < 50 && k >= 25 && k < 35)
+            l = P::RightVentricleBlood;
+        }
+    return labels;
+  };
+  std::vector<std::uint8_t> labels = make(true);
+  const amTorso::ValvePlane base = amTorso::FindValvePlane(g, labels, P::LeftVentricleBlood);
+  ASSERT_TRUE(base.Found);
+  EXPECT_NEAR(base.Point[0], 20.0, 1e-9);
+  EXPECT_NEAR(base.Normal[0], 1.0, 1e-9);
+  EXPECT_EQ(amTorso::EndVentriclesAtValves(g, base, P::RightVentricleBlood, 10.0, labels), 10u * 8u * 10u);
+  for (int i = 0; i < 55; ++i)
+    EXPECT_EQ(labels[g.Index(i, 45, 30)], i < 10 ? amTorso::Atria : P::RightVentricleBlood) << i;
+  // Without atria or an aorta against the LV (the phantom's capped heart), no base: nothing moves.
+  labels = make(false);
+  const amTorso::ValvePlane none = amTorso::FindValvePlane(g, labels, P::LeftVentricleBlood);
+  EXPECT_FALSE(none.Found);
+  EXPECT_EQ(amTorso::EndVentriclesAtValves(g, none, P::RightVentricleBlood, 10.0, labels), 0u);
+}
+
+TEST(TorsoSegmentation, AVentriclesBloodLiesInsideItsWall)
+{
+  // 1 mm voxels, a scan whose wall shows no contrast (every voxel 40 HU: the fallback wall). The LV's
+  // pool a ball (radius 10 mm) with the atria against its base; the RV's pool a box beside it whose
+  // free side lies against fat (a 4 mm wall lost in partial volume), 8 mm of it; soft tissue
+  // elsewhere. Below the base the fat within the RV's wall thickness (4 mm) of its pool is wall, the
+  // fat beyond stays fat; above the base (the atria's side) no wall grows.
+  amVoxelGrid g;
+  g.N[0] = g.N[1] = g.N[2] = 64;
+  using P = amThoraxPhantomModel;
+  std::vector<std::uint8_t> labels(g.Size(), P::SoftTissue);
+  for (int k = 0; k < g.N[2]; ++k)
+    for (int j = 0; j < g.N[1]; ++j)
+      for (int i = 0; i < g.N[0]; ++i)
+      {
+        std::uint8_t& l = labels[g.Index(i, j, k)];
+        if (std::hypot(i - 32, j - 30, k - 32) <= 10.0)
+          l = P::LeftVentricleBlood;
+        else if (std::hypot(i - 16, j - 30, k - 32) <= 6.0)
+          l = amTorso::Atria;
+        else if (i >= 24 && i < 44 && j >= 44 && j < 52 && k >= 26 && k < 38)
+          l = P::RightVentricleBlood;
+        else if (i >= 24 && i < 44 && j >= 52 && j < 60 && k >= 26 && k < 38)
+          l = P::Fat;
+      }
+  const std::vector<float> hu(g.Size(), 40.0f);
+  std::vector<std::uint8_t> classes(g.Size(), amTorso::SoftClass);
+  amTorso::WallParameters p;
+  p.Base = amTorso::FindValvePlane(g, labels, P::LeftVentricleBlood);
+  ASSERT_TRUE(p.Base.Found);
+  amTorso::MyocardiumWall(g, hu.data(), classes, p, labels);
+  for (int j = 52; j < 60; ++j)
+    EXPECT_EQ(labels[g.Index(34, j, 32)], j < 56 ? P::Myocardium : P::Fat) << j;
+  // The base lies at x = 22 (the LV's voxels against the atria), the apex at x = 42: nothing more than
+  // 10 mm above it (x < 12) is wall.
+  for (int k = 0; k < g.N[2]; ++k)
+    for (int j = 0; j < g.N[1]; ++j)
+      for (int i = 0; i < 12; ++i)
+        ASSERT_NE(labels[g.Index(i, j, k)], P::Myocardium) << i << " " << j << " " << k;
+  // Without a base (no atria or aorta against the LV) fat next to a pool stays fat.
+  std::vector<std::uint8_t> again = labels;
+  for (auto& l : again)
+    if (l == P::Myocardium || l == amTorso::Atria)
+      l = l == amTorso::Atria ? P::SoftTissue : P::Fat;
+  amTorso::WallParameters q;
+  q.Base = amTorso::FindValvePlane(g, again, P::LeftVentricleBlood);
+  EXPECT_FALSE(q.Base.Found);
+  amTorso::MyocardiumWall(g, hu.data(), classes, q, again);
+  EXPECT_EQ(again[g.Index(34, 53, 32)], P::Fat);
+}

@@ -66,7 +66,7 @@ amVoxelMask GrowRegion(const amVoxelGrid& g, const Box& box, const amTorso::Wall
       grow[v] = 1;
     else if (height < -p.BaseMargin)
       continue; // above the base: the atria's and the great vessels' walls are not the ventricles'
-    else if (p.Base.Found && d[v] <= p.MinimumThickness && EnclosesPool(labels[box.Global(g, v)]))
+    else if (p.Base.Found && d[v] <= p.RightThickness && EnclosesPool(labels[box.Global(g, v)]))
       grow[v] = 1;
     else if (candidate[v])
     {
