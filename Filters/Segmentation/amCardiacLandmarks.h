@@ -13,8 +13,10 @@
  * electrodes and amFitzHughNagumoSolver the stimulus from this output on their Landmarks inputs.
  *
  * The rules (anatomical, in world LPS millimetres, whatever the voxels' storage order):
- * - the long axis is the principal axis of the ventricles (myocardium and LV pool), pointed to the
- *   patient's left, front and feet; the endocardial apex is the LV pool's farthest voxel along it,
+ * - the long axis runs from the LV's base, where its pool meets the atria or the aortic root (labels
+ *   11, 8), to the pool's voxel farthest from there; where it meets neither, it is the principal
+ *   axis of the ventricles (myocardium and LV pool), pointed to the patient's left, front and feet;
+ *   the endocardial apex is the LV pool's farthest voxel along it,
  *   the epicardial apex the myocardium's beyond it within 15 mm of the axis, the base the centre of the pool's last 5
  * mm at the other end (the valve plane), the stimulus half-way between the apices (mid-wall);
  * - V4 is where the line from the apex straight forward meets the skin (the apex beat, 5th

@@ -461,8 +461,10 @@ std::vector<std::string> LungWarnings(const amTorso::TissueReport& tissues, doub
   return warnings;
 }
 
-// The myocardium step's settings, from the filter's.
-amTorso::WallParameters WallSettings(amTorsoSegmentation* filter)
+// The myocardium step's settings, from the filter's, and the heart's base where the atria or the
+// aorta show it (the RV's pool ended there).
+amTorso::WallParameters WallSettings(
+  amTorsoSegmentation* filter, const amVoxelGrid& grid, std::vector<std::uint8_t>& labels)
 {
   amTorso::WallParameters wall;
   wall.PoolLabels.clear();
@@ -474,6 +476,11 @@ amTorso::WallParameters WallSettings(amTorsoSegmentation* filter)
   wall.MinimumThickness = filter->GetMinimumWallThickness();
   wall.Sigma = filter->GetWallSmoothingSigma();
   wall.MinimumContrast = filter->GetMinimumWallContrast();
+  if (wall.PoolLabels.size() > 1)
+  {
+    wall.Base = amTorso::FindValvePlane(grid, labels, wall.PoolLabels[0]);
+    amTorso::EndVentriclesAtValves(grid, wall.Base, wall.PoolLabels[1], wall.BaseMargin, labels);
+  }
   return wall;
 }
 
@@ -636,13 +643,7 @@ int amTorsoSegmentation::RequestData(
       labels))
     organ[amThoraxPhantomModel::Aorta] = true;
 
-  amTorso::WallParameters wall = WallSettings(this);
-  if (wall.PoolLabels.size() > 1)
-  {
-    // The ventricles end at the heart's base where the atria or the aorta show it.
-    wall.Base = amTorso::FindValvePlane(grid, labels, wall.PoolLabels[0]);
-    amTorso::EndVentriclesAtValves(grid, wall.Base, wall.PoolLabels[1], wall.BaseMargin, labels);
-  }
+  const amTorso::WallParameters wall = WallSettings(this, grid, labels);
   const amTorso::WallReport heart = amTorso::MyocardiumWall(grid, hu->GetPointer(0), classes, wall, labels);
   for (const std::string& warning : WallWarnings(heart, wall))
     vtkWarningMacro(<< warning);

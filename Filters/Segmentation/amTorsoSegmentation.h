@@ -61,7 +61,13 @@
  *    labels the aorta from the contrast in front of the spine (where input 1 holds an aorta, the
  *    part its clicks' snake did not reach), and follows its ascending part down through the atria's
  *    label (their snake takes it where the aortic root touches the left atrium);
- * 6. the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
+ * 6. the ventricles end at the heart's base: where the LV's pool meets the atria or the aorta, the
+ *    plane through those voxels, its normal towards the pool's farthest voxel (the apex), is the
+ *    base, and the RV's pool more than 10 mm above it (its snake's run into the right atrium) goes
+ *    to the atria; no wall grows more than 10 mm above it, and below it the fat and lung within
+ *    RightVentricleWallThickness of a pool are wall (a ventricle's blood lies inside its wall,
+ *    which partial volume hides where it is 3-4 mm thick);
+ *    the myocardium: a CT cannot tell heart muscle (about 50 HU) from the soft tissue around it
  *    (about 40 HU) voxel by voxel, but it can on average. The intensity is averaged by a
  *    Gaussian of WallSmoothingSigma mm (at least 1.5 voxels) over soft tissue alone (its voxels
  *    whose 26 neighbours are all soft tissue and that are darker than half-way to the pools, so

@@ -9,8 +9,8 @@ namespace
 {
 using Vec = std::array<double, 3>;
 
-constexpr std::uint8_t Outside = 0, RightLung = 3, LeftLung = 4, Myocardium = 5, LeftVentricle = 6, Spine = 9,
-                       Ribs = 10;
+constexpr std::uint8_t Outside = 0, RightLung = 3, LeftLung = 4, Myocardium = 5, LeftVentricle = 6, Aorta = 8,
+                       Spine = 9, Ribs = 10, Atria = 11;
 constexpr double IntercostalSpace = 25.0; // mm, one rib space
 constexpr double SternalBorder = 25.0;    // mm from the mid-line
 
@@ -163,6 +163,58 @@ double HalfWay(double a, double b)
     d += 2.0 * M_PI;
   return a + 0.5 * d;
 }
+/// The LV's long axis from its base where its pool meets the atria or the aortic root (the centre
+/// of the pool's voxels against them) to the pool's voxel farthest from there; false where fewer
+/// than 8 voxels meet them (a heart without atria, as the phantom's).
+bool AxisFromTheBase(const Voxels& voxels, Vec& axis)
+{
+  const auto& g = voxels.G;
+  const auto& l = voxels.L;
+  const std::size_t step[3] = { 1, static_cast<std::size_t>(g.N[0]), static_cast<std::size_t>(g.N[0]) * g.N[1] };
+  Vec base{};
+  std::size_t count = 0;
+  std::vector<Vec> pool;
+  for (std::size_t v = 0; v < l.size(); ++v)
+  {
+    if (l[v] != LeftVentricle)
+      continue;
+    pool.push_back(voxels.At(v));
+    const int c[3] = { static_cast<int>(v % g.N[0]), static_cast<int>((v / g.N[0]) % g.N[1]),
+      static_cast<int>(v / step[2]) };
+    bool touches = false;
+    for (int a = 0; a < 3; ++a)
+      for (const int d : { -1, 1 })
+        if (c[a] + d >= 0 && c[a] + d < g.N[a])
+        {
+          const std::uint8_t n = l[d < 0 ? v - step[a] : v + step[a]];
+          touches = touches || n == Aorta || n == Atria;
+        }
+    if (touches)
+    {
+      for (int a = 0; a < 3; ++a)
+        base[a] += pool.back()[a];
+      ++count;
+    }
+  }
+  if (count < 8)
+    return false;
+  for (auto& x : base)
+    x /= static_cast<double>(count);
+  double far = 0.0;
+  for (const Vec& p : pool)
+  {
+    const Vec d = Sub(p, base);
+    const double length = std::sqrt(Dot(d, d));
+    if (length > far)
+    {
+      far = length;
+      for (int a = 0; a < 3; ++a)
+        axis[a] = d[a] / length;
+    }
+  }
+  return far > 0.0;
+}
+
 /// The LV pool's ends along the long axis: the endocardial apex and the valve plane's centre (the
 /// pool within 5 mm of its basal end); and the epicardial apex, the wall beyond the endocardial
 /// apex within 15 mm of the axis through it.
@@ -305,8 +357,8 @@ amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::v
     r.Problem = "no lungs (labels 3 and 4): no levels for the limb electrodes";
     return r;
   }
-  // The ventricles' long axis: the principal axis of their mass (walls and pools), longer from
-  // base to apex than across.
+  // The ventricles' long axis: from the LV's base where its pool meets the atria or the aortic root,
+  // else the principal axis of their mass (walls and pools), longer from base to apex than across.
   Vec centre{};
   const double mass = static_cast<double>(pool.size() + wall.size());
   for (const auto* part : { &pool, &wall })
@@ -321,7 +373,7 @@ amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::v
           cov[a][b] += (p[a] - centre[a]) * (p[b] - centre[b]) / mass;
   Vec axis = PrincipalAxis(cov);
   // Towards the patient's left, front and feet: LPS (+x, -y, -z).
-  if (axis[0] - axis[1] - axis[2] < 0.0)
+  if (!AxisFromTheBase(voxels, axis) && axis[0] - axis[1] - axis[2] < 0.0)
     for (auto& x : axis)
       x = -x;
   r.LongAxis = axis;
