@@ -211,7 +211,7 @@ class ChestCTToECG(unittest.TestCase):
         record(self, "chest_ct.lv_long_axis", length, "mm", [50, 100])
         # The ECG read as a cardiologist reads it: a QRS and a QT of a healthy adult, a frontal axis in
         # the normal range, limb leads above low voltage, the T wave upright in I, II, V5 and V6 and
-        # inverted in aVR (R progresses late, from V3 to V5, with no r in V1-V3: docs/limits.md).
+        # inverted in aVR (V1 and V2 have no septal r: docs/limits.md).
         self.assertRegex(p.stdout, r"ECG: QRS \d+ ms \(normal 70-110\), QT \d+ ms \(normal 320-460\)")
         with open(os.path.join(out, "anatomesh-run.json")) as f:
             figures = json.load(f)["figures"]["chest_ecg_features.csv"]
@@ -221,17 +221,10 @@ class ChestCTToECG(unittest.TestCase):
         heart.SetFileName(os.path.join(out, "chest_heart_0100.vtu"))
         heart.Update()
         activation = vtk_to_numpy(heart.GetOutput().GetPointData().GetArray("ActivationTime"))
-        # The QRS spans the ventricles' activation: at least all but the last hundredth of the nodes
-        # the fast endocardium reaches (apico-basal coordinate up to 0.8), at most all of them. Above
-        # it lies the base: a few cm3 of muscle that activate late and leave little mark on the leads.
-        mesh = vtkXMLUnstructuredGridReader()
-        mesh.SetFileName(os.path.join(out, "chest_tets.vtu"))
-        mesh.Update()
-        ids = vtk_to_numpy(heart.GetOutput().GetPointData().GetArray("InputPointId")).astype(int)
-        height = vtk_to_numpy(mesh.GetOutput().GetPointData().GetArray("ApicoBasal"))[ids]
-        ventricles = activation[(height <= 0.8) & (activation >= 0)]
-        self.assertGreater(figures["QRS ms"], np.percentile(ventricles, 99) - 8.0, ventricles.max())
-        self.assertLess(figures["QRS ms"], ventricles.max() + 8.0, np.percentile(ventricles, 99))
+        # The QRS spans the ventricles' activation: it ends within a few milliseconds of the last node's
+        # (the ventricles end at the base; above it no wall grows).
+        ventricles = activation[activation >= 0]
+        self.assertLess(abs(figures["QRS ms"] - ventricles.max()), 8.0, (figures["QRS ms"], ventricles.max()))
         leads_order = ("I", "II", "III", "aVR", "aVL", "aVF", "V1", "V2", "V3", "V4", "V5", "V6")
         record(self, "chest_ct.qrs", figures["QRS ms"], "ms", [70, 110])
         record(self, "chest_ct.activation", float(activation.max()), "ms")
