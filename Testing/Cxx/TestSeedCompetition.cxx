@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <random>
 
 namespace
@@ -27,7 +28,9 @@ bool InBall(double x, double y, double z, double cx)
   return (x - cx) * (x - cx) + y * y + z * z <= Radius * Radius;
 }
 
-vtkSmartPointer<vtkImageData> TwoChambers()
+// A scan of 71 x 41 x 41 voxels of 1 mm centred on the origin: value(p) HU at each voxel's
+// position, with 10 HU of noise.
+vtkSmartPointer<vtkImageData> Scan(const std::function<float(const double p[3])>& value, unsigned seed)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(71, 41, 41);
@@ -36,18 +39,27 @@ vtkSmartPointer<vtkImageData> TwoChambers()
   vtkNew<vtkFloatArray> hu;
   hu->SetName("CT");
   hu->SetNumberOfTuples(image->GetNumberOfPoints());
-  std::mt19937 random(7);
+  std::mt19937 random(seed);
   std::normal_distribution<float> noise(0.0f, 10.0f);
   for (vtkIdType id = 0; id < image->GetNumberOfPoints(); ++id)
   {
     double p[3];
     image->GetPoint(id, p);
-    const bool opening = std::abs(p[0]) < Centre && p[1] * p[1] + p[2] * p[2] <= Opening * Opening;
-    const bool blood = InBall(p[0], p[1], p[2], -Centre) || InBall(p[0], p[1], p[2], Centre) || opening;
-    hu->SetValue(id, (blood ? 300.0f : 40.0f) + noise(random));
+    hu->SetValue(id, value(p) + noise(random));
   }
   image->GetPointData()->SetScalars(hu);
   return image;
+}
+
+vtkSmartPointer<vtkImageData> TwoChambers()
+{
+  return Scan(
+    [](const double p[3]) {
+      const bool opening = std::abs(p[0]) < Centre && p[1] * p[1] + p[2] * p[2] <= Opening * Opening;
+      const bool blood = InBall(p[0], p[1], p[2], -Centre) || InBall(p[0], p[1], p[2], Centre) || opening;
+      return blood ? 300.0f : 40.0f;
+    },
+    7);
 }
 
 // Dice of a label against one ball.
@@ -213,26 +225,12 @@ TEST(SeedCompetition, TwoVentriclesPartAtTheSeptumNotBetweenTheirClicks)
   // runs into the other cavity. The RV's click lies 5 mm from the septum, the LV's 14 mm: half-way
   // between them the RV would take 4 mm of the LV's cavity. The fronts cross the septum slowly:
   // each cavity keeps its side.
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(71, 41, 41);
-  image->SetOrigin(-35, -20, -20);
-  image->SetSpacing(1, 1, 1);
-  vtkNew<vtkFloatArray> hu;
-  hu->SetName("CT");
-  hu->SetNumberOfTuples(image->GetNumberOfPoints());
-  std::mt19937 random(11);
-  std::normal_distribution<float> noise(0.0f, 10.0f);
-  const auto cavity = [](const double p[3]) {
-    return std::abs(p[0]) <= 25.0 && p[1] * p[1] + p[2] * p[2] <= 12.0 * 12.0;
-  };
-  for (vtkIdType id = 0; id < image->GetNumberOfPoints(); ++id)
-  {
-    double p[3];
-    image->GetPoint(id, p);
-    const float value = !cavity(p) ? 40.0f : std::abs(p[0]) <= 1.0 ? 180.0f : 300.0f;
-    hu->SetValue(id, value + noise(random));
-  }
-  image->GetPointData()->SetScalars(hu);
+  const auto image = Scan(
+    [](const double p[3]) {
+      const bool cavity = std::abs(p[0]) <= 25.0 && p[1] * p[1] + p[2] * p[2] <= 12.0 * 12.0;
+      return !cavity ? 40.0f : std::abs(p[0]) <= 1.0 ? 180.0f : 300.0f;
+    },
+    11);
   vtkNew<amSnakeSegmentation> snake;
   snake->SetInputData(image);
   snake->AddSeed(-14, 0, 0, 6);
