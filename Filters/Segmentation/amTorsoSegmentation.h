@@ -79,7 +79,10 @@
  *    soft tissue connected to the pools, within MaximumWallThickness of them, whose average lies
  *    on the wall's side of the half-way level, and the soft tissue within MinimumWallThickness of
  *    them (a ventricle's blood lies inside its wall), with its cavities filled; lung, fat, bone and
- *    other organs stop it. Where the two levels differ by less than MinimumWallContrast (or twice
+ *    other organs stop it. Its outline is then the heart's (pools and wall) averaged over the same
+ *    Gaussian and cut at one half: the average resolves nothing finer than its width, so the
+ *    threshold's bumps and dents of that size are its noise (a convex outline moves in by about the
+ *    width squared over its radius). Where the two levels differ by less than MinimumWallContrast (or twice
  *    the average's noise), intensity cannot tell the wall: a warning says so and the wall is the
  *    soft tissue within WallThickness of the pools (RightVentricleWallThickness of the RV's, the
  *    second of BloodPoolLabels). Field data "MyocardiumLevels": wall level,

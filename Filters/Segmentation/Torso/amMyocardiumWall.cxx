@@ -85,6 +85,29 @@ amVoxelMask GrowRegion(const amVoxelGrid& g, const Box& box, const amTorso::Wall
   }
   return grow;
 }
+
+// The wall's outline where intensity told it: the average that told it resolves no feature finer
+// than its own width, so the threshold's contour has bumps and dents of that size that are the
+// average's noise, not the wall's shape. The heart (pools and wall) averaged over a Gaussian of
+// that width and cut at one half keeps the outline where it is flat (a convex outline moves in by
+// about sigma squared over its radius) and removes them; the soft tissue next to the pools stays
+// wall, and no wall grows above the base or beyond MaximumThickness.
+void SmoothOutline(const amVoxelGrid& b, const Box& box, const amVoxelGrid& g, const amTorso::WallParameters& p,
+  const amVoxelMask& candidate, const amVoxelMask& pools, const std::vector<float>& d, double sigma, amVoxelMask& heart)
+{
+  const std::size_t n = b.Size();
+  std::vector<float> f(n);
+  for (std::size_t v = 0; v < n; ++v)
+    f[v] = heart[v] ? 1.0f : 0.0f;
+  amVoxel::Gaussian(b, f, sigma);
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    if (pools[v] || (heart[v] && d[v] <= p.MinimumThickness))
+      continue;
+    const bool belowBase = !p.Base.Found || p.Base.Height(g, box.Global(g, v)) >= -p.BaseMargin;
+    heart[v] = f[v] >= 0.5f && candidate[v] && d[v] <= p.MaximumThickness && belowBase;
+  }
+}
 }
 
 amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* hu,
@@ -211,6 +234,8 @@ amTorso::WallReport amTorso::MyocardiumWall(const amVoxelGrid& g, const float* h
   amVoxelMask heart(n, 0);
   for (std::size_t v = 0; v < n; ++v)
     heart[v] = id[v] >= 0 && keep[id[v]];
+  if (report.Contrast)
+    SmoothOutline(b, box, g, p, candidate, pools, d, report.Sigma, heart);
   // Cavities the noise leaves inside the wall belong to it.
   amVoxelMask filled = heart;
   amVoxel::FillHoles(b, filled);
