@@ -206,9 +206,9 @@ amTorso::TissueParameters TissueParametersFor(vtkDataArray* classTable, vtkMatri
 }
 
 // The output's field data: the label names and volumes, what the myocardium was told by, the
-// classes read from the scan and its noise.
+// classes read from the scan, its noise and the patient table left out (mm^3).
 void AddFieldData(vtkImageData* output, const std::vector<double>& volume, const amTorso::WallReport& heart,
-  vtkDataArray* classTable, double noise, double noiseSmoothing)
+  vtkDataArray* classTable, double noise, double noiseSmoothing, double tableVolume)
 {
   int top = amThoraxPhantomModel::NumberOfLabels - 1;
   for (int l = 0; l < 255; ++l)
@@ -248,6 +248,10 @@ void AddFieldData(vtkImageData* output, const std::vector<double>& volume, const
   noiseArray->SetComponentName(1, "Smoothing_mm");
   const double noiseRow[2] = { noise, noiseSmoothing };
   noiseArray->InsertNextTuple(noiseRow);
+  vtkNew<vtkDoubleArray> table;
+  table->SetName("PatientTable");
+  table->InsertNextValue(tableVolume);
+  output->GetFieldData()->AddArray(table);
   output->GetFieldData()->AddArray(noiseArray);
 }
 
@@ -675,7 +679,7 @@ int amTorsoSegmentation::RequestData(
   std::copy(labels.begin(), labels.end(), out->GetPointer(0));
   output->GetPointData()->SetScalars(out);
 
-  AddFieldData(output, volume, heart, classTable, noise, noiseSmoothing);
+  AddFieldData(output, volume, heart, classTable, noise, noiseSmoothing, tissues.TableVoxels * grid.VoxelVolume());
 
   std::ostringstream p;
   p << "AutomaticClasses=" << this->AutomaticClasses << " MaximumNoise=" << this->MaximumNoise

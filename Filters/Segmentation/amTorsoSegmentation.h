@@ -24,10 +24,16 @@
  *    (amIntensityClassifier's Automatic mode: a Gaussian mixture with each class's centre held in
  *    its anatomical range; field data "TissueClasses" gives the centres, spreads and boundaries
  *    found, and a warning names a class a chest CT shows that this scan does not: lung, fat,
- *    bone); without it, by amIntensityClassifier's fixed CT ranges; the air connected to the sides
- *    of the first two index axes is the exterior (through no gap of the body wall narrower than
- *    twice BodyGapClosing: by default none, or 15 mm where InputWindow starts above fat),
- *    everything else is the body (soft tissue unless a step below says otherwise);
+ *    bone); without it, by amIntensityClassifier's fixed CT ranges; the patient table is no part
+ *    of the body: it is made along the scanner's axis, where the body's outline changes from slice
+ *    to slice, so its shells (thin plates of fat's density or more, at most 12 mm thick, at least
+ *    100 mm across, beside air) lie at the same place, within a voxel, in at least 90 % of the slices
+ *    across the head-feet axis, and its foam core (the lung class, as constant) between them (a scan
+ *    of fewer than 20 slices or 60 mm is not searched; field data "PatientTable" gives its volume,
+ *    mm^3); the table and the air connected to the sides of the first two index axes are the
+ *    exterior (through no gap of the body wall narrower than twice BodyGapClosing: by default none,
+ *    or 15 mm where InputWindow starts above fat), everything else is the body (soft tissue unless
+ *    a step below says otherwise);
  * 2. fat is the fat class opened by the 6-neighbour cross: the one-voxel sheets that partial
  *    volume leaves where lung meets soft tissue are not fat, and go to their neighbours;
  * 3. the lungs are the two largest components of air inside the body (opened by a ball of

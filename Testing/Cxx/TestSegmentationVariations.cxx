@@ -16,7 +16,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <random>
 #include <string>
 
 namespace
@@ -33,7 +36,41 @@ struct Variation
   bool RAS = false; // stored from the patient's left and front (RAS), not from the right and back (LPS)
   // Habitus (amThoraxPhantomSource): fat (mm), the heart's scale and its axis (degrees).
   double Fat = 12, HeartScale = 1, HeartAngle = -30;
+  bool Table = false; // the patient lies on a table (AddTable)
 };
+
+// A patient table under the body's back, as scanners have: a carbon-fibre top of two shells
+// (3 mm, 200 HU) around a foam core (32 mm, -900 HU), curved up towards its sides, 4 mm below
+// the back at the middle, with the scan's noise. Outside the body: the truth there stays 0.
+void AddTable(vtkImageData* ct, vtkImageData* truth, double noise)
+{
+  int n[3];
+  ct->GetDimensions(n);
+  double origin[3], spacing[3];
+  ct->GetOrigin(origin);
+  ct->GetSpacing(spacing);
+  vtkDataArray* labels = truth->GetPointData()->GetScalars();
+  double back = -1e30;
+  for (vtkIdType v = 0; v < labels->GetNumberOfTuples(); ++v)
+    if (labels->GetComponent(v, 0) != 0)
+      back = std::max(back, origin[1] + spacing[1] * ((v / n[0]) % n[1]));
+  vtkDataArray* hu = ct->GetPointData()->GetScalars();
+  std::mt19937 random(7);
+  std::normal_distribution<double> gauss(0.0, noise);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
+      {
+        const double x = origin[0] + spacing[0] * i, y = origin[1] + spacing[1] * j;
+        const double depth = y - (back + 4.0 - x * x / 2400.0); // below the table's top
+        if (std::fabs(x) > 200.0 || depth < 0.0 || depth >= 38.0)
+          continue;
+        const vtkIdType v = (static_cast<vtkIdType>(k) * n[1] + j) * n[0] + i;
+        ASSERT_EQ(labels->GetComponent(v, 0), 0) << "the table crosses the body";
+        const double value = depth < 3.0 || depth >= 35.0 ? 200.0 : -900.0;
+        hu->SetComponent(v, 0, value + gauss(random));
+      }
+}
 
 // The image stored the other way along its first two axes: voxel (i, j, k) of the result is
 // (N0-1-i, N1-1-j, k) of the input, and the direction matrix says so (the same anatomy in world).
@@ -85,6 +122,8 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
   phantom->Update();
   vtkSmartPointer<vtkImageData> ct = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(0));
   vtkSmartPointer<vtkImageData> truth = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1));
+  if (v.Table)
+    AddTable(ct, truth, v.Noise);
   if (v.RAS)
   {
     ct = StoredRAS(ct);
@@ -121,6 +160,16 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
     return dice;
   }
   auto* seg = vtkImageData::SafeDownCast(torso->GetOutputDataObject(0));
+  // The table is found where there is one (its painted shells and foam: 38 mm thick across the
+  // field's width, the whole field's length) and nowhere else.
+  vtkDataArray* table = seg->GetFieldData()->GetArray("PatientTable");
+  EXPECT_TRUE(table != nullptr);
+  const double tableVolume = table ? table->GetComponent(0, 0) : 0.0;
+  const double painted = std::min(400.0, v.FieldOfView[0]) * 38.0 * v.FieldOfView[2];
+  if (v.Table)
+    EXPECT_NEAR(tableVolume, painted, 0.25 * painted) << v.Name;
+  else
+    EXPECT_EQ(tableVolume, 0.0) << v.Name;
   vtkDataArray* a = seg->GetPointData()->GetScalars();
   vtkDataArray* b = truth->GetPointData()->GetScalars();
   std::array<long, 11> both{}, na{}, nb{};
@@ -163,7 +212,9 @@ const Variation Family[] = { { "arterial", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0
   { "obese", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 380, 290, 270 }, false, 35 },
   { "large_heart", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 12, 1.15, -42 },
   { "small_heart", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 12, 0.85, -18 },
-  { "lean", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 6 } };
+  { "lean", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 6 },
+  // The patient on a scanner's table (AddTable), which is no part of the body.
+  { "on_table", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 300, 210 }, false, 12, 1, -30, true } };
 
 // 60 HU of noise at 2 mm.
 const Variation Noise60{ "noise_60", { 2, 2, 2 }, 60, 0.6, 300, 50, { 0, 0, 0 } };

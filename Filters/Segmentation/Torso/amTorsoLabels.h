@@ -43,6 +43,7 @@ struct TissueReport
   int BoneComponents = 0;
   std::size_t RibsJoinedToSpine = 0; // voxels of the largest bone piece parted from its column
   std::size_t GasBelowLungs = 0;     // air voxels under the lungs across tissue: not lung
+  std::size_t TableVoxels = 0;       // the patient table's: outside the body
 };
 
 struct TissueParameters
@@ -87,6 +88,25 @@ amVoxelMask ContrastVessels(const amVoxelGrid& g, const float* hu, float level, 
 /// away from nearVessels.
 amVoxelMask ClippedBone(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& exterior,
   const amVoxelMask& nearVessels, const TissueParameters& p);
+
+/// Where the patient table is told from the body (PatientTable), in mm.
+struct TableParameters
+{
+  int MinimumSlices = 20;         // fewer slices cannot tell a table from a body that does not change
+  double MinimumLength = 60.0;    // mm along the axis, likewise
+  double Constancy = 0.9;         // the share of the slices a table's pixel is dense in
+  double MaximumThickness = 12.0; // mm: a shell; the body's constant parts are thicker
+  double MinimumExtent = 100.0;   // mm across: a table spans the body's back
+};
+
+/// The patient table (couch): thin plates (shells of the fat's density or more) that lie at the
+/// same place in at least Constancy of the slices across axis (the scanner's long axis, within a
+/// pixel), at most MaximumThickness thick, at least MinimumExtent long across and beside air in
+/// the same share of the slices; and the foam between them (lung-like density, equally constant).
+/// The body's outline changes from slice to slice; a table is made along the axis. Returns its
+/// voxels (those not of the air class); none when the scan has too few slices to tell.
+amVoxelMask PatientTable(
+  const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, int axis, const TableParameters& p);
 
 /// Tissue labels from the classes: the exterior air (the air class connected to the sides of the
 /// first two index axes) 0; the body SoftTissue; fat (opened: partial-volume sheets are left

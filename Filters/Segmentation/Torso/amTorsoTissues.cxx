@@ -6,11 +6,13 @@
 
 namespace
 {
-amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, double gap)
+// The air outside the body, and the patient table (which the outside air passes).
+amVoxelMask Exterior(
+  const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& table, double gap)
 {
   amVoxelMask air(classes.size());
   for (std::size_t v = 0; v < classes.size(); ++v)
-    air[v] = classes[v] == amTorso::AirClass;
+    air[v] = classes[v] == amTorso::AirClass || table[v];
   std::vector<float> fromBody;
   if (gap > 0.0)
   {
@@ -46,8 +48,10 @@ amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& clas
     // Back to the body's surface: the air within the gap of the outside air is outside too.
     const std::vector<float> fromOutside = amVoxel::DistanceWithin(g, exterior, gap);
     for (std::size_t v = 0; v < classes.size(); ++v)
-      exterior[v] = classes[v] == amTorso::AirClass && fromOutside[v] <= gap;
+      exterior[v] = (classes[v] == amTorso::AirClass || table[v]) && fromOutside[v] <= gap;
   }
+  for (std::size_t v = 0; v < classes.size(); ++v)
+    exterior[v] = exterior[v] || table[v];
   return exterior;
 }
 
@@ -141,7 +145,10 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   const std::size_t minimumVoxels = p.MinimumVoxels;
   TissueReport report;
   const std::size_t n = classes.size();
-  const amVoxelMask exterior = Exterior(g, classes, p.BodyGap);
+  const amVoxelMask table = amTorso::PatientTable(g, classes, p.SuperiorAxis, amTorso::TableParameters());
+  for (const auto t : table)
+    report.TableVoxels += t != 0;
+  const amVoxelMask exterior = Exterior(g, classes, table, p.BodyGap);
   labels.assign(n, Phantom::SoftTissue);
   double bodyX = 0.0;
   for (std::size_t v = 0; v < n; ++v)

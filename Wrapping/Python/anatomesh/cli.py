@@ -113,6 +113,9 @@ def _describe(data):
                 found = ["%s %.0f+-%.0f HU" % (CLASS_NAMES[c], classes.GetComponent(c, 1), classes.GetComponent(c, 2))
                          for c in range(min(6, classes.GetNumberOfTuples())) if classes.GetComponent(c, 4)]
                 lines.append("      tissue classes read from the scan: " + ", ".join(found))
+            table = data.GetFieldData().GetArray("PatientTable")
+            if table is not None and table.GetValue(0) > 0:
+                lines.append("      patient table left out of the body: %.1f cm3" % (table.GetValue(0) / 1000.0))
     elif data.IsA("vtkTable"):
         lines.extend(_ecg_reading(data))
         columns = [data.GetColumn(c) for c in range(data.GetNumberOfColumns())]
