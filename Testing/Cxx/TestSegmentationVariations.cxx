@@ -37,6 +37,7 @@ struct Variation
   // Habitus (amThoraxPhantomSource): fat (mm), the heart's scale and its axis (degrees).
   double Fat = 12, HeartScale = 1, HeartAngle = -30;
   bool Table = false; // the patient lies on a table (AddTable)
+  bool Arms = false;  // the arms lie beside the body in the field (AddArms)
 };
 
 // A patient table under the body's back, as scanners have: a carbon-fibre top of two shells
@@ -98,6 +99,64 @@ vtkSmartPointer<vtkImageData> StoredRAS(vtkImageData* lps)
   return ras;
 }
 
+// Arms down beside the body, 8 mm from it, along the whole field: elliptic sections of 40 x 45 mm
+// (muscle, 45 HU) in 6 mm of fat (-100 HU), round a humerus of radius 11 mm (a 3 mm cortex of
+// 1000 HU round an adult's yellow marrow, -80 HU), with the scan's noise. Their truth is the
+// body's scheme: soft tissue, fat, and the cortex bone (label 10, "ribs and other bone"); the
+// marrow's fat is fat, as TorsoSegmentation labels it (only marrow brighter than soft tissue is
+// trabecular bone: the spinal canal's cord and fluid must stay out).
+void AddArms(vtkImageData* ct, vtkImageData* truth, double noise)
+{
+  int n[3];
+  ct->GetDimensions(n);
+  double origin[3], spacing[3];
+  ct->GetOrigin(origin);
+  ct->GetSpacing(spacing);
+  vtkDataArray* labels = truth->GetPointData()->GetScalars();
+  double side = 0.0, middle = 0.0;
+  long count = 0;
+  for (vtkIdType v = 0; v < labels->GetNumberOfTuples(); ++v)
+    if (labels->GetComponent(v, 0) != 0)
+    {
+      side = std::max(side, std::fabs(origin[0] + spacing[0] * (v % n[0])));
+      middle += origin[1] + spacing[1] * ((v / n[0]) % n[1]);
+      ++count;
+    }
+  middle /= std::max<long>(count, 1);
+  vtkDataArray* hu = ct->GetPointData()->GetScalars();
+  std::mt19937 random(11);
+  std::normal_distribution<double> gauss(0.0, noise);
+  for (const double sign : { -1.0, 1.0 })
+  {
+    const double cx = sign * (side + 8.0 + 40.0);
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i)
+        {
+          const double dx = origin[0] + spacing[0] * i - cx, dy = origin[1] + spacing[1] * j - middle;
+          const double r = std::hypot(dx / 40.0, dy / 45.0), bone = std::hypot(dx, dy);
+          if (r > 1.0)
+            continue;
+          const vtkIdType v = (static_cast<vtkIdType>(k) * n[1] + j) * n[0] + i;
+          ASSERT_EQ(labels->GetComponent(v, 0), 0) << "an arm crosses the body";
+          double value = 45.0;
+          int label = 1;
+          if (bone <= 11.0)
+          {
+            value = bone > 8.0 ? 1000.0 : -80.0;
+            label = bone > 8.0 ? 10 : 2;
+          }
+          else if (r > 1.0 - 6.0 / 42.5)
+          {
+            value = -100.0;
+            label = 2;
+          }
+          hu->SetComponent(v, 0, value + gauss(random));
+          labels->SetComponent(v, 0, label);
+        }
+  }
+}
+
 std::ostream& operator<<(std::ostream& os, const Variation& v)
 {
   return os << v.Name;
@@ -124,6 +183,8 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
   vtkSmartPointer<vtkImageData> truth = vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1));
   if (v.Table)
     AddTable(ct, truth, v.Noise);
+  if (v.Arms)
+    AddArms(ct, truth, v.Noise);
   if (v.RAS)
   {
     ct = StoredRAS(ct);
@@ -214,7 +275,9 @@ const Variation Family[] = { { "arterial", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0
   { "small_heart", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 12, 0.85, -18 },
   { "lean", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 6 },
   // The patient on a scanner's table (AddTable), which is no part of the body.
-  { "on_table", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 300, 210 }, false, 12, 1, -30, true } };
+  { "on_table", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 300, 210 }, false, 12, 1, -30, true },
+  // The arms down beside the body in the field (AddArms): body, not exterior; their humeri bone.
+  { "arms_in_field", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 520, 240, 210 }, false, 12, 1, -30, false, true } };
 
 // 60 HU of noise at 2 mm.
 const Variation Noise60{ "noise_60", { 2, 2, 2 }, 60, 0.6, 300, 50, { 0, 0, 0 } };
