@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -25,11 +26,12 @@ namespace
 {
 using Points = std::map<std::string, std::array<double, 3>>;
 
-Points Landmarks(amThoraxPhantomSource* phantom, amTest::ErrorCatcher* errors)
+// The named points CardiacLandmarks finds on a label map.
+Points LandmarksOf(vtkImageData* labels, amTest::ErrorCatcher* errors)
 {
   vtkNew<amCardiacLandmarks> landmarks;
   errors->Watch(landmarks);
-  landmarks->SetInputConnection(phantom->GetOutputPort(1)); // the exact labels
+  landmarks->SetInputData(labels);
   landmarks->Update();
   Points points;
   vtkPolyData* out = landmarks->GetOutput();
@@ -41,6 +43,13 @@ Points Landmarks(amThoraxPhantomSource* phantom, amTest::ErrorCatcher* errors)
     points[names->GetValue(i)] = x;
   }
   return points;
+}
+
+// ... on the phantom's exact labels.
+Points Landmarks(amThoraxPhantomSource* phantom, amTest::ErrorCatcher* errors)
+{
+  phantom->Update();
+  return LandmarksOf(vtkImageData::SafeDownCast(phantom->GetOutputDataObject(1)), errors);
 }
 
 double Distance(const std::array<double, 3>& a, const std::array<double, 3>& b)
@@ -173,21 +182,8 @@ TEST(CardiacLandmarks, V1AndV2LieAtTheSternumsBordersWhereTheBoneShowsIt)
   vtkNew<amTest::ErrorCatcher> errors;
   const Points plain = Landmarks(phantom, errors);
   EXPECT_EQ(plain.count("Sternum"), 0u);
-  vtkNew<amCardiacLandmarks> landmarks;
-  errors->Watch(landmarks);
-  landmarks->SetInputData(withSternum);
-  landmarks->Update();
+  const Points p = LandmarksOf(withSternum, errors);
   ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
-  Points p;
-  vtkPolyData* out = landmarks->GetOutput();
-  auto* names = vtkStringArray::SafeDownCast(out->GetPointData()->GetAbstractArray("Name"));
-  ASSERT_NE(names, nullptr);
-  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-  {
-    std::array<double, 3> x;
-    out->GetPoint(i, x.data());
-    p[names->GetValue(i)] = x;
-  }
   ASSERT_EQ(p.size(), 14u);
   ASSERT_EQ(p.count("Sternum"), 1u);
   EXPECT_NEAR(p.at("Sternum")[0], 4.0, 1.5);
@@ -201,4 +197,43 @@ TEST(CardiacLandmarks, V1AndV2LieAtTheSternumsBordersWhereTheBoneShowsIt)
     EXPECT_TRUE(OnSkin(phantom, p.at(lead), 3.0)) << lead;
   for (const char* other : { "V4", "V5", "V6", "RA", "LA", "LL", "Stimulus" }) // V3: half-way from V2 to V4
     EXPECT_EQ(Distance(p.at(other), plain.at(other)), 0.0) << other;
+}
+
+TEST(CardiacLandmarks, ArmsBesideTheTrunkCarryNoElectrode)
+{
+  // The phantom's exact labels (2 mm, a field 520 mm wide) with arms down beside the body, 8 mm
+  // from it (soft tissue, 40 x 45 mm): on the whole body's skin V6 (its leftmost point) and the
+  // limb electrodes (60 % of the way to its sides) would move onto the arms; on the trunk's skin
+  // every landmark is where it is without them.
+  vtkNew<amThoraxPhantomSource> phantom;
+  phantom->SetSpacing(2, 2, 2);
+  phantom->SetFieldOfView(520, 240, 210);
+  phantom->Update();
+  vtkNew<vtkImageData> withArms;
+  withArms->DeepCopy(phantom->GetOutputDataObject(1));
+  vtkDataArray* scalars = withArms->GetPointData()->GetScalars();
+  double side = 0.0;
+  for (vtkIdType v = 0; v < withArms->GetNumberOfPoints(); ++v)
+    if (scalars->GetComponent(v, 0) != 0)
+      side = std::max(side, std::fabs(withArms->GetPoint(v)[0]));
+  vtkIdType armVoxels = 0;
+  for (vtkIdType v = 0; v < withArms->GetNumberOfPoints(); ++v)
+  {
+    double x[3];
+    withArms->GetPoint(v, x);
+    if (std::hypot((std::fabs(x[0]) - side - 48.0) / 40.0, x[1] / 45.0) <= 1.0)
+    {
+      ASSERT_EQ(scalars->GetComponent(v, 0), 0);
+      scalars->SetComponent(v, 0, amThoraxPhantomModel::SoftTissue);
+      ++armVoxels;
+    }
+  }
+  ASSERT_GT(armVoxels, 10000);
+  vtkNew<amTest::ErrorCatcher> errors;
+  const Points plain = Landmarks(phantom, errors), armed = LandmarksOf(withArms, errors);
+  ASSERT_FALSE(errors->HasError()) << errors->AllErrors();
+  ASSERT_EQ(armed.size(), plain.size());
+  for (const auto& [name, x] : plain)
+    EXPECT_LT(Distance(x, armed.at(name)), 1e-9) << name;
+  EXPECT_LT(armed.at("V6")[0], side + 1.0);
 }

@@ -55,9 +55,39 @@ struct Voxels
       x[r] = G.Row[r][0] * i + G.Row[r][1] * j + G.Row[r][2] * k + G.Row[r][3];
     return x;
   }
-  // Body voxels with a face neighbour outside (not the image's border: a cut field of view has no
-  // skin there).
-  std::vector<Vec> Skin() const
+  // The trunk: the body voxels a path of face neighbours inside the body joins to the LV's pool.
+  // Arms in the field, apart from the trunk, are body but carry no chest electrode.
+  std::vector<char> Trunk() const
+  {
+    std::vector<char> trunk(L.size(), 0);
+    std::vector<std::size_t> front;
+    for (std::size_t v = 0; v < L.size(); ++v)
+      if (L[v] == LeftVentricle)
+      {
+        trunk[v] = 1;
+        front.push_back(v);
+      }
+    const std::size_t sy = G.N[0], sz = static_cast<std::size_t>(G.N[0]) * G.N[1];
+    while (!front.empty())
+    {
+      const std::size_t v = front.back();
+      front.pop_back();
+      const std::size_t i = v % sy, j = (v / sy) % G.N[1], k = v / sz;
+      const std::size_t next[6] = { i > 0 ? v - 1 : v, i + 1 < sy ? v + 1 : v, j > 0 ? v - sy : v,
+        j + 1 < static_cast<std::size_t>(G.N[1]) ? v + sy : v, k > 0 ? v - sz : v,
+        k + 1 < static_cast<std::size_t>(G.N[2]) ? v + sz : v };
+      for (const std::size_t w : next)
+        if (!trunk[w] && L[w] != Outside)
+        {
+          trunk[w] = 1;
+          front.push_back(w);
+        }
+    }
+    return trunk;
+  }
+  // The trunk's voxels with a face neighbour outside (not the image's border: a cut field of view
+  // has no skin there).
+  std::vector<Vec> Skin(const std::vector<char>& trunk) const
   {
     std::vector<Vec> skin;
     const std::size_t sx = 1, sy = G.N[0], sz = static_cast<std::size_t>(G.N[0]) * G.N[1];
@@ -66,7 +96,7 @@ struct Voxels
         for (int i = 0; i < G.N[0]; ++i)
         {
           const std::size_t v = k * sz + j * sy + i * sx;
-          if (L[v] == Outside)
+          if (!trunk[v])
             continue;
           const bool out = (i > 0 && L[v - sx] == Outside) || (i + 1 < G.N[0] && L[v + sx] == Outside) ||
             (j > 0 && L[v - sy] == Outside) || (j + 1 < G.N[1] && L[v + sy] == Outside) ||
@@ -339,8 +369,6 @@ amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::v
       lungTop = std::max(lungTop, z);
       lungBottom = std::min(lungBottom, z);
     }
-    if (l != Outside)
-      bodyBottom = std::min(bodyBottom, voxels.At(v)[2]);
   }
   if (pool.size() < 8)
   {
@@ -383,8 +411,12 @@ amThoraxLandmarks::Result amThoraxLandmarks::Find(const Grid& grid, const std::v
   r.LongAxisLength = Dot(Sub(epi, base), axis);
   const Vec stimulus{ 0.5 * (endo[0] + epi[0]), 0.5 * (endo[1] + epi[1]), 0.5 * (endo[2] + epi[2]) };
 
-  // The electrodes on the skin.
-  const std::vector<Vec> skin = voxels.Skin();
+  // The electrodes on the trunk's skin.
+  const std::vector<char> trunk = voxels.Trunk();
+  for (std::size_t v = 0; v < labels.size(); ++v)
+    if (trunk[v])
+      bodyBottom = std::min(bodyBottom, voxels.At(v)[2]);
+  const std::vector<Vec> skin = voxels.Skin(trunk);
   if (skin.empty())
   {
     r.Problem = "no skin: no body voxel beside the outside (a field of view inside the body)";
