@@ -27,8 +27,9 @@
  *    bone); without it, by amIntensityClassifier's fixed CT ranges; the patient table is no part
  *    of the body: it is made along the scanner's axis, where the body's outline changes from slice
  *    to slice, so its shells (thin plates of fat's density or more, at most 12 mm thick, at least
- *    100 mm across, beside air) lie at the same place, within a voxel, in at least 90 % of the slices
- *    across the head-feet axis, and its foam core (the lung class, as constant) between them (a scan
+ *    100 mm across or 50 where the image cuts them, beside air) lie at the same place, within a
+ *    voxel, in at least 90 % of the slices across the head-feet axis, and its foam core (the lung
+ *    class, as constant) between them (a scan
  *    of fewer than 20 slices or 60 mm is not searched; field data "PatientTable" gives its volume,
  *    mm^3); the table and the air connected to the sides of the first two index axes are the
  *    exterior (through no gap of the body wall narrower than twice BodyGapClosing: by default none,

@@ -296,6 +296,12 @@ class TissuesOfARealAbdomen(unittest.TestCase):
         record(self, "real_scans.abdomen_bone_dice", bone, "", 0.85)
         record(self, "real_scans.abdomen_spine_dice", spine, "", 0.85)
         record(self, "real_scans.abdomen_ribs_dice", rib, "", 0.75)
+        # The patient table, which the field of view cuts at its back (two pieces of its shell), is no
+        # part of the body: 62 cm3 of it (as soft tissue and fat, apart from the body, before).
+        table = torso.GetOutput().GetFieldData().GetArray("PatientTable").GetValue(0) / 1000.0
+        print("abdomen: patient table %.1f cm3" % table)
+        self.assertGreater(table, 20.0)
+        self.assertLess(table, 200.0)
         classes = torso.GetOutput().GetFieldData().GetArray("TissueClasses")
         self.assertEqual(classes.GetComponent(4, 4), 0.0)  # no contrast blood in this scan
         self.assertEqual(classes.GetComponent(1, 4), 1.0)  # aerated lung told from gas

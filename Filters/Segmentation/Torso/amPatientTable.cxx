@@ -79,17 +79,19 @@ amVoxelMask amTorso::PatientTable(
     always[q] = denseCount[q] >= least;
     alwaysAir[q] = airCount[q] >= least;
   }
-  // The parts of the constant footprint thinner than the table: the body's constant part (the
-  // spine, the back of a scan that covers little of the body) is thick.
+  // The parts of the constant footprint thinner than the table (counted a pixel wider on each side,
+  // as SlicesHolding counts it): the body's constant part (the spine, the back of a scan that
+  // covers little of the body) is thick.
+  const double h = std::max(plane.Spacing[0], plane.Spacing[1]);
+  const double half = p.MaximumThickness / 2.0 + h;
   const std::vector<float> depth = amVoxel::Depth(plane, always);
   amVoxelMask core(m);
   for (std::size_t q = 0; q < m; ++q)
-    core[q] = depth[q] > p.MaximumThickness / 2.0;
-  const double h = std::max(plane.Spacing[0], plane.Spacing[1]);
-  const std::vector<float> toCore = amVoxel::DistanceWithin(plane, core, p.MaximumThickness / 2.0 + h);
+    core[q] = depth[q] > half;
+  const std::vector<float> toCore = amVoxel::DistanceWithin(plane, core, half + h);
   amVoxelMask thin(m);
   for (std::size_t q = 0; q < m; ++q)
-    thin[q] = always[q] && toCore[q] > p.MaximumThickness / 2.0 + h;
+    thin[q] = always[q] && toCore[q] > half + h;
   // A table is long across the body and has the outside air beside it in every slice.
   const amVoxelMask grown = amVoxel::Dilate26(plane, thin, 1);
   std::vector<int> id;
@@ -100,7 +102,7 @@ amVoxelMask amTorso::PatientTable(
     bound->assign(count, 1 << 30);
   for (auto* bound : { &hi[0], &hi[1] })
     bound->assign(count, -1);
-  std::vector<char> besideAir(count, 0);
+  std::vector<char> besideAir(count, 0), cut(count, 0);
   for (std::size_t q = 0; q < m; ++q)
   {
     if (id[q] < 0 || !thin[q])
@@ -111,6 +113,7 @@ amVoxelMask amTorso::PatientTable(
     {
       lo[a][id[q]] = std::min(lo[a][id[q]], c[a]);
       hi[a][id[q]] = std::max(hi[a][id[q]], c[a]);
+      cut[id[q]] = cut[id[q]] || c[a] == 0 || c[a] == plane.N[a] - 1;
     }
     plane.AllNeighbours(q, [&](std::size_t r) { besideAir[id[q]] = besideAir[id[q]] || alwaysAir[r]; });
   }
@@ -122,7 +125,8 @@ amVoxelMask amTorso::PatientTable(
       continue;
     const double extent =
       std::hypot((hi[0][c] - lo[0][c]) * plane.Spacing[0], (hi[1][c] - lo[1][c]) * plane.Spacing[1]);
-    footprint[q] = extent >= p.MinimumExtent;
+    // A table the field of view cuts shows a part of its width.
+    footprint[q] = extent >= (cut[c] ? 0.5 : 1.0) * p.MinimumExtent;
   }
   // The foam between the shells: constant columns of lung-like density that touch the shells.
   amVoxelMask foamColumns(m);

@@ -96,12 +96,13 @@ struct TableParameters
   double MinimumLength = 60.0;    // mm along the axis, likewise
   double Constancy = 0.9;         // the share of the slices a table's pixel is dense in
   double MaximumThickness = 12.0; // mm: a shell; the body's constant parts are thicker
-  double MinimumExtent = 100.0;   // mm across: a table spans the body's back
+  double MinimumExtent = 100.0;   // mm across: a table spans the body's back (half where the image cuts it)
 };
 
 /// The patient table (couch): thin plates (shells of the fat's density or more) that lie at the
 /// same place in at least Constancy of the slices across axis (the scanner's long axis, within a
-/// pixel), at most MaximumThickness thick, at least MinimumExtent long across and beside air in
+/// pixel), at most MaximumThickness thick, at least MinimumExtent long across (half of it where the
+/// plane's border cuts them) and beside air in
 /// the same share of the slices; and the foam between them (lung-like density, equally constant).
 /// The body's outline changes from slice to slice; a table is made along the axis. Returns its
 /// voxels (those not of the air class); none when the scan has too few slices to tell.
