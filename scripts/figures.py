@@ -177,7 +177,7 @@ def row_atlas700(f):
 def row_dice(f):
     return ("main job's segmentation (1 mm, four clicks), Dice against the truth",
             "%.3f (myocardium) – %.3f, ribs %.3f; %d variations of the scan and the patient (contrast phase, noise, "
-            "kernel, voxels, rotation, storage, a cut field of view, fat, the heart's size and axis) ≥ %.3f at "
+            "kernel, voxels, rotation, storage, a cut field of view, fat, the heart's size and axis, a table, arms) ≥ %.3f at "
             "1.5–2.5 mm voxels, the aorta found without its two clicks ≥ %.3f; under 60 HU of noise the spine %.3f "
             "and ribs %.3f ([limits](docs/limits.md))" % (
                 f.v("main_job.dice_myocardium"), f.v("main_job.dice_highest"), f.v("main_job.dice_ribs"),
