@@ -38,6 +38,7 @@ amTorsoSegmentation::amTorsoSegmentation()
   , LungOpening(-1.0)
   , MinimumComponentVolume(50.0)
   , FindAorta(true)
+  , FindPatientTable(true)
   , BloodPoolLabels{ amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood }
   , MaximumWallThickness(40.0)
   , WallThickness(10.0)
@@ -630,6 +631,7 @@ int amTorsoSegmentation::RequestData(
   amTorso::TissueParameters tissueParameters =
     TissueParametersFor(classTable, input->GetDirectionMatrix(), hu->GetPointer(0));
   tissueParameters.MinimumVoxels = minimumVoxels;
+  tissueParameters.FindTable = this->FindPatientTable;
   AirBelowTheWindow(windowed && lowest > -100.0, this->BodyGapClosing, this->LungOpening, tissueParameters);
   amVoxelMask vessels;
   ContrastBone(grid, classTable, hu->GetPointer(0), organs, this->BloodPoolLabels,
@@ -685,7 +687,7 @@ int amTorsoSegmentation::RequestData(
   p << "AutomaticClasses=" << this->AutomaticClasses << " MaximumNoise=" << this->MaximumNoise
     << " InputWindow=" << window[0] << "," << window[1] << " BodyGapClosing=" << this->BodyGapClosing
     << " LungOpening=" << this->LungOpening << " MinimumComponentVolume=" << this->MinimumComponentVolume
-    << " FindAorta=" << this->FindAorta << " BloodPoolLabels=";
+    << " FindAorta=" << this->FindAorta << " FindPatientTable=" << this->FindPatientTable << " BloodPoolLabels=";
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
   p << " MaximumWallThickness=" << this->MaximumWallThickness << " WallThickness=" << this->WallThickness
@@ -706,6 +708,7 @@ void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BodyGapClosing: " << this->BodyGapClosing << "\n";
   os << indent << "LungOpening: " << this->LungOpening << "\n";
   os << indent << "FindAorta: " << this->FindAorta << "\n";
+  os << indent << "FindPatientTable: " << this->FindPatientTable << "\n";
   os << indent << "MinimumComponentVolume: " << this->MinimumComponentVolume << "\n";
   os << indent << "BloodPoolLabels:";
   for (const int l : this->BloodPoolLabels)

@@ -192,6 +192,14 @@ public:
   vtkBooleanMacro(FindAorta, bool);
   ///@}
 
+  ///@{
+  /// Find the patient table and leave it out of the body (step 1; default on): off for a scan whose
+  /// thin plates constant along the head-feet axis are the patient's own.
+  vtkSetMacro(FindPatientTable, bool);
+  vtkGetMacro(FindPatientTable, bool);
+  vtkBooleanMacro(FindPatientTable, bool);
+  ///@}
+
   /// The labels of input 1 that the myocardium wraps (default 6 7: the LV and RV blood pools).
   void SetBloodPoolLabels(int lv, int rv);
   void AddBloodPoolLabel(int label);
@@ -239,6 +247,7 @@ protected:
   double LungOpening;
   double MinimumComponentVolume;
   bool FindAorta;
+  bool FindPatientTable;
   std::vector<int> BloodPoolLabels;
   double MaximumWallThickness;
   double WallThickness;

@@ -164,7 +164,7 @@ std::ostream& operator<<(std::ostream& os, const Variation& v)
 
 // Dice per label of the torso segmentation of the variation, from the main job's clicks (without
 // the aorta's two when aortaClicked is false: TorsoSegmentation finds it).
-std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = true)
+std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = true, bool findTable = true)
 {
   vtkNew<amThoraxPhantomSource> phantom;
   phantom->SetSpacing(v.Spacing[0], v.Spacing[1], v.Spacing[2]);
@@ -210,6 +210,7 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
   vtkNew<amTorsoSegmentation> torso;
   torso->SetInputData(ct);
   torso->SetOrganConnection(snake->GetOutputPort());
+  torso->SetFindPatientTable(findTable);
   vtkNew<amTest::ErrorCatcher> errors;
   errors->Watch(torso);
   errors->Watch(snake);
@@ -227,7 +228,7 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
   EXPECT_TRUE(table != nullptr);
   const double tableVolume = table ? table->GetComponent(0, 0) : 0.0;
   const double painted = std::min(400.0, v.FieldOfView[0]) * 38.0 * v.FieldOfView[2];
-  if (v.Table)
+  if (v.Table && findTable)
     EXPECT_NEAR(tableVolume, painted, 0.25 * painted) << v.Name;
   else
     EXPECT_EQ(tableVolume, 0.0) << v.Name;
@@ -257,6 +258,10 @@ class AortaWithoutClicks : public ::testing::TestWithParam<Variation>
 {
 };
 
+// The patient on a table (AddTable).
+const Variation OnTable{ "on_table", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 300, 210 }, false, 12, 1, -30,
+  true };
+
 // One variation of each kind, at 2 mm and coarser slices.
 const Variation Family[] = { { "arterial", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 } },
   { "late_phase", { 2, 2, 2 }, 20, 0.6, 170, 95, { 0, 0, 0 } },
@@ -275,7 +280,7 @@ const Variation Family[] = { { "arterial", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0
   { "small_heart", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 12, 0.85, -18 },
   { "lean", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 210 }, false, 6 },
   // The patient on a scanner's table (AddTable), which is no part of the body.
-  { "on_table", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 300, 210 }, false, 12, 1, -30, true },
+  OnTable,
   // The arms down beside the body in the field (AddArms): body, not exterior; their humeri bone.
   { "arms_in_field", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 520, 240, 210 }, false, 12, 1, -30, false, true } };
 
@@ -335,4 +340,14 @@ TEST(HeavyNoise, BoneIsReadUnsmoothed)
   EXPECT_GE(dice[10], 0.95);
   amTest::RecordFigure("heavy_noise.spine_dice", dice[9], "", 0.95);
   amTest::RecordFigure("heavy_noise.ribs_dice", dice[10], "", 0.95);
+}
+
+// FindPatientTable off: the table is body, its foam a lung (as any segmentation without the table
+// step takes it): the switch is the step's.
+TEST(PatientTable, TurnedOffTheTableIsBody)
+{
+  const std::array<double, 11> dice = SegmentVariation(OnTable, true, false);
+  std::cout << "on_table without the table step: soft tissue " << dice[1] << ", left lung " << dice[4] << std::endl;
+  EXPECT_LT(dice[1], 0.9);
+  EXPECT_LT(dice[4], 0.5);
 }

@@ -50,6 +50,7 @@ struct TissueParameters
 {
   std::size_t MinimumVoxels = 0; // smaller components are left Pending
   double BodyGap = 0.0;          // mm: see amTorsoSegmentation::BodyGapClosing
+  bool FindTable = true;         // the patient table is exterior (PatientTable)
   double LungOpening = 0.0;      // mm: the lungs are the air inside the body opened by this ball
   bool LeftoverAirIsFat = false; // air inside the body that is not lung is fat (below the window)
   bool GasIsNotLung = false;     // a component mostly of the air class is gas, not lung (the scan

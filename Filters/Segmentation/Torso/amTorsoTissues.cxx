@@ -145,7 +145,8 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
   const std::size_t minimumVoxels = p.MinimumVoxels;
   TissueReport report;
   const std::size_t n = classes.size();
-  const amVoxelMask table = amTorso::PatientTable(g, classes, p.SuperiorAxis, amTorso::TableParameters());
+  const amVoxelMask table =
+    p.FindTable ? amTorso::PatientTable(g, classes, p.SuperiorAxis, amTorso::TableParameters()) : amVoxelMask(n, 0);
   for (const auto t : table)
     report.TableVoxels += t != 0;
   const amVoxelMask exterior = Exterior(g, classes, table, p.BodyGap);
