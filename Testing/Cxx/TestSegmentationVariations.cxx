@@ -40,37 +40,74 @@ struct Variation
   bool Arms = false;  // the arms lie beside the body in the field (AddArms)
 };
 
+// The body's extent in a truth label map (mm): its farthest point back (largest y), its widest
+// |x|, and its mean y.
+struct BodyExtent
+{
+  double Back = -1e30, Side = 0.0, MiddleY = 0.0;
+};
+
+BodyExtent ExtentOf(vtkImageData* truth)
+{
+  BodyExtent e;
+  long count = 0;
+  vtkDataArray* labels = truth->GetPointData()->GetScalars();
+  for (vtkIdType v = 0; v < labels->GetNumberOfTuples(); ++v)
+    if (labels->GetComponent(v, 0) != 0)
+    {
+      double p[3];
+      truth->GetPoint(v, p);
+      e.Back = std::max(e.Back, p[1]);
+      e.Side = std::max(e.Side, std::fabs(p[0]));
+      e.MiddleY += p[1];
+      ++count;
+    }
+  e.MiddleY /= std::max<long>(count, 1);
+  return e;
+}
+
+// Paints an object outside the body, the same in every slice, into the scan and its truth:
+// paint(x, y, value, label) says whether (x, y) is the object's and sets its intensity (HU, to
+// which the scan's noise is added) and its truth label (0: background). The object must not cross
+// the body.
+template<typename Paint>
+void PaintOutsideBody(vtkImageData* ct, vtkImageData* truth, double noise, unsigned seed, Paint paint)
+{
+  vtkDataArray* hu = ct->GetPointData()->GetScalars();
+  vtkDataArray* labels = truth->GetPointData()->GetScalars();
+  std::mt19937 random(seed);
+  std::normal_distribution<double> gauss(0.0, noise);
+  for (vtkIdType v = 0; v < ct->GetNumberOfPoints(); ++v)
+  {
+    double p[3], value = 0.0;
+    int label = 0;
+    ct->GetPoint(v, p);
+    if (!paint(p[0], p[1], value, label))
+      continue;
+    if (labels->GetComponent(v, 0) != 0)
+    {
+      ADD_FAILURE() << "the painted object crosses the body at " << p[0] << " " << p[1] << " " << p[2];
+      return;
+    }
+    hu->SetComponent(v, 0, value + gauss(random));
+    labels->SetComponent(v, 0, label);
+  }
+}
+
 // A patient table under the body's back, as scanners have: a carbon-fibre top of two shells
 // (3 mm, 200 HU) around a foam core (32 mm, -900 HU), curved up towards its sides, 4 mm below
 // the back at the middle, with the scan's noise. Outside the body: the truth there stays 0.
 void AddTable(vtkImageData* ct, vtkImageData* truth, double noise)
 {
-  int n[3];
-  ct->GetDimensions(n);
-  double origin[3], spacing[3];
-  ct->GetOrigin(origin);
-  ct->GetSpacing(spacing);
-  vtkDataArray* labels = truth->GetPointData()->GetScalars();
-  double back = -1e30;
-  for (vtkIdType v = 0; v < labels->GetNumberOfTuples(); ++v)
-    if (labels->GetComponent(v, 0) != 0)
-      back = std::max(back, origin[1] + spacing[1] * ((v / n[0]) % n[1]));
-  vtkDataArray* hu = ct->GetPointData()->GetScalars();
-  std::mt19937 random(7);
-  std::normal_distribution<double> gauss(0.0, noise);
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i)
-      {
-        const double x = origin[0] + spacing[0] * i, y = origin[1] + spacing[1] * j;
-        const double depth = y - (back + 4.0 - x * x / 2400.0); // below the table's top
-        if (std::fabs(x) > 200.0 || depth < 0.0 || depth >= 38.0)
-          continue;
-        const vtkIdType v = (static_cast<vtkIdType>(k) * n[1] + j) * n[0] + i;
-        ASSERT_EQ(labels->GetComponent(v, 0), 0) << "the table crosses the body";
-        const double value = depth < 3.0 || depth >= 35.0 ? 200.0 : -900.0;
-        hu->SetComponent(v, 0, value + gauss(random));
-      }
+  const double back = ExtentOf(truth).Back;
+  PaintOutsideBody(ct, truth, noise, 7, [back](double x, double y, double& value, int& label) {
+    const double depth = y - (back + 4.0 - x * x / 2400.0); // below the table's top
+    if (std::fabs(x) > 200.0 || depth < 0.0 || depth >= 38.0)
+      return false;
+    value = depth < 3.0 || depth >= 35.0 ? 200.0 : -900.0;
+    label = 0;
+    return true;
+  });
 }
 
 // The image stored the other way along its first two axes: voxel (i, j, k) of the result is
@@ -107,54 +144,26 @@ vtkSmartPointer<vtkImageData> StoredRAS(vtkImageData* lps)
 // trabecular bone: the spinal canal's cord and fluid must stay out).
 void AddArms(vtkImageData* ct, vtkImageData* truth, double noise)
 {
-  int n[3];
-  ct->GetDimensions(n);
-  double origin[3], spacing[3];
-  ct->GetOrigin(origin);
-  ct->GetSpacing(spacing);
-  vtkDataArray* labels = truth->GetPointData()->GetScalars();
-  double side = 0.0, middle = 0.0;
-  long count = 0;
-  for (vtkIdType v = 0; v < labels->GetNumberOfTuples(); ++v)
-    if (labels->GetComponent(v, 0) != 0)
+  const BodyExtent body = ExtentOf(truth);
+  PaintOutsideBody(ct, truth, noise, 11, [body](double x, double y, double& value, int& label) {
+    const double dx = std::fabs(x) - (body.Side + 8.0 + 40.0), dy = y - body.MiddleY;
+    const double r = std::hypot(dx / 40.0, dy / 45.0), bone = std::hypot(dx, dy);
+    if (r > 1.0)
+      return false;
+    value = 45.0;
+    label = 1;
+    if (bone <= 11.0)
     {
-      side = std::max(side, std::fabs(origin[0] + spacing[0] * (v % n[0])));
-      middle += origin[1] + spacing[1] * ((v / n[0]) % n[1]);
-      ++count;
+      value = bone > 8.0 ? 1000.0 : -80.0;
+      label = bone > 8.0 ? 10 : 2;
     }
-  middle /= std::max<long>(count, 1);
-  vtkDataArray* hu = ct->GetPointData()->GetScalars();
-  std::mt19937 random(11);
-  std::normal_distribution<double> gauss(0.0, noise);
-  for (const double sign : { -1.0, 1.0 })
-  {
-    const double cx = sign * (side + 8.0 + 40.0);
-    for (int k = 0; k < n[2]; ++k)
-      for (int j = 0; j < n[1]; ++j)
-        for (int i = 0; i < n[0]; ++i)
-        {
-          const double dx = origin[0] + spacing[0] * i - cx, dy = origin[1] + spacing[1] * j - middle;
-          const double r = std::hypot(dx / 40.0, dy / 45.0), bone = std::hypot(dx, dy);
-          if (r > 1.0)
-            continue;
-          const vtkIdType v = (static_cast<vtkIdType>(k) * n[1] + j) * n[0] + i;
-          ASSERT_EQ(labels->GetComponent(v, 0), 0) << "an arm crosses the body";
-          double value = 45.0;
-          int label = 1;
-          if (bone <= 11.0)
-          {
-            value = bone > 8.0 ? 1000.0 : -80.0;
-            label = bone > 8.0 ? 10 : 2;
-          }
-          else if (r > 1.0 - 6.0 / 42.5)
-          {
-            value = -100.0;
-            label = 2;
-          }
-          hu->SetComponent(v, 0, value + gauss(random));
-          labels->SetComponent(v, 0, label);
-        }
-  }
+    else if (r > 1.0 - 6.0 / 42.5)
+    {
+      value = -100.0;
+      label = 2;
+    }
+    return true;
+  });
 }
 
 std::ostream& operator<<(std::ostream& os, const Variation& v)

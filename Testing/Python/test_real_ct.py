@@ -213,6 +213,8 @@ class ChestCTToECG(unittest.TestCase):
         # the normal range, limb leads above low voltage, the T wave upright in I, II, V5 and V6 and
         # inverted in aVR (V1 and V2 have no septal r: docs/limits.md).
         self.assertRegex(p.stdout, r"ECG: QRS \d+ ms \(normal 70-110\), QT \d+ ms \(normal 320-460\)")
+        # The table behind the back is left out of the body, and the summary says so.
+        self.assertRegex(p.stdout, r"patient table left out of the body: \d+\.\d cm3")
         with open(os.path.join(out, "anatomesh-run.json")) as f:
             figures = json.load(f)["figures"]["chest_ecg_features.csv"]
         print("chest CT ECG: " + ", ".join("%s %s" % item for item in sorted(figures.items())))
@@ -297,7 +299,7 @@ class TissuesOfARealAbdomen(unittest.TestCase):
         record(self, "real_scans.abdomen_spine_dice", spine, "", 0.85)
         record(self, "real_scans.abdomen_ribs_dice", rib, "", 0.75)
         # The patient table, which the field of view cuts at its back (two pieces of its shell), is no
-        # part of the body: 62 cm3 of it (as soft tissue and fat, apart from the body, before).
+        # part of the body (else its 62 cm3 are soft tissue and fat apart from the body).
         table = torso.GetOutput().GetFieldData().GetArray("PatientTable").GetValue(0) / 1000.0
         print("abdomen: patient table %.1f cm3" % table)
         self.assertGreater(table, 20.0)

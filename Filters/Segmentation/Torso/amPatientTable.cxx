@@ -21,9 +21,10 @@ amVoxelGrid PlaneAcross(const amVoxelGrid& g, int axis)
   return plane;
 }
 
-// How many slices hold each column's pixel (or, within one pixel across, a neighbour) in the mask:
-// a table that sags or is tilted by a pixel over the scan's length is still counted in every slice.
-std::vector<int> SlicesHolding(const amVoxelGrid& g, int axis, const amVoxelMask& mask)
+// How many slices hold each column's pixel in the mask, or with near set a neighbour within one
+// pixel across: a table that sags or is tilted by a pixel over the scan's length is still counted
+// in every slice.
+std::vector<int> SlicesHolding(const amVoxelGrid& g, int axis, const amVoxelMask& mask, bool near)
 {
   const amVoxelGrid plane = PlaneAcross(g, axis);
   std::vector<int> count(plane.Size(), 0);
@@ -34,9 +35,9 @@ std::vector<int> SlicesHolding(const amVoxelGrid& g, int axis, const amVoxelMask
     amVoxel::SliceVoxels(g, axis, s, voxel);
     for (std::size_t p = 0; p < voxel.size(); ++p)
       in[p] = mask[voxel[p]];
-    const amVoxelMask near = amVoxel::Dilate26(plane, in, 1);
-    for (std::size_t p = 0; p < near.size(); ++p)
-      count[p] += near[p] != 0;
+    const amVoxelMask held = near ? amVoxel::Dilate26(plane, in, 1) : in;
+    for (std::size_t p = 0; p < held.size(); ++p)
+      count[p] += held[p] != 0;
   }
   return count;
 }
@@ -62,17 +63,8 @@ amVoxelMask amTorso::PatientTable(
   }
   const int slices = g.N[axis];
   const int least = static_cast<int>(std::ceil(p.Constancy * slices));
-  const std::vector<int> denseCount = SlicesHolding(g, axis, dense), foamCount = SlicesHolding(g, axis, foam);
-  std::vector<int> airCount(m, 0);
-  {
-    std::vector<std::size_t> voxel;
-    for (int s = 0; s < slices; ++s)
-    {
-      amVoxel::SliceVoxels(g, axis, s, voxel);
-      for (std::size_t q = 0; q < m; ++q)
-        airCount[q] += air[voxel[q]] != 0;
-    }
-  }
+  const std::vector<int> denseCount = SlicesHolding(g, axis, dense, true),
+                         foamCount = SlicesHolding(g, axis, foam, true), airCount = SlicesHolding(g, axis, air, false);
   amVoxelMask always(m), alwaysAir(m);
   for (std::size_t q = 0; q < m; ++q)
   {
