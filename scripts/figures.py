@@ -39,7 +39,7 @@ SLACK = 0.25  # a printed figure within a quarter of its bar
 GROUPS = {
     "main_job": {"ctest": r"^Python\.test_main_job$"},
     "chest_ct": {"ctest": r"^Python\.test_real_ct$"},
-    "variations": {"ctest": r"^(Sample/SegmentationVariations\.|Sample/AortaWithoutClicks\.|HeavyNoise)"},
+    "variations": {"ctest": r"^(Sample/SegmentationVariations\.|Airway/SegmentationVariations\.|Sample/AortaWithoutClicks\.|HeavyNoise)"},
     "tetgen": {"ctest": r"(AtlasChain\.(EveryLabelARegionAndTheBound|HundredLabels)|RealLabelMaps\.EveryLabelARegionThroughTetGen)"},
     "cgal": {"ctest": r"^LabelMapTetrahedralize\.(EveryLabelOfARealMapAndNoSliver|PreserveVolumesGivesEveryRegion)"},
     "dipole": {"ctest": r"^TorsoPotential\.CurrentSourceDipoleInASphere"},

@@ -39,6 +39,7 @@ amTorsoSegmentation::amTorsoSegmentation()
   , MinimumComponentVolume(50.0)
   , FindAorta(true)
   , FindPatientTable(true)
+  , FindAirway(true)
   , BloodPoolLabels{ amThoraxPhantomModel::LeftVentricleBlood, amThoraxPhantomModel::RightVentricleBlood }
   , MaximumWallThickness(40.0)
   , WallThickness(10.0)
@@ -208,8 +209,8 @@ amTorso::TissueParameters TissueParametersFor(vtkDataArray* classTable, vtkMatri
 
 // The output's field data: the label names and volumes, what the myocardium was told by, the
 // classes read from the scan, its noise and the patient table left out (mm^3).
-void AddFieldData(vtkImageData* output, const std::vector<double>& volume, const amTorso::WallReport& heart,
-  vtkDataArray* classTable, double noise, double noiseSmoothing, double tableVolume)
+void AddFieldData(vtkImageData* output, const std::vector<double>& volume, const std::vector<bool>& organ,
+  const amTorso::WallReport& heart, vtkDataArray* classTable, double noise, double noiseSmoothing, double tableVolume)
 {
   int top = amThoraxPhantomModel::NumberOfLabels - 1;
   for (int l = 0; l < 255; ++l)
@@ -220,6 +221,7 @@ void AddFieldData(vtkImageData* output, const std::vector<double>& volume, const
   for (int l = 0; l <= top; ++l)
     names->InsertNextValue(l < amThoraxPhantomModel::NumberOfLabels ? amThoraxPhantomModel::LabelName(l)
         : l == amTorso::Atria                                       ? "Atria"
+        : l == amTorso::AirwayLabel && !organ[l]                    ? "Airway"
                                                                     : "Organ");
   output->GetFieldData()->AddArray(names);
   vtkNew<vtkDoubleArray> volumes;
@@ -325,9 +327,11 @@ std::function<bool(std::size_t, std::uint8_t)> PartialVolumeRefusals(vtkDataArra
     return nullptr;
   const float soft = static_cast<float>(classTable->GetComponent(amTorso::SoftClass, 1));
   const float halfAir = 0.5f * (static_cast<float>(classTable->GetComponent(amTorso::LungClass, 1)) + soft);
-  return [values, halfAir, soft](std::size_t v, std::uint8_t l) {
+  const float halfGas = 0.5f * (static_cast<float>(classTable->GetComponent(amTorso::AirClass, 1)) + soft);
+  return [values, halfAir, halfGas, soft](std::size_t v, std::uint8_t l) {
     using Phantom = amThoraxPhantomModel;
     return ((l == Phantom::RightLung || l == Phantom::LeftLung) && values[v] > halfAir) ||
+      (l == amTorso::AirwayLabel && values[v] > halfGas) ||
       ((l == Phantom::Spine || l == Phantom::Ribs) && values[v] < soft);
   };
 }
@@ -441,13 +445,27 @@ bool CompleteAorta(vtkImageData* image, const amVoxelGrid& g, const amVoxelMask&
   return report.Found;
 }
 
-void WorldXRow(vtkImageData* image, double worldX[4])
+// World coordinate r (0: x, 1: y) of a voxel = row[0] i + row[1] j + row[2] k + row[3].
+void WorldRow(vtkImageData* image, int r, double row[4])
 {
   const double* spacing = image->GetSpacing();
   vtkMatrix3x3* direction = image->GetDirectionMatrix();
   for (int a = 0; a < 3; ++a)
-    worldX[a] = direction->GetElement(0, a) * spacing[a];
-  worldX[3] = image->GetOrigin()[0];
+    row[a] = direction->GetElement(r, a) * spacing[a];
+  row[3] = image->GetOrigin()[r];
+}
+
+// The lumen's partial volume reaches half-way from the gas to the soft tissue of its wall.
+amTorso::AirwayParameters AirwaySettings(vtkDataArray* classTable, const float* hu)
+{
+  amTorso::AirwayParameters p;
+  if (classTable && classTable->GetComponent(amTorso::SoftClass, 4) != 0.0)
+  {
+    p.HU = hu;
+    p.LumenLevel =
+      0.5 * (classTable->GetComponent(amTorso::AirClass, 1) + classTable->GetComponent(amTorso::SoftClass, 1));
+  }
+  return p;
 }
 
 // What the lungs' step could not do, in words.
@@ -623,7 +641,7 @@ int amTorsoSegmentation::RequestData(
   if (!unsmoothed.empty())
     BoneFromUnsmoothed(grid, classTable, unsmoothed, noise, classes);
   double worldX[4];
-  WorldXRow(input, worldX);
+  WorldRow(input, 0, worldX);
   const std::size_t minimumVoxels =
     static_cast<std::size_t>(std::ceil(this->MinimumComponentVolume / grid.VoxelVolume()));
 
@@ -639,6 +657,10 @@ int amTorsoSegmentation::RequestData(
   const amTorso::TissueReport tissues = amTorso::Tissues(grid, classes, worldX, tissueParameters, labels);
   for (const std::string& warning : LungWarnings(tissues, this->MinimumComponentVolume))
     vtkWarningMacro(<< warning);
+  // The trachea and the main bronchi, where the scan tells gas from aerated lung.
+  if (this->FindAirway && tissueParameters.GasIsNotLung && !tissueParameters.LeftoverAirIsFat)
+    amTorso::Airway(grid, classes, tissueParameters.SuperiorAxis, tissueParameters.SuperiorSign, minimumVoxels,
+      AirwaySettings(classTable, hu->GetPointer(0)), labels);
   this->UpdateProgress(0.4);
 
   std::vector<bool> organ = PasteOrgans(organs, labels);
@@ -681,22 +703,29 @@ int amTorsoSegmentation::RequestData(
   std::copy(labels.begin(), labels.end(), out->GetPointer(0));
   output->GetPointData()->SetScalars(out);
 
-  AddFieldData(output, volume, heart, classTable, noise, noiseSmoothing, tissues.TableVoxels * grid.VoxelVolume());
+  AddFieldData(
+    output, volume, organ, heart, classTable, noise, noiseSmoothing, tissues.TableVoxels * grid.VoxelVolume());
 
+  amProvenance::Record(output, input, "TorsoSegmentation", this->SettingsText(window));
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+std::string amTorsoSegmentation::SettingsText(const double window[2]) const
+{
   std::ostringstream p;
   p << "AutomaticClasses=" << this->AutomaticClasses << " MaximumNoise=" << this->MaximumNoise
     << " InputWindow=" << window[0] << "," << window[1] << " BodyGapClosing=" << this->BodyGapClosing
     << " LungOpening=" << this->LungOpening << " MinimumComponentVolume=" << this->MinimumComponentVolume
-    << " FindAorta=" << this->FindAorta << " FindPatientTable=" << this->FindPatientTable << " BloodPoolLabels=";
+    << " FindAorta=" << this->FindAorta << " FindPatientTable=" << this->FindPatientTable
+    << " FindAirway=" << this->FindAirway << " BloodPoolLabels=";
   for (const int l : this->BloodPoolLabels)
     p << l << ",";
   p << " MaximumWallThickness=" << this->MaximumWallThickness << " WallThickness=" << this->WallThickness
     << " RightVentricleWallThickness=" << this->RightVentricleWallThickness
     << " MinimumWallThickness=" << this->MinimumWallThickness << " WallSmoothingSigma=" << this->WallSmoothingSigma
     << " MinimumWallContrast=" << this->MinimumWallContrast;
-  amProvenance::Record(output, input, "TorsoSegmentation", p.str());
-  this->UpdateProgress(1.0);
-  return 1;
+  return p.str();
 }
 
 void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
@@ -709,6 +738,7 @@ void amTorsoSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LungOpening: " << this->LungOpening << "\n";
   os << indent << "FindAorta: " << this->FindAorta << "\n";
   os << indent << "FindPatientTable: " << this->FindPatientTable << "\n";
+  os << indent << "FindAirway: " << this->FindAirway << "\n";
   os << indent << "MinimumComponentVolume: " << this->MinimumComponentVolume << "\n";
   os << indent << "BloodPoolLabels:";
   for (const int l : this->BloodPoolLabels)

@@ -14,7 +14,8 @@
  * 0 outside the body, 1 soft tissue, 2 fat, 3 right lung, 4 left lung, 5 myocardium, 6 LV blood,
  * 7 RV blood, 8 aorta, 9 spine, 10 ribs (and other bone), and 11 the atria's blood where input 1
  * holds it (a click in the left atrium, label 11: SnakeSegmentation parts it from the LV's; no wall
- * is built round it, and the simulation takes it as blood that the ventricles' base opens into).
+ * is built round it, and the simulation takes it as blood that the ventricles' base opens into),
+ * and 12 the trachea and the main bronchi (Airway; FindAirway).
  * Steps:
  * 0. a scan noisier than MaximumNoise is smoothed to four fifths of it (the least Gaussian); its
  *    bone is read from the unsmoothed intensities (five noise deviations above the class below, and
@@ -49,7 +50,15 @@
  *    both (joined at the trachea), it is parted where the lungs meet: its deepest parts, at the
  *    least depth where they fall into two lungs, and every voxel to the nearer (where no depth
  *    parts it, at the body's mid-plane, with a warning). Other air inside the body goes to its
- *    neighbours, or is fat when InputWindow starts above fat's -100 HU (fat then reads as air);
+ *    neighbours, or is fat when InputWindow starts above fat's -100 HU (fat then reads as air).
+ *    Where the scan tells gas from aerated lung, FindAirway labels the trachea and the main
+ *    bronchi: the gas of a component that leaves the field at its top slice (along the index axis
+ *    closest to the head) with a section of 50 to 1000 mm^2 and enters a lung, where it lies
+ *    outside both lungs (each lung's parenchyma, the lung class away from that gas, closed by a
+ *    ball of 12 mm: the bronchi inside it are lung), with the voxels darker than half-way from gas
+ *    to soft tissue in two rings round it outside the lungs (its partial volume). The oesophagus's
+ *    gas enters no lung, the stomach's and the bowel's leave no field at its top; a field that
+ *    holds the larynx and the mouth shows no trachea leaving it;
  * 4. bone is the bone class, the voxels beside it more than half bone, and the trabecular bone it
  *    encloses (what a cortical ring encloses in a slice across any of the three axes, a deviation
  *    brighter than soft tissue's centre); never the contrast blood connected to the seeded blood
@@ -99,7 +108,8 @@
  *    used (mm);
  * 7. every voxel left undecided goes to the most frequent label among its neighbours (never to a
  *    lung when it is less than half air, brighter than half-way from the lung class to soft tissue,
- *    nor to bone when darker than soft tissue, while another label reaches it); components
+ *    nor to the airway when brighter than half-way from gas to soft tissue, nor to bone when darker
+ *    than soft tissue, while another label reaches it); components
  *    smaller than MinimumComponentVolume are handed to their neighbours the same way, and every
  *    organ but soft tissue, fat, spine and ribs keeps only its largest component.
  * Field data "LabelVolumes" (label, mm^3). Warnings name the organ: no lungs, the lungs split at the
@@ -115,6 +125,7 @@
 #include "AnatomeshFiltersSegmentationModule.h" // export macro
 #include "vtkImageAlgorithm.h"
 
+#include <string>
 #include <vector>
 
 class ANATOMESHFILTERSSEGMENTATION_EXPORT amTorsoSegmentation : public vtkImageAlgorithm
@@ -200,6 +211,17 @@ public:
   vtkBooleanMacro(FindPatientTable, bool);
   ///@}
 
+  ///@{
+  /// Find the trachea and the main bronchi (label 12, Airway; step 3; default on): where the scan
+  /// tells gas from aerated lung, the gas of a component that leaves the field at its top with a
+  /// section of 50 to 1000 mm^2 and enters a lung, outside both lungs closed by a 12 mm ball, with its
+  /// partial volume.
+  /// Off for a label scheme that has no airway (the trachea is then lung where it joins them).
+  vtkSetMacro(FindAirway, bool);
+  vtkGetMacro(FindAirway, bool);
+  vtkBooleanMacro(FindAirway, bool);
+  ///@}
+
   /// The labels of input 1 that the myocardium wraps (default 6 7: the LV and RV blood pools).
   void SetBloodPoolLabels(int lv, int rv);
   void AddBloodPoolLabel(int label);
@@ -239,6 +261,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// The settings of a run, for its provenance (window: the one used).
+  std::string SettingsText(const double window[2]) const;
 
   bool AutomaticClasses;
   double MaximumNoise;
@@ -248,6 +272,7 @@ protected:
   double MinimumComponentVolume;
   bool FindAorta;
   bool FindPatientTable;
+  bool FindAirway;
   std::vector<int> BloodPoolLabels;
   double MaximumWallThickness;
   double WallThickness;

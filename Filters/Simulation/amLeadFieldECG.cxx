@@ -56,7 +56,8 @@ amLeadFieldECG::amLeadFieldECG()
   , ExtracellularConductivityFibre(0.62)
   , ExtracellularConductivityTransverse(0.24)
   , Conductivity(0.2)
-  , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02, 11, 0.7 }
+  , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02, 11, 0.7, 12,
+    0.05 }
   , MaximumElectrodeDistance(20.0)
   , SamplingInterval(1.0)
   , NumberOfNodes(0)

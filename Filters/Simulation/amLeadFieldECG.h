@@ -15,8 +15,8 @@
  * Conductivities in S/m: in the heart sigma_i = IntracellularConductivityFibre (0.17) along the
  * fibres and IntracellularConductivityTransverse (0.019) across, sigma_e = 0.62 and 0.24 (Clerc
  * 1976, as the N-version benchmark uses); elsewhere per region, RegionConductivities (label, sigma)
- * pairs, else Conductivity (defaults as TorsoPotential's: soft tissue 0.2, fat 0.04, lungs 0.05,
- * blood 0.7, bone 0.02). amLeadFields solves div(sigma_b grad Z) = -delta_k for each electrode k
+ * pairs, else Conductivity (defaults as TorsoPotential's: soft tissue 0.2, fat 0.04, lungs and
+ * airway 0.05, blood 0.7, bone 0.02). amLeadFields solves div(sigma_b grad Z) = -delta_k for each electrode k
  * (RA is the ground) and each electrode's potential is then -(K_i Z_k) . Vm.
  *
  * The heart is read every SamplingInterval ms (1; 0: at its own time steps) from 0 to the end of

@@ -120,7 +120,8 @@ amTorsoPotential::amTorsoPotential()
   , PotentialArrayName(nullptr)
   , PotentialScale(100.0)
   , Conductivity(0.2)
-  , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02, 11, 0.7 }
+  , RegionConductivities{ 1, 0.2, 2, 0.04, 3, 0.05, 4, 0.05, 6, 0.7, 7, 0.7, 8, 0.7, 9, 0.02, 10, 0.02, 11, 0.7, 12,
+    0.05 }
   , Coupling(DIRICHLET)
   , IntracellularConductivity(0.17)
   , Solver(DIRECT)

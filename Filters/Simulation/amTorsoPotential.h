@@ -11,15 +11,15 @@
  * The torso is every tetrahedron of input 0 outside the heart regions (lungs, blood pools, soft
  * tissue, bone, ...), with conductivity per region: RegionConductivities (label, sigma) pairs,
  * else Conductivity. Units cancel (only ratios matter); the defaults are in S/m for the phantom's
- * labels: soft tissue (1) 0.2, fat (2) 0.04, lungs (3, 4) 0.05, blood (6, 7, 8) 0.7, bone (9, 10)
- * 0.02 — values of the order used in ECG forward models (blood about 3x muscle, lung about a
- * quarter, fat and bone lower). phi = PotentialScale * (heart potential) on the torso nodes
- * shared with the heart (PotentialScale 100: u = 1 is a 100 mV depolarisation, so phi is in mV
- * above rest), zero flux on the body surface (natural boundary condition). P1 elements
- * (amP1Assembly), the matrix assembled and factored once (sparse Cholesky, amSparseCholesky), or,
- * as an option, Jacobi-preconditioned conjugate gradients warm-started from the previous time
- * (amConjugateGradient). Torso parts that touch no heart node
- * (an undetermined potential) are held at 0 with a warning.
+ * labels: soft tissue (1) 0.2, fat (2) 0.04, lungs (3, 4) 0.05, blood (6, 7, 8, the atria 11) 0.7,
+ * bone (9, 10) 0.02, the airway (12, air-filled as the lungs) 0.05: values of the order used in
+ * ECG forward models (blood about 3x muscle, lung about a quarter, fat and bone lower).
+ * phi = PotentialScale * (heart potential) on the torso nodes shared with the heart
+ * (PotentialScale 100: u = 1 is a 100 mV depolarisation, so phi is in mV above rest), zero flux on
+ * the body surface (natural boundary condition). P1 elements (amP1Assembly), the matrix assembled
+ * and factored once (sparse Cholesky, amSparseCholesky), or, as an option, Jacobi-preconditioned
+ * conjugate gradients warm-started from the previous time (amConjugateGradient). Torso parts that
+ * touch no heart node (an undetermined potential) are held at 0 with a warning.
  *
  * Time: when input 1 is time-dependent the filter runs the whole series once (it requests every
  * time step of the heart in turn), keeps the potentials of every step (float), and then answers

@@ -36,9 +36,14 @@ struct Variation
   bool RAS = false; // stored from the patient's left and front (RAS), not from the right and back (LPS)
   // Habitus (amThoraxPhantomSource): fat (mm), the heart's scale and its axis (degrees).
   double Fat = 12, HeartScale = 1, HeartAngle = -30;
-  bool Table = false; // the patient lies on a table (AddTable)
-  bool Arms = false;  // the arms lie beside the body in the field (AddArms)
+  bool Table = false;          // the patient lies on a table (AddTable)
+  bool Arms = false;           // the arms lie beside the body in the field (AddArms)
+  bool Airway = false;         // the trachea and the main bronchi (AddAirway)
+  bool OesophagealGas = false; // a column of gas down the oesophagus, behind the trachea (AddAirway)
 };
+
+// The labels scored: the phantom's, the atria (11, none here) and the airway (12).
+constexpr int Labels = 13;
 
 // The body's extent in a truth label map (mm): its farthest point back (largest y), its widest
 // |x|, and its mean y.
@@ -166,6 +171,86 @@ void AddArms(vtkImageData* ct, vtkImageData* truth, double noise)
   });
 }
 
+// Distance (mm) from p to the segment ab.
+double ToSegment(const double p[3], const double a[3], const double b[3])
+{
+  double ab[3], ap[3], t = 0.0, length2 = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    ab[c] = b[c] - a[c];
+    ap[c] = p[c] - a[c];
+    t += ab[c] * ap[c];
+    length2 += ab[c] * ab[c];
+  }
+  t = std::clamp(t / length2, 0.0, 1.0);
+  double d2 = 0.0;
+  for (int c = 0; c < 3; ++c)
+    d2 += (ap[c] - t * ab[c]) * (ap[c] - t * ab[c]);
+  return std::sqrt(d2);
+}
+
+// The trachea and the main bronchi, their lumen air (-1000 HU): the trachea (radius 9 mm) from
+// above the field down to the carina (z = 45 mm), 20 mm to the patient's right of the mid-line
+// beside the aortic arch; the right main bronchus (radius 6.5 mm) down to (-45, 20, 32), the left
+// (6 mm) under the arch to (40, 12, 22), both ending 12-15 mm inside their lungs. Each voxel takes
+// the share of 27 samples in the lumen, with the scan's noise. The truth is Airway (12) outside
+// the lungs and lung inside them; the lumen crosses no other organ. With oesophagealGas, gas down
+// the oesophagus (radius 5 mm, from above the field to z = -20 mm, between the trachea, the aorta
+// and the spine), whose truth stays soft tissue. The ends are the unrotated anatomy's (mm),
+// turned with the patient.
+void AddAirway(amThoraxPhantomSource* phantom, vtkImageData* ct, vtkImageData* truth, double noise, bool trachea,
+  bool oesophagealGas)
+{
+  // The tubes' ends where the patient's rotation puts them.
+  const double model[6][3] = { { -20, 25, 45 }, { -20, 25, 400 }, { -45, 20, 32 }, { 40, 12, 22 }, { -12, 45, -20 },
+    { -12, 45, 400 } };
+  double carina[3], top[3], right[3], left[3], gasBottom[3], gasTop[3];
+  phantom->ModelToScanner(model[0], carina);
+  phantom->ModelToScanner(model[1], top);
+  phantom->ModelToScanner(model[2], right);
+  phantom->ModelToScanner(model[3], left);
+  phantom->ModelToScanner(model[4], gasBottom);
+  phantom->ModelToScanner(model[5], gasTop);
+  auto inLumen = [&](const double p[3]) {
+    return trachea &&
+      (ToSegment(p, carina, top) <= 9.0 || ToSegment(p, carina, right) <= 6.5 || ToSegment(p, carina, left) <= 6.0);
+  };
+  auto inGas = [&](const double p[3]) { return oesophagealGas && ToSegment(p, gasBottom, gasTop) <= 5.0; };
+  vtkDataArray* hu = ct->GetPointData()->GetScalars();
+  vtkDataArray* labels = truth->GetPointData()->GetScalars();
+  const double* h = ct->GetSpacing();
+  std::mt19937 random(13);
+  std::normal_distribution<double> gauss(0.0, noise);
+  for (vtkIdType v = 0; v < ct->GetNumberOfPoints(); ++v)
+  {
+    double p[3];
+    ct->GetPoint(v, p);
+    if (ToSegment(p, carina, top) > 12.0 + h[0] && ToSegment(p, carina, right) > 12.0 + h[0] &&
+      ToSegment(p, carina, left) > 12.0 + h[0] && !(oesophagealGas && ToSegment(p, gasBottom, gasTop) < 8.0 + h[0]))
+      continue;
+    int inside = 0;
+    for (int s = 0; s < 27; ++s)
+    {
+      const double q[3] = { p[0] + (s % 3 - 1) * h[0] / 3.0, p[1] + (s / 3 % 3 - 1) * h[1] / 3.0,
+        p[2] + (s / 9 - 1) * h[2] / 3.0 };
+      inside += inLumen(q) || inGas(q);
+    }
+    if (inside == 0)
+      continue;
+    const double old = hu->GetComponent(v, 0), share = inside / 27.0;
+    hu->SetComponent(v, 0, old + share * (-1000.0 + gauss(random) - old));
+    const int label = static_cast<int>(labels->GetComponent(v, 0));
+    if (!inLumen(p) || label == 3 || label == 4)
+      continue;
+    if (label != 1)
+    {
+      ADD_FAILURE() << "the airway crosses label " << label << " at " << p[0] << " " << p[1] << " " << p[2];
+      return;
+    }
+    labels->SetComponent(v, 0, 12);
+  }
+}
+
 std::ostream& operator<<(std::ostream& os, const Variation& v)
 {
   return os << v.Name;
@@ -173,7 +258,7 @@ std::ostream& operator<<(std::ostream& os, const Variation& v)
 
 // Dice per label of the torso segmentation of the variation, from the main job's clicks (without
 // the aorta's two when aortaClicked is false: TorsoSegmentation finds it).
-std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = true, bool findTable = true)
+std::array<double, Labels> SegmentVariation(const Variation& v, bool aortaClicked = true, bool findTable = true)
 {
   vtkNew<amThoraxPhantomSource> phantom;
   phantom->SetSpacing(v.Spacing[0], v.Spacing[1], v.Spacing[2]);
@@ -194,6 +279,8 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
     AddTable(ct, truth, v.Noise);
   if (v.Arms)
     AddArms(ct, truth, v.Noise);
+  if (v.Airway || v.OesophagealGas)
+    AddAirway(phantom, ct, truth, v.Noise, v.Airway, v.OesophagealGas);
   if (v.RAS)
   {
     ct = StoredRAS(ct);
@@ -224,7 +311,7 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
   errors->Watch(torso);
   errors->Watch(snake);
   torso->Update();
-  std::array<double, 11> dice{};
+  std::array<double, Labels> dice{};
   if (errors->HasError())
   {
     ADD_FAILURE() << v.Name << ": " << errors->AllErrors();
@@ -243,18 +330,18 @@ std::array<double, 11> SegmentVariation(const Variation& v, bool aortaClicked = 
     EXPECT_EQ(tableVolume, 0.0) << v.Name;
   vtkDataArray* a = seg->GetPointData()->GetScalars();
   vtkDataArray* b = truth->GetPointData()->GetScalars();
-  std::array<long, 11> both{}, na{}, nb{};
+  std::array<long, Labels> both{}, na{}, nb{};
   for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
   {
     const int p = static_cast<int>(a->GetComponent(i, 0)), q = static_cast<int>(b->GetComponent(i, 0));
-    if (p < 11)
+    if (p < Labels)
       ++na[p];
-    if (q < 11)
+    if (q < Labels)
       ++nb[q];
-    if (p == q && p < 11)
+    if (p == q && p < Labels)
       ++both[p];
   }
-  for (int l = 0; l < 11; ++l)
+  for (int l = 0; l < Labels; ++l)
     dice[l] = na[l] + nb[l] ? 2.0 * both[l] / (na[l] + nb[l]) : 1.0;
   return dice;
 }
@@ -291,7 +378,21 @@ const Variation Family[] = { { "arterial", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0
   // The patient on a scanner's table (AddTable), which is no part of the body.
   OnTable,
   // The arms down beside the body in the field (AddArms): body, not exterior; their humeri bone.
-  { "arms_in_field", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 520, 240, 210 }, false, 12, 1, -30, false, true } };
+  { "arms_in_field", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 520, 240, 210 }, false, 12, 1, -30, false, true },
+  // A chest's field of view (the neck cut at its top) with the trachea and the main bronchi (AddAirway).
+  { "airway", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 170 }, false, 12, 1, -30, false, false, true } };
+
+// The airway turned with the patient and stored RAS, under 60 HU of noise, in thick slices, and
+// beside an oesophagus holding gas.
+const Variation AirwayFamily[] = { { "airway_rotated_RAS", { 2, 2, 2 }, 20, 0.6, 300, 50, { 4, -3, 5 },
+                                     { 320, 240, 170 }, true, 12, 1, -30, false, false, true },
+  { "airway_noise_60", { 2, 2, 2 }, 60, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 170 }, false, 12, 1, -30, false, false,
+    true },
+  { "airway_thick_slices", { 0.8, 0.8, 2.5 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 170 }, false, 12, 1, -30,
+    false, false, true },
+  // Gas down the oesophagus, also leaving the field at its top, and no trachea: no airway.
+  { "oesophageal_gas", { 2, 2, 2 }, 20, 0.6, 300, 50, { 0, 0, 0 }, { 320, 240, 170 }, false, 12, 1, -30, false, false,
+    false, true } };
 
 // 60 HU of noise at 2 mm.
 const Variation Noise60{ "noise_60", { 2, 2, 2 }, 60, 0.6, 300, 50, { 0, 0, 0 } };
@@ -305,13 +406,15 @@ std::string NameOf(const ::testing::TestParamInfo<Variation>& info)
 TEST_P(SegmentationVariations, EveryOrganMeetsItsDice)
 {
   const Variation& v = GetParam();
-  const std::array<double, 11> dice = SegmentVariation(v);
+  const std::array<double, Labels> dice = SegmentVariation(v);
+  // Labels 1-10 and the airway (12: 1 where neither the truth nor the segmentation has one).
+  const int scored[] = { 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12 };
   std::string row = v.Name + ":";
-  for (int l = 1; l <= 10; ++l)
+  for (const int l : scored)
     row += " " + std::to_string(dice[l]).substr(0, 5);
   std::cout << row << std::endl;
   int lowest = 1;
-  for (int l = 1; l <= 10; ++l)
+  for (const int l : scored)
   {
     EXPECT_GE(dice[l], l == 5 ? 0.93 : 0.95) << v.Name << ", label " << l;
     lowest = dice[l] < dice[lowest] ? l : lowest;
@@ -324,13 +427,16 @@ TEST_P(AortaWithoutClicks, TheAortaIsTheContrastInFrontOfTheSpine)
   // The same scans with clicks in the blood pools alone: the aorta is the contrast running down in
   // front of the spine (TorsoSegmentation's FindAorta).
   const Variation& v = GetParam();
-  const std::array<double, 11> dice = SegmentVariation(v, false);
+  const std::array<double, Labels> dice = SegmentVariation(v, false);
   std::cout << v.Name << ": aorta without its clicks " << dice[8] << std::endl;
   EXPECT_GE(dice[8], 0.95) << v.Name;
   amTest::RecordFigure("variations.aorta_without_click_lowest", dice[8], "", 0.95);
 }
 
 INSTANTIATE_TEST_SUITE_P(Sample, SegmentationVariations, ::testing::ValuesIn(Family), NameOf);
+
+// The trachea and the main bronchi across orientation, noise and slices.
+INSTANTIATE_TEST_SUITE_P(Airway, SegmentationVariations, ::testing::ValuesIn(AirwayFamily), NameOf);
 
 // 60 HU of noise at 2 mm: the myocardium 10 HU above the soft tissue around it.
 INSTANTIATE_TEST_SUITE_P(HeavyNoise, SegmentationVariations, ::testing::Values(Noise60), NameOf);
@@ -343,7 +449,7 @@ INSTANTIATE_TEST_SUITE_P(HeavyNoise, AortaWithoutClicks, ::testing::Values(Noise
 // the spine and the ribs meet their bars there.
 TEST(HeavyNoise, BoneIsReadUnsmoothed)
 {
-  const std::array<double, 11> dice = SegmentVariation(Noise60);
+  const std::array<double, Labels> dice = SegmentVariation(Noise60);
   std::cout << "noise_60 bone: spine " << dice[9] << ", ribs " << dice[10] << std::endl;
   EXPECT_GE(dice[9], 0.95);
   EXPECT_GE(dice[10], 0.95);
@@ -355,7 +461,7 @@ TEST(HeavyNoise, BoneIsReadUnsmoothed)
 // step takes it): the switch is the step's.
 TEST(PatientTable, TurnedOffTheTableIsBody)
 {
-  const std::array<double, 11> dice = SegmentVariation(OnTable, true, false);
+  const std::array<double, Labels> dice = SegmentVariation(OnTable, true, false);
   std::cout << "on_table without the table step: soft tissue " << dice[1] << ", left lung " << dice[4] << std::endl;
   EXPECT_LT(dice[1], 0.9);
   EXPECT_LT(dice[4], 0.5);

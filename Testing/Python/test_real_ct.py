@@ -100,6 +100,65 @@ class HeartOfRealCT(unittest.TestCase):
 
 
 
+@unittest.skipUnless(os.path.exists(CT) and os.path.exists(HEART_CT), "shared cardiac CT absent: " + CT)
+class AirwayOfRealCT(unittest.TestCase):
+    """TorsoSegmentation's airway (label 12) on the two real contrast crops, whose fields cut the
+    neck and the lungs: the trachea leaves the top slice and parts at the carina into both main
+    bronchi, which end where they enter the lungs; the lungs' lumens at the crops' sides are not
+    the outside. No reference mask holds the airway: checked against an adult's trachea (lumen
+    150-450 mm2 across, here 15-18 mm wide) and against the carina's two branches."""
+
+    def airway_of(self, path):
+        import numpy as np
+        import anatomesh
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        scan = reader(path)
+        torso = anatomesh.amTorsoSegmentation()
+        torso.SetInputConnection(scan.GetOutputPort())
+        torso.Update()
+        image = torso.GetOutput()
+        labels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(image.GetDimensions()[::-1])
+        names = image.GetFieldData().GetAbstractArray("LabelNames")
+        self.assertGreater(names.GetNumberOfValues(), 12, "no airway found")
+        self.assertEqual(names.GetValue(12), "Airway")
+        return labels, image.GetSpacing()
+
+    def test_trachea_and_main_bronchi(self):
+        import numpy as np
+        for path in (CT, HEART_CT):
+            labels, spacing = self.airway_of(path)
+            airway = labels == 12
+            cm3 = airway.sum() * np.prod(spacing) / 1000.0
+            top = airway[-1].sum() * spacing[0] * spacing[1]  # the crops' last slice is the highest
+            # Below the carina the airway is two branches, apart on either side of the trachea's
+            # centre where it leaves the field (i: the first index).
+            centre = np.nonzero(airway[-1])[1].mean()
+            parted = 0
+            for section in airway:
+                i = np.nonzero(section)[1]
+                parted += bool((i < centre - 3).sum() > 10 and (i > centre + 3).sum() > 10
+                               and not np.any(np.abs(i - centre) <= 3))
+            # The lumens of the lungs that the field cuts at its sides are no outside air: no run of
+            # label 0 along a row lies between lung (or airway) voxels.
+            enclosed = 0
+            for row in labels.reshape(-1, labels.shape[-1]):
+                zero = np.flatnonzero(row == 0)
+                if zero.size:
+                    starts = zero[np.r_[True, np.diff(zero) > 1]]
+                    ends = zero[np.r_[np.diff(zero) > 1, True]]
+                    for a, b in zip(starts, ends):
+                        if a > 0 and b + 1 < row.size and row[a - 1] in (3, 4, 12) and row[b + 1] in (3, 4, 12):
+                            enclosed += b - a + 1
+            print("%s: airway %.1f cm3, trachea %.0f mm2 at the top, %d slices below the carina, "
+                  "%d outside voxels enclosed by lung"
+                  % (os.path.basename(os.path.dirname(path)), cm3, top, parted, enclosed))
+            self.assertTrue(10.0 < cm3 < 80.0, cm3)
+            self.assertTrue(150.0 < top < 450.0, top)
+            self.assertGreaterEqual(parted * spacing[2], 10.0)  # the main bronchi, 10 mm and more
+            self.assertLess(enclosed * np.prod(spacing), 1000.0)  # under 1 cm3
+        record(self, "real_scans.airway_cm3", cm3, "cm3")
+
+
 CHEST = os.path.join(SHARED, "lidc_chest_ct_vtkjs", "LIDC2.mha")
 
 
@@ -258,7 +317,7 @@ class TissuesOfARealAbdomen(unittest.TestCase):
     vertebrae and ribs (trabecular bone is what the cortex encloses in a slice across any axis), and no
     gas of the stomach or bowel as lung (a voxel between lung and tissue is lung when more than half
     of it is air). Measured: lungs 0.966 (right 0.969, left 0.959), bone 0.870 (spine 0.896 against the
-    vertebrae, ribs 0.786), gas as lung 0 cm3."""
+    vertebrae, ribs 0.786), gas as lung 0 cm3, no airway."""
 
     def test_lungs_bone_and_gas(self):
         import numpy as np
@@ -285,6 +344,8 @@ class TissuesOfARealAbdomen(unittest.TestCase):
         spine, rib = dice(labels == 9, vertebrae), dice(labels == 10, ribs)
         gut = np.isin(ref, [6, 18, 19, 20])  # stomach, small bowel, duodenum, colon
         gas = (np.isin(labels, [3, 4]) & gut).sum() * 27.0 / 1000.0  # cm3 at 3 mm
+        # No trachea leaves this field at its top (the lung bases do): no airway (label 12).
+        airway = (labels == 12).sum() * 27.0 / 1000.0
         print("abdomen: lungs %.3f (right %.3f, left %.3f), bone %.3f (spine %.3f, ribs %.3f), gas as lung %.1f cm3"
               % (lungs, right, left, bone, spine, rib, gas))
         self.assertGreater(lungs, 0.95)
@@ -294,6 +355,7 @@ class TissuesOfARealAbdomen(unittest.TestCase):
         self.assertGreater(spine, 0.85)  # the vertebrae T11-L2, ribs 11 and 12 joined to them parted
         self.assertGreater(rib, 0.75)
         self.assertLessEqual(gas, 1.0)
+        self.assertEqual(airway, 0.0)
         record(self, "real_scans.abdomen_lungs_dice", lungs, "", 0.95)
         record(self, "real_scans.abdomen_bone_dice", bone, "", 0.85)
         record(self, "real_scans.abdomen_spine_dice", spine, "", 0.85)

@@ -21,6 +21,8 @@ namespace amTorso
 /// the organ map holds it (the phantom has no atria).
 using Phantom = amThoraxPhantomModel;
 constexpr int Atria = 11;
+/// The trachea and the main bronchi (Airway), where the scan tells gas from aerated lung.
+constexpr int AirwayLabel = 12;
 
 /// The classes of amIntensityClassifier's CT defaults.
 enum Class : std::uint8_t
@@ -50,6 +52,8 @@ struct TissueParameters
 {
   std::size_t MinimumVoxels = 0; // smaller components are left Pending
   double BodyGap = 0.0;          // mm: see amTorsoSegmentation::BodyGapClosing
+  double MinimumOpening = 400.0; // mm^2: the outside air meets a side of the image over a patch this wide
+                                 // (a bronchus's lumen, where the field cuts a lung, over a smaller one)
   bool FindTable = true;         // the patient table is exterior (PatientTable)
   double LungOpening = 0.0;      // mm: the lungs are the air inside the body opened by this ball
   bool LeftoverAirIsFat = false; // air inside the body that is not lung is fat (below the window)
@@ -133,6 +137,38 @@ bool SplitJoinedLungs(
 /// the head). The stomach's and the bowel's gas, and abdominal fat under a window that shows it as
 /// air, are joined to a lung only through narrow passages; the lungs lie under no other air.
 amVoxelMask GasBelowLungs(const amVoxelGrid& g, const amVoxelMask& air, int superiorAxis, int superiorSign);
+
+/// Where the airway is told from the lungs (Airway), in mm and mm^2.
+struct AirwayParameters
+{
+  // The trachea's section where it leaves the field (an adult's lumen 150-450, a child's from 50).
+  double MinimumTracheaArea = 50.0;
+  double MaximumTracheaArea = 1000.0;
+  double MinimumTracheaDepth = 20.0; // the trachea lies deep in the neck (an adult's 30 mm and more from the skin)
+  double LungClosing = 12.0;         // a bronchus inside a lung (its lumen and wall) is narrower than this ball
+  // The lumen's partial volume: voxels darker than LumenLevel (HU; half-way from gas to the wall's
+  // soft tissue) beside the gas, where HU is given.
+  const float* HU = nullptr;
+  double LumenLevel = -480.0;
+};
+
+struct AirwayReport
+{
+  std::size_t Voxels = 0;
+};
+
+/// The trachea and the main bronchi, labelled AirwayLabel: the gas (air class, inside the body) of
+/// a component that leaves the field at its top slice along superiorAxis (superiorSign +1: the
+/// index grows towards the head) with a section of MinimumTracheaArea to MaximumTracheaArea, part
+/// of it deeper in the body than MinimumTracheaDepth (the image's border is not the body's), and
+/// enters both lungs, where it lies outside both lungs (each lung's parenchyma, the lung class away from that gas,
+/// closed by a ball of LungClosing), with the voxels darker than LumenLevel in two rings round it
+/// outside the lungs (the lumen's partial volume). The oesophagus's gas enters no lung; the
+/// stomach's and the bowel's leave no field at its top; a field that holds the larynx and the
+/// mouth shows no trachea leaving it. Needs the lungs labelled and a scan that tells gas from
+/// aerated lung.
+AirwayReport Airway(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, int superiorAxis, int superiorSign,
+  std::size_t minimumVoxels, const AirwayParameters& p, std::vector<std::uint8_t>& labels);
 
 /// Where a vertebral column is parted from the ribs joined to it (VertebralColumn), in mm.
 struct ColumnParameters

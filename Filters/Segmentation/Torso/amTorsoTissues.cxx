@@ -6,9 +6,45 @@
 
 namespace
 {
+// The air components (id) open to the sides of the first two axes: through a piece of a side at
+// least minimumArea (mm^2) across. The air round the body meets a side over a wide patch; the
+// lumens of the bronchi, where a field cuts the lungs, meet it in small ones, and the outside
+// does not enter the airways through them.
+std::vector<char> OpenToTheSides(const amVoxelGrid& g, const std::vector<int>& id, int count, double minimumArea)
+{
+  std::vector<char> open(count, 0);
+  std::vector<char> in;
+  std::vector<int> piece;
+  for (int a = 0; a < 2; ++a)
+    for (const int at : { 0, g.N[a] - 1 })
+    {
+      // The side across axis a at index at: its pixels run along the other first axis, then k.
+      const int b = 1 - a, width = g.N[b];
+      in.assign(static_cast<std::size_t>(width) * g.N[2], 0);
+      std::vector<std::size_t> voxel(in.size());
+      for (int k = 0; k < g.N[2]; ++k)
+        for (int u = 0; u < width; ++u)
+        {
+          const std::size_t p = static_cast<std::size_t>(k) * width + u;
+          voxel[p] = a == 0 ? g.Index(at, u, k) : g.Index(u, at, k);
+          in[p] = id[voxel[p]] >= 0;
+        }
+      const int pieces = amVoxel::SlicePieces(in, width, piece);
+      std::vector<std::size_t> area(pieces, 0);
+      for (const int q : piece)
+        if (q >= 0)
+          ++area[q];
+      const double pixel = g.Spacing[b] * g.Spacing[2];
+      for (std::size_t p = 0; p < in.size(); ++p)
+        if (piece[p] >= 0 && area[piece[p]] * pixel >= minimumArea)
+          open[id[voxel[p]]] = 1;
+    }
+  return open;
+}
+
 // The air outside the body, and the patient table (which the outside air passes).
-amVoxelMask Exterior(
-  const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& table, double gap)
+amVoxelMask Exterior(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, const amVoxelMask& table,
+  double gap, double minimumOpening)
 {
   amVoxelMask air(classes.size());
   for (std::size_t v = 0; v < classes.size(); ++v)
@@ -30,16 +66,7 @@ amVoxelMask Exterior(
   const int n = amVoxel::Components(g, air, id, sizes);
   // Open to the sides of the first two axes; not the ends of the third, where a trachea may leave
   // the field of view.
-  std::vector<char> open(n, 0);
-  for (int k = 0; k < g.N[2]; ++k)
-    for (int j = 0; j < g.N[1]; ++j)
-      for (int i = 0; i < g.N[0]; ++i)
-        if (i == 0 || j == 0 || i == g.N[0] - 1 || j == g.N[1] - 1)
-        {
-          const int c = id[g.Index(i, j, k)];
-          if (c >= 0)
-            open[c] = 1;
-        }
+  const std::vector<char> open = OpenToTheSides(g, id, n, minimumOpening);
   amVoxelMask exterior(classes.size(), 0);
   for (std::size_t v = 0; v < classes.size(); ++v)
     exterior[v] = id[v] >= 0 && open[id[v]];
@@ -149,7 +176,7 @@ amTorso::TissueReport amTorso::Tissues(const amVoxelGrid& g, const std::vector<s
     p.FindTable ? amTorso::PatientTable(g, classes, p.SuperiorAxis, amTorso::TableParameters()) : amVoxelMask(n, 0);
   for (const auto t : table)
     report.TableVoxels += t != 0;
-  const amVoxelMask exterior = Exterior(g, classes, table, p.BodyGap);
+  const amVoxelMask exterior = Exterior(g, classes, table, p.BodyGap, p.MinimumOpening);
   labels.assign(n, Phantom::SoftTissue);
   double bodyX = 0.0;
   for (std::size_t v = 0; v < n; ++v)
