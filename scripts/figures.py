@@ -177,7 +177,8 @@ def row_atlas700(f):
 def row_dice(f):
     return ("main job's segmentation (1 mm, four clicks), Dice against the truth",
             "%.3f (myocardium) – %.3f, ribs %.3f; %d variations of the scan and the patient (contrast phase, noise, "
-            "kernel, voxels, rotation, storage, a cut field of view, fat, the heart's size and axis, a table, arms) ≥ %.3f at "
+            "kernel, voxels, rotation, storage, a cut field of view, fat, the heart's size and axis, a table, arms, the "
+            "trachea and main bronchi) ≥ %.3f at "
             "1.5–2.5 mm voxels, the aorta found without its two clicks ≥ %.3f; under 60 HU of noise the spine %.3f "
             "and ribs %.3f ([limits](docs/limits.md))" % (
                 f.v("main_job.dice_myocardium"), f.v("main_job.dice_highest"), f.v("main_job.dice_ribs"),
@@ -189,10 +190,11 @@ def row_dice(f):
 def row_real_scans(f):
     return ("real scans nobody tuned for, library defaults",
             "abdomen CT (3 mm) against TotalSegmentator: lungs %.3f, bone %.3f (vertebrae %.3f, ribs %.3f); "
-            "cardiac CT crops: heart %.3f (six clicks), aorta %.3f (nine) ([limits](docs/limits.md))" % (
+            "cardiac CT crops: heart %.3f (six clicks), aorta %.3f (nine), the trachea and main bronchi found "
+            "(%.1f cm³) ([limits](docs/limits.md))" % (
                 f.v("real_scans.abdomen_lungs_dice"), f.v("real_scans.abdomen_bone_dice"),
                 f.v("real_scans.abdomen_spine_dice"), f.v("real_scans.abdomen_ribs_dice"),
-                f.v("real_scans.heart_dice"), f.v("real_scans.aorta_dice")),
+                f.v("real_scans.heart_dice"), f.v("real_scans.aorta_dice"), f.v("real_scans.airway_cm3")),
             "TotalSegmentator's published figures: about 0.95 (heart chambers), 0.98 (aorta)")
 
 

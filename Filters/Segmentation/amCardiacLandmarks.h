@@ -19,8 +19,10 @@
  *   the endocardial apex is the LV pool's farthest voxel along it,
  *   the epicardial apex the myocardium's beyond it within 15 mm of the axis, the base the centre of the pool's last 5
  * mm at the other end (the valve plane), the stimulus half-way between the apices (mid-wall);
- * - the electrodes lie on the trunk's skin: the body voxels beside the outside that a path inside
- *   the body joins to the LV's pool (arms in the field, apart from the trunk, carry none);
+ * - the electrodes lie on the trunk's skin: the body is cut into the basins of its depth (parts
+ *   joined to the rest by a neck at least 10 mm thinner than their own deepest point), the trunk
+ *   is the basin that holds the LV's pool, its skin its voxels beside the outside or another basin
+ *   (arms in the field, apart from the trunk or lying against it, carry none);
  * - V4 is where the line from the apex straight forward meets the skin (the apex beat, 5th
  *   intercostal space, mid-clavicular line); V1 and V2 one intercostal space (25 mm) higher, on
  *   the front at the sternum's right and left borders: the bone (labels 9, 10) in front of the

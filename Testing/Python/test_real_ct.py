@@ -125,7 +125,7 @@ class AirwayOfRealCT(unittest.TestCase):
 
     def test_trachea_and_main_bronchi(self):
         import numpy as np
-        for path in (CT, HEART_CT):
+        for path in (HEART_CT, CT):  # the aorta's crop, the larger, last: its figure is recorded
             labels, spacing = self.airway_of(path)
             airway = labels == 12
             cm3 = airway.sum() * np.prod(spacing) / 1000.0

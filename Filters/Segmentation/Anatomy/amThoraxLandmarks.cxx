@@ -1,6 +1,8 @@
 // The heart's axis, apex and base, the stimulus site and the 12-lead electrodes, from the labels.
 #include "amThoraxLandmarks.h"
 
+#include "../Torso/amVoxelGrid.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,6 +15,7 @@ constexpr std::uint8_t Outside = 0, RightLung = 3, LeftLung = 4, Myocardium = 5,
                        Spine = 9, Ribs = 10, Atria = 11;
 constexpr double IntercostalSpace = 25.0; // mm, one rib space
 constexpr double SternalBorder = 25.0;    // mm from the mid-line
+constexpr double ArmNeck = 10.0;          // mm: an arm's depth (about 40) above its contact with the trunk
 
 double Dot(const Vec& a, const Vec& b)
 {
@@ -55,38 +58,35 @@ struct Voxels
       x[r] = G.Row[r][0] * i + G.Row[r][1] * j + G.Row[r][2] * k + G.Row[r][3];
     return x;
   }
-  // The trunk: the body voxels a path of face neighbours inside the body joins to the LV's pool.
-  // Arms in the field, apart from the trunk, are body but carry no chest electrode.
+  // The trunk: the body's part that holds the LV's pool, where the body is cut into the basins of
+  // its depth (parts joined to the rest by a neck at least ArmNeck thinner than their own deepest
+  // point). Arms in the field, apart from the trunk or lying against it, are body but carry no
+  // chest electrode.
   std::vector<char> Trunk() const
   {
-    std::vector<char> trunk(L.size(), 0);
-    std::vector<std::size_t> front;
-    for (std::size_t v = 0; v < L.size(); ++v)
-      if (L[v] == LeftVentricle)
-      {
-        trunk[v] = 1;
-        front.push_back(v);
-      }
-    const std::size_t sy = G.N[0], sz = static_cast<std::size_t>(G.N[0]) * G.N[1];
-    while (!front.empty())
+    amVoxelGrid g;
+    for (int a = 0; a < 3; ++a)
     {
-      const std::size_t v = front.back();
-      front.pop_back();
-      const std::size_t i = v % sy, j = (v / sy) % G.N[1], k = v / sz;
-      const std::size_t next[6] = { i > 0 ? v - 1 : v, i + 1 < sy ? v + 1 : v, j > 0 ? v - sy : v,
-        j + 1 < static_cast<std::size_t>(G.N[1]) ? v + sy : v, k > 0 ? v - sz : v,
-        k + 1 < static_cast<std::size_t>(G.N[2]) ? v + sz : v };
-      for (const std::size_t w : next)
-        if (!trunk[w] && L[w] != Outside)
-        {
-          trunk[w] = 1;
-          front.push_back(w);
-        }
+      g.N[a] = G.N[a];
+      g.Spacing[a] = std::sqrt(G.Row[0][a] * G.Row[0][a] + G.Row[1][a] * G.Row[1][a] + G.Row[2][a] * G.Row[2][a]);
     }
-    return trunk;
+    amVoxelMask body(L.size());
+    for (std::size_t v = 0; v < L.size(); ++v)
+      body[v] = L[v] != Outside;
+    std::vector<int> basin;
+    const int count = amVoxel::Basins(g, body, amVoxel::Depth(g, body), ArmNeck, basin);
+    std::vector<std::size_t> pool(count, 0);
+    for (std::size_t v = 0; v < L.size(); ++v)
+      if (L[v] == LeftVentricle && basin[v] >= 0)
+        ++pool[basin[v]];
+    const int trunk = static_cast<int>(std::max_element(pool.begin(), pool.end()) - pool.begin());
+    std::vector<char> inTrunk(L.size(), 0);
+    for (std::size_t v = 0; v < L.size(); ++v)
+      inTrunk[v] = count > 0 && basin[v] == trunk;
+    return inTrunk;
   }
-  // The trunk's voxels with a face neighbour outside (not the image's border: a cut field of view
-  // has no skin there).
+  // The trunk's voxels with a face neighbour outside it (outside the body, or an arm lying against
+  // it; not the image's border: a cut field of view has no skin there).
   std::vector<Vec> Skin(const std::vector<char>& trunk) const
   {
     std::vector<Vec> skin;
@@ -98,9 +98,9 @@ struct Voxels
           const std::size_t v = k * sz + j * sy + i * sx;
           if (!trunk[v])
             continue;
-          const bool out = (i > 0 && L[v - sx] == Outside) || (i + 1 < G.N[0] && L[v + sx] == Outside) ||
-            (j > 0 && L[v - sy] == Outside) || (j + 1 < G.N[1] && L[v + sy] == Outside) ||
-            (k > 0 && L[v - sz] == Outside) || (k + 1 < G.N[2] && L[v + sz] == Outside);
+          const bool out = (i > 0 && !trunk[v - sx]) || (i + 1 < G.N[0] && !trunk[v + sx]) ||
+            (j > 0 && !trunk[v - sy]) || (j + 1 < G.N[1] && !trunk[v + sy]) || (k > 0 && !trunk[v - sz]) ||
+            (k + 1 < G.N[2] && !trunk[v + sz]);
           if (out)
             skin.push_back(this->At(v));
         }

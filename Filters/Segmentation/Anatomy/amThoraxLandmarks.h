@@ -17,8 +17,10 @@
  * - sternum: at V1's level, the bone (labels 9, 10) in front of the heart's centre that spans the
  *   skin's mid-line (of the bone within 30 mm of it, the run along x that holds it, 10-60 mm wide),
  *   within half an intercostal space above and below;
- * - electrodes on the trunk's skin (body voxels beside the outside, joined to the LV's pool through
- *   the body: arms apart from the trunk carry none): V4 where the line from the apex
+ * - electrodes on the trunk's skin (the basin of the body's depth that holds the LV's pool, parts
+ *   joined by necks 10 mm thinner than their deepest point being basins of their own; its voxels
+ *   beside the outside or another basin: arms apart from the trunk or against it carry none): V4
+ *   where the line from the apex
  *   straight forward meets the skin (the apex beat, 5th intercostal space, mid-clavicular); V1 and V2
  *   an intercostal space (25 mm) higher, at the sternum's right and left borders (where no sternum is
  *   found, 25 mm right and left of the body's mid-line), on the front;

@@ -71,11 +71,15 @@ amTorso::AirwayReport amTorso::Airway(const amVoxelGrid& g, const std::vector<st
   // The gas inside the body whose component leaves the field at its top as a tube: the trachea
   // (with the bronchi its lumen reaches).
   amVoxelMask gas(n), body(n);
+  bool atTop = false;
   for (std::size_t v = 0; v < n; ++v)
   {
     body[v] = labels[v] != Phantom::Background;
     gas[v] = classes[v] == AirClass && body[v];
+    atTop = atTop || (gas[v] && InTopSlice(g, v, superiorAxis, superiorSign));
   }
+  if (!atTop)
+    return report;
   const std::vector<float> bodyDepth = amVoxel::Depth(g, body);
   const amVoxelMask tree = TubesFromTheTop(g, gas, superiorAxis, superiorSign, minimumVoxels, p, bodyDepth);
   if (std::find(tree.begin(), tree.end(), 1) == tree.end())
@@ -83,10 +87,10 @@ amTorso::AirwayReport amTorso::Airway(const amVoxelGrid& g, const std::vector<st
 
   // Each lung's parenchyma (its lung class, away from the tree: the lumen's partial volume, which
   // the lungs took where they were parted at the trachea, is not), closed by LungClosing: the
-  // bronchi inside it are filled, its convex outline beside the trachea stays.
+  // bronchi inside it are filled, its convex outline beside the trachea stays. The trachea's tree
+  // enters both lungs at the carina (the oesophagus's gas, also leaving the field at its top,
+  // enters none).
   const amVoxelMask besideTree = amVoxel::Dilate26(g, tree, 1);
-  // The trachea's tree enters both lungs at the carina (the oesophagus's gas, also leaving the
-  // field at its top, enters none).
   std::vector<int> id;
   std::vector<std::size_t> sizes;
   const int count = amVoxel::Components(g, tree, id, sizes);
