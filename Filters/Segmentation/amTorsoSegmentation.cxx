@@ -317,6 +317,12 @@ void BoneFromUnsmoothed(const amVoxelGrid& g, vtkDataArray* classTable, const st
       classes[v] = static_cast<std::uint8_t>(below);
 }
 
+// Half-way from gas to soft tissue (HU): where a lumen's partial volume ends.
+double GasHalfWay(vtkDataArray* classTable)
+{
+  return 0.5 * (classTable->GetComponent(amTorso::AirClass, 1) + classTable->GetComponent(amTorso::SoftClass, 1));
+}
+
 // A voxel between lung and tissue (the fat class's partial-volume sheets) is lung only when more
 // than half of it is air: brighter than half-way from the lung's class to soft tissue's, it goes to
 // the tissue beside it; and darker than soft tissue, it holds no bone.
@@ -327,7 +333,7 @@ std::function<bool(std::size_t, std::uint8_t)> PartialVolumeRefusals(vtkDataArra
     return nullptr;
   const float soft = static_cast<float>(classTable->GetComponent(amTorso::SoftClass, 1));
   const float halfAir = 0.5f * (static_cast<float>(classTable->GetComponent(amTorso::LungClass, 1)) + soft);
-  const float halfGas = 0.5f * (static_cast<float>(classTable->GetComponent(amTorso::AirClass, 1)) + soft);
+  const float halfGas = static_cast<float>(GasHalfWay(classTable));
   return [values, halfAir, halfGas, soft](std::size_t v, std::uint8_t l) {
     using Phantom = amThoraxPhantomModel;
     return ((l == Phantom::RightLung || l == Phantom::LeftLung) && values[v] > halfAir) ||
@@ -445,14 +451,13 @@ bool CompleteAorta(vtkImageData* image, const amVoxelGrid& g, const amVoxelMask&
   return report.Found;
 }
 
-// World coordinate r (0: x, 1: y) of a voxel = row[0] i + row[1] j + row[2] k + row[3].
-void WorldRow(vtkImageData* image, int r, double row[4])
+void WorldXRow(vtkImageData* image, double worldX[4])
 {
   const double* spacing = image->GetSpacing();
   vtkMatrix3x3* direction = image->GetDirectionMatrix();
   for (int a = 0; a < 3; ++a)
-    row[a] = direction->GetElement(r, a) * spacing[a];
-  row[3] = image->GetOrigin()[r];
+    worldX[a] = direction->GetElement(0, a) * spacing[a];
+  worldX[3] = image->GetOrigin()[0];
 }
 
 // The lumen's partial volume reaches half-way from the gas to the soft tissue of its wall.
@@ -462,8 +467,7 @@ amTorso::AirwayParameters AirwaySettings(vtkDataArray* classTable, const float* 
   if (classTable && classTable->GetComponent(amTorso::SoftClass, 4) != 0.0)
   {
     p.HU = hu;
-    p.LumenLevel =
-      0.5 * (classTable->GetComponent(amTorso::AirClass, 1) + classTable->GetComponent(amTorso::SoftClass, 1));
+    p.LumenLevel = GasHalfWay(classTable);
   }
   return p;
 }
@@ -641,7 +645,7 @@ int amTorsoSegmentation::RequestData(
   if (!unsmoothed.empty())
     BoneFromUnsmoothed(grid, classTable, unsmoothed, noise, classes);
   double worldX[4];
-  WorldRow(input, 0, worldX);
+  WorldXRow(input, worldX);
   const std::size_t minimumVoxels =
     static_cast<std::size_t>(std::ceil(this->MinimumComponentVolume / grid.VoxelVolume()));
 

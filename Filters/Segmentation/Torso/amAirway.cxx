@@ -61,13 +61,13 @@ amVoxelMask TubesFromTheTop(const amVoxelGrid& g, const amVoxelMask& mask, int s
 }
 }
 
-amTorso::AirwayReport amTorso::Airway(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, int superiorAxis,
+std::size_t amTorso::Airway(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, int superiorAxis,
   int superiorSign, std::size_t minimumVoxels, const AirwayParameters& p, std::vector<std::uint8_t>& labels)
 {
-  AirwayReport report;
+  std::size_t labelled = 0;
   const std::size_t n = classes.size();
   if (superiorAxis < 0 || superiorAxis > 2)
-    return report;
+    return labelled;
   // The gas inside the body whose component leaves the field at its top as a tube: the trachea
   // (with the bronchi its lumen reaches).
   amVoxelMask gas(n), body(n);
@@ -79,11 +79,11 @@ amTorso::AirwayReport amTorso::Airway(const amVoxelGrid& g, const std::vector<st
     atTop = atTop || (gas[v] && InTopSlice(g, v, superiorAxis, superiorSign));
   }
   if (!atTop)
-    return report;
+    return labelled;
   const std::vector<float> bodyDepth = amVoxel::Depth(g, body);
   const amVoxelMask tree = TubesFromTheTop(g, gas, superiorAxis, superiorSign, minimumVoxels, p, bodyDepth);
   if (std::find(tree.begin(), tree.end(), 1) == tree.end())
-    return report;
+    return labelled;
 
   // Each lung's parenchyma (its lung class, away from the tree: the lumen's partial volume, which
   // the lungs took where they were parted at the trachea, is not), closed by LungClosing: the
@@ -132,7 +132,7 @@ amTorso::AirwayReport amTorso::Airway(const amVoxelGrid& g, const std::vector<st
     if (airway[v])
     {
       labels[v] = amTorso::AirwayLabel;
-      ++report.Voxels;
+      ++labelled;
     }
-  return report;
+  return labelled;
 }

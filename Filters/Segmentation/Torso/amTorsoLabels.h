@@ -152,11 +152,6 @@ struct AirwayParameters
   double LumenLevel = -480.0;
 };
 
-struct AirwayReport
-{
-  std::size_t Voxels = 0;
-};
-
 /// The trachea and the main bronchi, labelled AirwayLabel: the gas (air class, inside the body) of
 /// a component that leaves the field at its top slice along superiorAxis (superiorSign +1: the
 /// index grows towards the head) with a section of MinimumTracheaArea to MaximumTracheaArea, part
@@ -166,8 +161,8 @@ struct AirwayReport
 /// outside the lungs (the lumen's partial volume). The oesophagus's gas enters no lung; the
 /// stomach's and the bowel's leave no field at its top; a field that holds the larynx and the
 /// mouth shows no trachea leaving it. Needs the lungs labelled and a scan that tells gas from
-/// aerated lung.
-AirwayReport Airway(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, int superiorAxis, int superiorSign,
+/// aerated lung. Returns the voxels labelled.
+std::size_t Airway(const amVoxelGrid& g, const std::vector<std::uint8_t>& classes, int superiorAxis, int superiorSign,
   std::size_t minimumVoxels, const AirwayParameters& p, std::vector<std::uint8_t>& labels);
 
 /// Where a vertebral column is parted from the ribs joined to it (VertebralColumn), in mm.
